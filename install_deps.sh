@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs everything Catena needs on Debian 12, as root. Idempotent: when every package
+# is already installed it returns without touching apt.
+set -euo pipefail
+
+packages=(
+  g++ make cmake pkg-config
+  petsc-dev libopenmpi-dev openmpi-bin libmetis-dev libhdf5-openmpi-dev
+  libgtest-dev libyaml-cpp-dev libeigen3-dev
+  python3 python3-h5py python3-numpy python3-matplotlib
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install_deps: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "install_deps: all packages present"
+fi
