@@ -1,0 +1,63 @@
+#pragma once
+// The element kernel contract. Elements are pure functions of their own data (reference
+// geometry, section, local state): no shared nodes, no globals, no I/O, no PETSc.
+//
+// Sign convention (shared by every kernel and every integrator):
+//   residual  R(q, v, a) = M a + f(q, v) ,   f = f_int(q) + f_damp(q, v) − f_ext(q)
+//   stiffness K = ∂f/∂q ,  damping C = ∂f/∂v ,  mass M constant (ANCF).
+// Integrators ask for J = c_K·K + c_C·C + c_M·M; kernels never learn which scheme runs.
+//
+// Local DOF ordering is node-major: all of node 0's DOFs, then node 1's, ... Each node
+// carries a prefix of the nodal layout [r (3), r_x (3), r_y (3), r_z (3)]; an element uses
+// the first dofs_per_node() of them (3: a point, 6: cable node, 12: beam node).
+#include <span>
+#include <string_view>
+
+namespace catena::elements {
+
+// What the caller wants evaluated.
+struct Request {
+  bool force = true;
+  bool stiffness = false;  // K = ∂f/∂q
+  bool damping = false;    // C = ∂f/∂v
+};
+
+// Local state, node-major. `v` may be empty: then velocities are zero (statics).
+struct LocalState {
+  std::span<const double> q;
+  std::span<const double> v;
+  // Scales gravity, distributed loads and prestrain; load stepping ramps it 0 → 1.
+  double load_factor = 1.0;
+};
+
+// Caller-owned output buffers of size n_dofs() (f) and n_dofs()² (K, C, row-major).
+// Kernels overwrite (not add to) the requested buffers.
+struct LocalOutput {
+  double* f = nullptr;
+  double* K = nullptr;
+  double* C = nullptr;
+};
+
+// Section resultants reported for output at the element mid-point.
+struct SectionResult {
+  double axial_force = 0.0;   // N, tension positive
+  double axial_strain = 0.0;  // −, against the unstretched length
+};
+
+class Element {
+ public:
+  virtual ~Element() = default;
+  virtual std::string_view kind() const = 0;
+  virtual int n_nodes() const = 0;
+  virtual int dofs_per_node() const = 0;
+  int n_dofs() const { return n_nodes() * dofs_per_node(); }
+
+  // Not collective. Fills the requested blocks of f, K, C.
+  virtual void evaluate(const LocalState& s, Request r, LocalOutput out) const = 0;
+  // Constant (configuration-independent) mass matrix, row-major n_dofs()².
+  virtual void mass(double* M) const = 0;
+  // Resultants at the element mid-point for output.
+  virtual SectionResult section_result(const LocalState& s) const = 0;
+};
+
+}  // namespace catena::elements

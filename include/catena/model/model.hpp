@@ -1,0 +1,124 @@
+#pragma once
+// The validated description of what to simulate: plain data, no behaviour. Produced by
+// the scene reader (scene_reader.hpp) on every rank from the same text, consumed by the
+// assembly layer. Indices are 0-based positions in the vectors below; user-facing ids
+// (as written in the scene) are kept for messages and output. Units are SI throughout.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "catena/core/vec3.hpp"
+
+namespace catena::model {
+
+struct Node {
+  std::int64_t id = 0;  // user id (generated ids for line interior nodes)
+  Vec3 position = Vec3::Zero();  // m, reference (mesh) position
+};
+
+// ANCF gradient-deficient cable (contact wire, messenger, droppers as cables).
+struct CableProps {
+  double EA = 0.0;               // N, axial stiffness
+  double EI = 0.0;               // N·m², bending stiffness
+  double mass_per_length = 0.0;  // kg/m, per unit unstretched length
+  double damping_time = 0.0;     // s, Kelvin–Voigt axial: N = EA (ε + τ ε̇)
+  // Prestrain ε_p: the element's unstretched length is L_mesh / (1 + ε_p). Set from the
+  // scene's `tension` (ε_p = T/EA), `prestrain` or `unstretched_length`.
+  double prestrain = 0.0;
+};
+
+// ANCF beam with torsion (see elements/ancf_beam.hpp for the formulation).
+struct BeamProps {
+  double EA = 0.0;                // N
+  double GA_y = 0.0, GA_z = 0.0;  // N, shear stiffnesses
+  double GJ = 0.0;                // N·m², torsional stiffness
+  double EI_y = 0.0, EI_z = 0.0;  // N·m², bending about the section's y and z axes
+  double mass_per_length = 0.0;   // kg/m
+  double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, section rotary inertia per length
+  double damping_time = 0.0;      // s, Kelvin–Voigt on all strains
+  Vec3 y_axis = Vec3::UnitZ();    // reference direction of the section's y axis
+};
+
+// Two-node bar between node positions (droppers); optionally tension-only.
+struct BarProps {
+  double EA = 0.0;               // N
+  double mass_per_length = 0.0;  // kg/m, lumped half to each node
+  double damping = 0.0;          // N·s/m, along the bar (c·d(length)/dt)
+  double unstretched_length = 0.0;  // m; 0 = the mesh length
+  bool tension_only = false;     // slack (zero force) when shorter than unstretched
+};
+
+// Two-node linear spring–damper between node positions (zero rest length offset: the
+// force is k·(x_B − x_A − (X_B − X_A)) per component, so it carries no preload).
+struct SpringProps {
+  Vec3 stiffness = Vec3::Zero();  // N/m per global axis
+  Vec3 damping = Vec3::Zero();    // N·s/m per global axis
+};
+
+using ElementProps = std::variant<CableProps, BeamProps, BarProps, SpringProps>;
+
+struct ElementDesc {
+  std::int64_t id = 0;
+  std::vector<int> nodes;        // node indices
+  ElementProps props;
+  Vec3 distributed_load = Vec3::Zero();  // N/m per unit mesh length (cable, beam)
+  std::string set;               // name of the line / set it belongs to ("" = none)
+};
+
+// Fixed DOFs of a node, eliminated from the system. Bits index the nodal layout
+// [x, y, z, r_x(3), r_y(3), r_z(3)]; "pinned" fixes 0..2, "clamped" fixes 0..5 (cable) or
+// 0..11 (beam). Fixed values are those of the reference configuration.
+struct Support {
+  int node = 0;
+  unsigned fixed_mask = 0;  // bit k fixes nodal DOF k
+};
+
+// Linear spring (and dashpot) from a node's position to ground.
+struct ElasticSupport {
+  int node = 0;
+  Vec3 stiffness = Vec3::Zero();  // N/m
+  Vec3 damping = Vec3::Zero();    // N·s/m
+};
+
+struct NodalLoad {
+  int node = 0;
+  Vec3 force = Vec3::Zero();  // N, dead load
+};
+
+struct PointMass {
+  int node = 0;
+  double mass = 0.0;  // kg
+};
+
+struct StaticOptions {
+  double initial_load_step = 1.0;  // first load increment tried (fraction of full load)
+  double min_load_step = 1e-4;     // give up below this increment
+  int max_load_steps = 200;        // give up after this many accepted + rejected steps
+  double rtol = 1e-10;             // SNES relative residual tolerance
+  double atol = 1e-8;              // SNES absolute residual tolerance (N)
+  int max_newton_iterations = 30;  // per load step
+};
+
+struct OutputOptions {
+  std::string file = "catena.h5";
+};
+
+struct Model {
+  std::string name;
+  std::string source_file;  // path as given
+  std::string source_text;  // the scene text after --set overrides, stored in output
+  Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
+
+  std::vector<Node> nodes;
+  std::vector<ElementDesc> elements;
+  std::vector<Support> supports;
+  std::vector<ElasticSupport> elastic_supports;
+  std::vector<NodalLoad> nodal_loads;
+  std::vector<PointMass> point_masses;
+
+  StaticOptions static_options;
+  OutputOptions output;
+};
+
+}  // namespace catena::model
