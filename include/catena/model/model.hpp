@@ -15,6 +15,13 @@ namespace catena::model {
 struct Node {
   std::int64_t id = 0;  // user id (generated ids for line interior nodes)
   Vec3 position = Vec3::Zero();  // m, reference (mesh) position
+  // Reference nodal frame, set by the scene reader from the attached elements:
+  // tangent = ∂r/∂x (unit) where a cable or beam attaches (zero otherwise; all attached
+  // cables/beams must be collinear there, ANCF slopes being continuous at a node);
+  // section_y/section_z = ∂r/∂y, ∂r/∂z (unit, orthogonal to tangent) where a beam attaches.
+  Vec3 tangent = Vec3::Zero();
+  Vec3 section_y = Vec3::Zero();
+  Vec3 section_z = Vec3::Zero();
 };
 
 // ANCF gradient-deficient cable (contact wire, messenger, droppers as cables).
