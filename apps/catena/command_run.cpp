@@ -1,0 +1,113 @@
+#include <petscsys.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "catena/io/hdf5_writer.hpp"
+#include "catena/solvers/static_solver.hpp"
+#include "commands.hpp"
+#include "scene_loading.hpp"
+
+namespace catena::app {
+namespace {
+
+std::string petsc_options_text() {
+  char* text = nullptr;
+  if (PetscOptionsGetAll(nullptr, &text) != 0 || !text) return "";
+  std::string s(text);
+  PetscFree(text);
+  return s;
+}
+
+io::StaticResult collect_result(assembly::SecondOrderSystem& system, Vec q,
+                                const solvers::StaticReport& report) {
+  io::StaticResult r;
+  r.owned_nodes = system.dof_map().owned_nodes();
+  system.owned_node_values(q, r.positions, r.slopes);
+  std::vector<elements::SectionResult> sections;
+  system.section_results({q, nullptr, 1.0}, r.owned_elements, sections);
+  for (const auto& s : sections) {
+    r.axial_force.push_back(s.axial_force);
+    r.axial_strain.push_back(s.axial_strain);
+  }
+  const assembly::Reactions reactions = system.reactions({q, nullptr, 1.0});
+  r.support_nodes = reactions.nodes;
+  r.reaction_force = reactions.force;
+  r.reaction_moment = reactions.moment;
+  r.load_factor = report.load_factor;
+  r.n_load_steps = report.n_load_steps;
+  r.n_newton_iterations = report.n_newton_iterations;
+  r.residual_norm = report.residual_norm;
+  return r;
+}
+
+// Global summary numbers for the console (collective).
+void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult& r,
+                   const solvers::StaticReport& report, PetscInt n_dofs, double seconds) {
+  double local[3] = {0.0, -1e300, 1e300};  // max |displacement|, max N, min N
+  for (size_t i = 0; i < r.owned_nodes.size(); ++i) {
+    const Vec3 x(r.positions[3 * i], r.positions[3 * i + 1], r.positions[3 * i + 2]);
+    local[0] = std::max(local[0], (x - m.nodes[r.owned_nodes[i]].position).norm());
+  }
+  for (double n : r.axial_force) {
+    local[1] = std::max(local[1], n);
+    local[2] = std::min(local[2], n);
+  }
+  double reaction_local[3] = {0, 0, 0}, reaction[3];
+  for (size_t i = 0; i < r.support_nodes.size(); ++i)
+    for (int d = 0; d < 3; ++d) reaction_local[d] += r.reaction_force[3 * i + d];
+  double global[3];
+  MPI_Allreduce(&local[0], &global[0], 1, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(&local[1], &global[1], 1, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(reaction_local, reaction, 3, MPI_DOUBLE, MPI_SUM, comm);
+  if (mpi_rank(comm) != 0) return;
+  std::printf("static equilibrium: %d load steps (%d rejected), %d Newton iterations, "
+              "|f| = %.3e N, %.2f s\n",
+              report.n_load_steps, report.n_rejected_steps, report.n_newton_iterations,
+              report.residual_norm, seconds);
+  std::printf("  free DOFs %lld on %d ranks\n", static_cast<long long>(n_dofs), mpi_size(comm));
+  std::printf("  max displacement %.6g m\n", global[0]);
+  if (global[1] >= global[2])
+    std::printf("  axial force: max %.6g N, min %.6g N\n", global[1], global[2]);
+  std::printf("  sum of support reactions: [%.6g, %.6g, %.6g] N\n", reaction[0], reaction[1],
+              reaction[2]);
+}
+
+}  // namespace
+
+void command_run(MPI_Comm comm, const CommandLine& cl) {
+  const model::Model m = load_scene(comm, cl.scene, cl.overrides);
+  const int rank = mpi_rank(comm);
+  if (rank == 0) {
+    std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n",
+                CATENA_VERSION, CATENA_GIT_VERSION, cl.scene.c_str(), m.name.c_str(),
+                m.nodes.size(), m.elements.size(), mpi_size(comm));
+    std::fflush(stdout);
+  }
+  const double start = MPI_Wtime();
+  assembly::SecondOrderSystem system(comm, m);
+  VecHandle q = system.create_vector();
+  system.reference_state(q.get());
+  solvers::StaticSolver solver(system, m.static_options);
+  const solvers::StaticReport report = solver.solve(q.get());
+  const double seconds = MPI_Wtime() - start;
+
+  const io::StaticResult result = collect_result(system, q.get(), report);
+  print_summary(comm, m, result, report, system.dof_map().n_global(), seconds);
+
+  io::RunInfo info;
+  info.code_version = std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")";
+  info.command_line = cl.joined;
+  info.petsc_options = petsc_options_text();
+  info.n_ranks = mpi_size(comm);
+  info.n_dofs = static_cast<int>(system.dof_map().n_global());
+  io::write_static_result(comm, m.output.file, m, result, info);
+  if (rank == 0) std::printf("output: %s\n", m.output.file.c_str());
+}
+
+}  // namespace catena::app

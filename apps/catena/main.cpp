@@ -1,0 +1,44 @@
+// catena — parallel static analysis of cable and beam structures (dynamics to follow).
+//
+//   catena check meshes/default.yaml
+//   mpirun -n 2 catena run meshes/default.yaml -o default.h5
+//   mpirun -n 3 catena run meshes/default.yaml --set lines[0].elements=600 -log_view
+//
+// Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
+// (no equilibrium found, singular structure), 1 anything else.
+#include <cstdio>
+#include <exception>
+
+#include "catena/assembly/petsc_handle.hpp"
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  int status = 0;
+  try {
+    catena::PetscSession petsc(&argc, &argv, nullptr);
+    const int rank = catena::mpi_rank(PETSC_COMM_WORLD);
+    try {
+      const catena::app::CommandLine cl = catena::app::parse_command_line(argc, argv);
+      if (cl.command == "help") {
+        if (rank == 0) std::fputs(catena::app::usage().c_str(), stdout);
+      } else if (cl.command == "check") {
+        catena::app::command_check(PETSC_COMM_WORLD, cl);
+      } else {
+        catena::app::command_run(PETSC_COMM_WORLD, cl);
+      }
+    } catch (const catena::InputError& e) {
+      if (rank == 0) std::fprintf(stderr, "catena: error: %s\n", e.what());
+      status = 2;
+    } catch (const catena::NumericalError& e) {
+      if (rank == 0) std::fprintf(stderr, "catena: numerical failure: %s\n", e.what());
+      status = 3;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "catena: internal error: %s\n", e.what());
+    status = 1;
+  }
+  return status;
+}

@@ -1,0 +1,62 @@
+#pragma once
+// Global numbering of the free degrees of freedom.
+//
+// Nodal layout: [r (3), r_x (3), r_y (3), r_z (3)]; a node carries the prefix its elements
+// need (3, 6 or 12). Fixed DOFs (supports) are eliminated: they get no global index (−1).
+// Free DOFs are numbered contiguously per rank: rank 0's owned nodes in ascending node
+// index, then rank 1's, ...; within a node, in layout order. The numbering is computed
+// identically on every rank from the replicated model (O(global nodes) memory per rank,
+// O(local) work per evaluation).
+//
+// Local (ghosted) indices address PETSc's ghosted local form: [owned dofs | ghost dofs],
+// ghosts being the free DOFs of non-owned nodes touched by this rank's elements.
+#include <petscsys.h>
+
+#include <vector>
+
+#include "catena/assembly/partition.hpp"
+#include "catena/model/model.hpp"
+
+namespace catena::assembly {
+
+// Number of DOFs each node carries: 12 if a beam touches it, else 6 if a cable does, else 3.
+std::vector<int> node_dof_counts(const model::Model& model);
+
+class DofMap {
+ public:
+  // Not collective (deterministic on every rank).
+  DofMap(const model::Model& model, const Partition& partition, int rank);
+
+  int n_nodes() const { return static_cast<int>(node_offset_.size()) - 1; }
+  int node_dofs(int node) const { return node_offset_[node + 1] - node_offset_[node]; }
+  // Global index of nodal DOF k, or −1 if it is fixed.
+  PetscInt global_dof(int node, int k) const { return global_[node_offset_[node] + k]; }
+  // Index into the ghosted local form, −1 if fixed or not present on this rank.
+  PetscInt local_dof(int node, int k) const { return local_[node_offset_[node] + k]; }
+  bool is_fixed(int node, int k) const { return global_dof(node, k) < 0; }
+
+  PetscInt n_global() const { return n_global_; }
+  PetscInt n_owned() const { return n_owned_; }
+  PetscInt first_owned() const { return first_owned_; }
+  const std::vector<PetscInt>& ghosts() const { return ghosts_; }
+  const std::vector<int>& owned_nodes() const { return owned_nodes_; }
+  int node_owner(int node) const { return partition_->node_owner[node]; }
+  const Partition& partition() const { return *partition_; }
+
+  // Node holding a global DOF (for messages: "largest residual at node 17").
+  int node_of_global(PetscInt global) const;
+  // Nodal DOF index (0..11) of a global DOF.
+  int component_of_global(PetscInt global) const;
+
+ private:
+  const Partition* partition_;
+  std::vector<int> node_offset_;    // n_nodes + 1
+  std::vector<PetscInt> global_;    // per nodal DOF
+  std::vector<PetscInt> local_;     // per nodal DOF
+  std::vector<PetscInt> ghosts_;
+  std::vector<int> owned_nodes_;
+  std::vector<int> global_node_;    // per global DOF: its node
+  PetscInt n_global_ = 0, n_owned_ = 0, first_owned_ = 0;
+};
+
+}  // namespace catena::assembly

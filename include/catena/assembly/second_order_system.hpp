@@ -1,0 +1,105 @@
+#pragma once
+// The distributed second-order system every solver and integrator sees:
+//
+//   R(t, q, v, a) = M a + f(q, v; λ) ,   f = f_int + f_damp − λ f_ext
+//   J = c_K ∂f/∂q + c_C ∂f/∂v + c_M M
+//
+// over the free DOFs (supports eliminated; their values are the reference values).
+// Solvers hand in global PETSc vectors and coefficients; they never see elements.
+// Ownership: each rank evaluates the kernels it owns (METIS partition) and adds into
+// PETSc objects; off-rank vector contributions travel through the ghosted local form,
+// off-rank matrix rows through PETSc's stash.
+#include <mpi.h>
+#include <petscmat.h>
+
+#include <memory>
+#include <vector>
+
+#include "catena/assembly/dof_map.hpp"
+#include "catena/assembly/element_factory.hpp"
+#include "catena/assembly/partition.hpp"
+#include "catena/assembly/petsc_handle.hpp"
+#include "catena/elements/element.hpp"
+#include "catena/model/model.hpp"
+
+namespace catena::assembly {
+
+// Where to evaluate: global vectors of free DOFs (v may be null: zero velocity).
+struct EvalPoint {
+  Vec q = nullptr;
+  Vec v = nullptr;
+  double load_factor = 1.0;
+};
+
+struct JacobianCoefficients {
+  double c_K = 1.0;  // ∂f/∂q
+  double c_C = 0.0;  // ∂f/∂v
+  double c_M = 0.0;  // M
+};
+
+// Per supported node (owned by this rank): reaction of the supports on the node.
+struct Reactions {
+  std::vector<int> nodes;       // ascending model node indices
+  std::vector<double> force;    // 3 per node, N
+  std::vector<double> moment;   // 3 per node, N·m (from fixed slope DOFs)
+};
+
+class SecondOrderSystem {
+ public:
+  // Collective: partitions the model, numbers DOFs, builds this rank's kernels.
+  SecondOrderSystem(MPI_Comm comm, const model::Model& model);
+  SecondOrderSystem(const SecondOrderSystem&) = delete;  // dofs_ points into partition_
+  SecondOrderSystem& operator=(const SecondOrderSystem&) = delete;
+
+  MPI_Comm comm() const { return comm_; }
+  const model::Model& model() const { return *model_; }
+  const DofMap& dof_map() const { return dofs_; }
+
+  // Collective. A ghosted vector laid out as the free DOFs.
+  VecHandle create_vector() const;
+  // Collective. An MPIAIJ matrix with exact preallocation; inserting outside the pattern
+  // is an error (MAT_NEW_NONZERO_ALLOCATION_ERR), so assembly never mallocs.
+  MatHandle create_matrix() const;
+  // Collective. q at the reference configuration (positions and nodal frames).
+  void reference_state(Vec q) const;
+
+  // Collective. f(q, v; λ) into f (global vector).
+  void force(const EvalPoint& p, Vec f);
+  // Collective. J = c_K K + c_C C + c_M M into J (zeroed first, assembled on return).
+  void jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
+
+  // Collective. Section results for this rank's model elements (ascending index).
+  void section_results(const EvalPoint& p, std::vector<int>& elements,
+                       std::vector<elements::SectionResult>& results);
+  // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
+  // slopes (∂r/∂x, zero where a node has none), 3 each.
+  void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes);
+  // Collective. Support reactions at owned supported nodes.
+  Reactions reactions(const EvalPoint& p);
+
+  // Number of kernels this rank evaluates (for load-balance reports).
+  size_t n_local_kernels() const { return kernels_.size(); }
+
+ private:
+  void scatter_to_local(Vec global, Vec local_ghosted);
+  // Gathers kernel k's local state from the ghosted local arrays.
+  void gather(size_t k, const double* q_local, const double* v_local, double* q_el,
+              double* v_el) const;
+  void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
+
+  MPI_Comm comm_;
+  const model::Model* model_;
+  Partition partition_;
+  DofMap dofs_;
+  std::vector<Kernel> kernels_;
+  // Per kernel: offset into the flat per-local-DOF arrays below.
+  std::vector<size_t> kernel_offset_;
+  std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
+  std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
+  std::vector<double> fixed_value_;     // reference value used where fixed
+  std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
+  VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
+  size_t max_kernel_dofs_ = 0;
+};
+
+}  // namespace catena::assembly

@@ -1,0 +1,23 @@
+#pragma once
+// MUMPS status after a factorisation. KSPPREONLY never reports a failed factorisation by
+// itself, so solvers read INFOG(1) (error flag), INFOG(2) (its detail) and INFOG(28) (null
+// pivots found with ICNTL(24) = 1) after every solve.
+#include <petscksp.h>
+
+#include <string>
+
+namespace catena::solvers {
+
+struct MumpsStatus {
+  bool is_mumps = false;  // false: another solver was chosen on the command line
+  long infog1 = 0, infog2 = 0, null_pivots = 0;
+};
+
+// Logically collective (same values on every rank). Call only after the KSP has factored.
+MumpsStatus mumps_status(KSP ksp);
+
+// Not collective. Turns on MUMPS null-pivot detection (ICNTL(24) = 1) for the solver with
+// options prefix `prefix`, unless the user set it on the command line.
+void enable_mumps_null_pivot_detection(const std::string& prefix);
+
+}  // namespace catena::solvers

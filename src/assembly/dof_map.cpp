@@ -1,0 +1,83 @@
+#include "catena/assembly/dof_map.hpp"
+
+#include <algorithm>
+#include <variant>
+
+namespace catena::assembly {
+
+std::vector<int> node_dof_counts(const model::Model& model) {
+  std::vector<int> dofs(model.nodes.size(), 3);
+  for (const auto& e : model.elements) {
+    const int need = std::holds_alternative<model::BeamProps>(e.props)    ? 12
+                     : std::holds_alternative<model::CableProps>(e.props) ? 6
+                                                                           : 3;
+    for (int n : e.nodes) dofs[n] = std::max(dofs[n], need);
+  }
+  return dofs;
+}
+
+DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
+    : partition_(&partition) {
+  const int n_nodes = static_cast<int>(model.nodes.size());
+  const std::vector<int> counts = node_dof_counts(model);
+  node_offset_.assign(n_nodes + 1, 0);
+  for (int n = 0; n < n_nodes; ++n) node_offset_[n + 1] = node_offset_[n] + counts[n];
+
+  std::vector<unsigned> fixed_mask(n_nodes, 0u);
+  for (const auto& s : model.supports) fixed_mask[s.node] |= s.fixed_mask;
+
+  // Global numbering: ranks in order, owned nodes ascending, DOFs in layout order.
+  global_.assign(node_offset_.back(), -1);
+  std::vector<std::vector<int>> nodes_of_rank(partition.n_parts);
+  for (int n = 0; n < n_nodes; ++n) nodes_of_rank[partition.node_owner[n]].push_back(n);
+  PetscInt next = 0;
+  for (int r = 0; r < partition.n_parts; ++r) {
+    if (r == rank) first_owned_ = next;
+    for (int n : nodes_of_rank[r])
+      for (int k = 0; k < counts[n]; ++k)
+        if (!(fixed_mask[n] >> k & 1u)) {
+          global_[node_offset_[n] + k] = next++;
+          global_node_.push_back(n);
+        }
+    if (r == rank) n_owned_ = next - first_owned_;
+  }
+  n_global_ = next;
+  owned_nodes_ = nodes_of_rank[rank];
+
+  // Local indices: owned DOFs first, then ghosts (free DOFs of touched, non-owned nodes).
+  local_.assign(node_offset_.back(), -1);
+  for (int n : owned_nodes_)
+    for (int k = 0; k < counts[n]; ++k) {
+      const PetscInt g = global_[node_offset_[n] + k];
+      if (g >= 0) local_[node_offset_[n] + k] = g - first_owned_;
+    }
+  std::vector<int> touched;
+  for (size_t e = 0; e < model.elements.size(); ++e)
+    if (partition.element_owner[e] == rank)
+      for (int n : model.elements[e].nodes)
+        if (partition.node_owner[n] != rank) touched.push_back(n);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (int n : touched)
+    for (int k = 0; k < counts[n]; ++k)
+      if (global_[node_offset_[n] + k] >= 0) ghosts_.push_back(global_[node_offset_[n] + k]);
+  std::sort(ghosts_.begin(), ghosts_.end());
+  for (int n : touched)
+    for (int k = 0; k < counts[n]; ++k) {
+      const PetscInt g = global_[node_offset_[n] + k];
+      if (g < 0) continue;
+      const auto it = std::lower_bound(ghosts_.begin(), ghosts_.end(), g);
+      local_[node_offset_[n] + k] = n_owned_ + static_cast<PetscInt>(it - ghosts_.begin());
+    }
+}
+
+int DofMap::node_of_global(PetscInt global) const { return global_node_.at(global); }
+
+int DofMap::component_of_global(PetscInt global) const {
+  const int n = node_of_global(global);
+  for (int k = 0; k < node_dofs(n); ++k)
+    if (global_dof(n, k) == global) return k;
+  return -1;
+}
+
+}  // namespace catena::assembly

@@ -1,0 +1,12 @@
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/petsc_handle.hpp"
+
+namespace catena {
+
+PetscSession::PetscSession(int* argc, char*** argv, const char* help) {
+  CATENA_PETSC(PetscInitialize(argc, argv, nullptr, help));
+}
+
+PetscSession::~PetscSession() { PetscFinalize(); }
+
+}  // namespace catena

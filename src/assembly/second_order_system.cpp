@@ -1,0 +1,356 @@
+#include "catena/assembly/second_order_system.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/mpi_comm.hpp"
+
+namespace catena::assembly {
+namespace {
+
+// Read access to the ghosted local form of a vector for the lifetime of the object.
+class LocalArrayRead {
+ public:
+  explicit LocalArrayRead(Vec ghosted) : ghosted_(ghosted) {
+    CATENA_PETSC(VecGhostGetLocalForm(ghosted_, &local_));
+    CATENA_PETSC(VecGetArrayRead(local_, &data_));
+  }
+  ~LocalArrayRead() {
+    VecRestoreArrayRead(local_, &data_);
+    VecGhostRestoreLocalForm(ghosted_, &local_);
+  }
+  LocalArrayRead(const LocalArrayRead&) = delete;
+  LocalArrayRead& operator=(const LocalArrayRead&) = delete;
+  const double* data() const { return data_; }
+
+ private:
+  Vec ghosted_;
+  Vec local_ = nullptr;
+  const PetscScalar* data_ = nullptr;
+};
+
+class LocalArrayWrite {
+ public:
+  explicit LocalArrayWrite(Vec ghosted) : ghosted_(ghosted) {
+    CATENA_PETSC(VecGhostGetLocalForm(ghosted_, &local_));
+    CATENA_PETSC(VecGetArray(local_, &data_));
+  }
+  ~LocalArrayWrite() {
+    VecRestoreArray(local_, &data_);
+    VecGhostRestoreLocalForm(ghosted_, &local_);
+  }
+  LocalArrayWrite(const LocalArrayWrite&) = delete;
+  LocalArrayWrite& operator=(const LocalArrayWrite&) = delete;
+  double* data() { return data_; }
+  Vec local() const { return local_; }
+
+ private:
+  Vec ghosted_;
+  Vec local_ = nullptr;
+  PetscScalar* data_ = nullptr;
+};
+
+}  // namespace
+
+SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
+    : comm_(comm),
+      model_(&model),
+      partition_(partition_model(comm, model)),
+      dofs_(model, partition_, mpi_rank(comm)) {
+  const int rank = mpi_rank(comm);
+  const int n_el = static_cast<int>(model.elements.size());
+  for (int e = 0; e < n_el; ++e)
+    if (partition_.element_owner[e] == rank) kernels_.push_back(make_element_kernel(model, e));
+  for (Kernel& k : make_node_kernels(model))
+    if (partition_.node_owner[k.nodes[0]] == rank) kernels_.push_back(std::move(k));
+
+  node_reference_.resize(12 * model.nodes.size());
+  for (size_t n = 0; n < model.nodes.size(); ++n) {
+    const model::Node& node = model.nodes[n];
+    const Vec3* blocks[4] = {&node.position, &node.tangent, &node.section_y, &node.section_z};
+    for (int b = 0; b < 4; ++b)
+      for (int d = 0; d < 3; ++d) node_reference_[12 * n + 3 * b + d] = (*blocks[b])[d];
+  }
+
+  kernel_offset_.push_back(0);
+  for (const Kernel& k : kernels_) {
+    const int dpn = k.element->dofs_per_node();
+    for (int n : k.nodes)
+      for (int c = 0; c < dpn; ++c) {
+        local_index_.push_back(dofs_.local_dof(n, c));
+        global_index_.push_back(dofs_.global_dof(n, c));
+        fixed_value_.push_back(node_reference_[12 * n + c]);
+      }
+    kernel_offset_.push_back(local_index_.size());
+    max_kernel_dofs_ = std::max(max_kernel_dofs_, static_cast<size_t>(k.element->n_dofs()));
+  }
+
+  q_work_ = create_vector();
+  v_work_ = create_vector();
+  f_work_ = create_vector();
+}
+
+VecHandle SecondOrderSystem::create_vector() const {
+  VecHandle v;
+  const auto& ghosts = dofs_.ghosts();
+  CATENA_PETSC(VecCreateGhost(comm_, dofs_.n_owned(), dofs_.n_global(),
+                              static_cast<PetscInt>(ghosts.size()), ghosts.data(), v.out()));
+  CATENA_PETSC(VecSet(v.get(), 0.0));
+  return v;
+}
+
+void SecondOrderSystem::preallocation(std::vector<PetscInt>& d_nnz,
+                                      std::vector<PetscInt>& o_nnz) const {
+  const model::Model& m = *model_;
+  std::vector<std::vector<int>> node_elements(m.nodes.size());
+  for (size_t e = 0; e < m.elements.size(); ++e)
+    for (int n : m.elements[e].nodes) node_elements[n].push_back(static_cast<int>(e));
+  const std::vector<int> counts = node_dof_counts(m);
+  auto element_dofs = [&](int e) {
+    const auto& p = m.elements[e].props;
+    return std::holds_alternative<model::BeamProps>(p)    ? 12
+           : std::holds_alternative<model::CableProps>(p) ? 6
+                                                          : 3;
+  };
+  const PetscInt lo = dofs_.first_owned(), hi = lo + dofs_.n_owned();
+  d_nnz.assign(dofs_.n_owned(), 0);
+  o_nnz.assign(dofs_.n_owned(), 0);
+  for (int n : dofs_.owned_nodes()) {
+    // (coupled node, number of its DOFs an element couples) pairs; the node's own
+    // position block is always present (one-node kernels live there).
+    std::vector<std::pair<int, int>> couplings{{n, 3}};
+    for (int e : node_elements[n]) {
+      const int d = element_dofs(e);
+      for (int other : m.elements[e].nodes) couplings.emplace_back(other, d);
+    }
+    std::map<int, std::vector<int>> by_node;
+    for (auto [other, d] : couplings) by_node[other].push_back(d);
+    for (int k = 0; k < counts[n]; ++k) {
+      const PetscInt row = dofs_.global_dof(n, k);
+      if (row < 0) continue;
+      PetscInt n_diag = 0, n_off = 0;
+      for (const auto& [other, ds] : by_node) {
+        int reach = 0;  // columns 0..reach-1 of `other` couple with row k
+        for (int d : ds)
+          if (d > k) reach = std::max(reach, d);
+        for (int j = 0; j < reach; ++j) {
+          const PetscInt col = dofs_.global_dof(other, j);
+          if (col < 0) continue;
+          (col >= lo && col < hi ? n_diag : n_off) += 1;
+        }
+      }
+      d_nnz[row - lo] = n_diag;
+      o_nnz[row - lo] = n_off;
+    }
+  }
+}
+
+MatHandle SecondOrderSystem::create_matrix() const {
+  std::vector<PetscInt> d_nnz, o_nnz;
+  preallocation(d_nnz, o_nnz);
+  MatHandle J;
+  CATENA_PETSC(MatCreate(comm_, J.out()));
+  CATENA_PETSC(MatSetSizes(J.get(), dofs_.n_owned(), dofs_.n_owned(), dofs_.n_global(),
+                           dofs_.n_global()));
+  CATENA_PETSC(MatSetType(J.get(), MATAIJ));
+  CATENA_PETSC(MatSeqAIJSetPreallocation(J.get(), 0, d_nnz.data()));
+  CATENA_PETSC(MatMPIAIJSetPreallocation(J.get(), 0, d_nnz.data(), 0, o_nnz.data()));
+  CATENA_PETSC(MatSetOption(J.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  CATENA_PETSC(MatSetOption(J.get(), MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  return J;
+}
+
+void SecondOrderSystem::reference_state(Vec q) const {
+  PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArray(q, &a));
+  for (int n : dofs_.owned_nodes())
+    for (int k = 0; k < dofs_.node_dofs(n); ++k) {
+      const PetscInt g = dofs_.global_dof(n, k);
+      if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[12 * n + k];
+    }
+  CATENA_PETSC(VecRestoreArray(q, &a));
+}
+
+void SecondOrderSystem::scatter_to_local(Vec global, Vec local_ghosted) {
+  CATENA_PETSC(VecCopy(global, local_ghosted));
+  CATENA_PETSC(VecGhostUpdateBegin(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
+  CATENA_PETSC(VecGhostUpdateEnd(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
+}
+
+void SecondOrderSystem::gather(size_t k, const double* q_local, const double* v_local,
+                               double* q_el, double* v_el) const {
+  const size_t begin = kernel_offset_[k], end = kernel_offset_[k + 1];
+  for (size_t i = begin; i < end; ++i) {
+    const PetscInt l = local_index_[i];
+    q_el[i - begin] = l >= 0 ? q_local[l] : fixed_value_[i];
+    if (v_local) v_el[i - begin] = l >= 0 ? v_local[l] : 0.0;
+  }
+}
+
+void SecondOrderSystem::force(const EvalPoint& p, Vec f) {
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  {
+    const LocalArrayRead q(q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+    LocalArrayWrite out(f_work_.get());
+    CATENA_PETSC(VecSet(out.local(), 0.0));
+    std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_), f_el(max_kernel_dofs_);
+    for (size_t k = 0; k < kernels_.size(); ++k) {
+      const elements::Element& el = *kernels_[k].element;
+      const size_t n = static_cast<size_t>(el.n_dofs());
+      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
+      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
+      if (p.v) s.v = {v_el.data(), n};
+      el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
+      const size_t begin = kernel_offset_[k];
+      for (size_t i = 0; i < n; ++i)
+        if (local_index_[begin + i] >= 0) out.data()[local_index_[begin + i]] += f_el[i];
+    }
+  }
+  CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
+  CATENA_PETSC(VecGhostUpdateEnd(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
+  CATENA_PETSC(VecCopy(f_work_.get(), f));
+}
+
+void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J) {
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  CATENA_PETSC(MatZeroEntries(J));
+  {
+    const LocalArrayRead q(q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+    const size_t m = max_kernel_dofs_;
+    std::vector<double> q_el(m), v_el(m), f_el(m), K(m * m), C(m * m), M(m * m), block(m * m);
+    const elements::Request request{false, c.c_K != 0.0, c.c_C != 0.0};
+    for (size_t k = 0; k < kernels_.size(); ++k) {
+      const elements::Element& el = *kernels_[k].element;
+      const size_t n = static_cast<size_t>(el.n_dofs());
+      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
+      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
+      if (p.v) s.v = {v_el.data(), n};
+      el.evaluate(s, request, {f_el.data(), K.data(), C.data()});
+      if (c.c_M != 0.0) el.mass(M.data());
+      for (size_t i = 0; i < n * n; ++i) {
+        double value = 0.0;
+        if (request.stiffness) value += c.c_K * K[i];
+        if (request.damping) value += c.c_C * C[i];
+        if (c.c_M != 0.0) value += c.c_M * M[i];
+        block[i] = value;
+      }
+      const PetscInt* idx = global_index_.data() + kernel_offset_[k];
+      CATENA_PETSC(MatSetValues(J, static_cast<PetscInt>(n), idx, static_cast<PetscInt>(n), idx,
+                                block.data(), ADD_VALUES));
+    }
+  }
+  CATENA_PETSC(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+}
+
+void SecondOrderSystem::section_results(const EvalPoint& p, std::vector<int>& element_indices,
+                                        std::vector<elements::SectionResult>& results) {
+  scatter_to_local(p.q, q_work_.get());
+  const LocalArrayRead q(q_work_.get());
+  element_indices.clear();
+  results.clear();
+  std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_);
+  for (size_t k = 0; k < kernels_.size(); ++k) {
+    if (kernels_[k].origin != KernelOrigin::element) continue;
+    const elements::Element& el = *kernels_[k].element;
+    gather(k, q.data(), nullptr, q_el.data(), v_el.data());
+    const elements::LocalState s{{q_el.data(), static_cast<size_t>(el.n_dofs())}, {},
+                                 p.load_factor};
+    element_indices.push_back(kernels_[k].source);
+    results.push_back(el.section_result(s));
+  }
+}
+
+void SecondOrderSystem::owned_node_values(Vec q_global, std::vector<double>& positions,
+                                          std::vector<double>& slopes) {
+  scatter_to_local(q_global, q_work_.get());
+  const LocalArrayRead q(q_work_.get());
+  positions.clear();
+  slopes.clear();
+  for (int n : dofs_.owned_nodes()) {
+    auto value = [&](int k) {
+      const PetscInt l = dofs_.local_dof(n, k);
+      return l >= 0 ? q.data()[l] : node_reference_[12 * n + k];
+    };
+    for (int d = 0; d < 3; ++d) positions.push_back(value(d));
+    for (int d = 3; d < 6; ++d) slopes.push_back(dofs_.node_dofs(n) > 3 ? value(d) : 0.0);
+  }
+}
+
+Reactions SecondOrderSystem::reactions(const EvalPoint& p) {
+  const model::Model& m = *model_;
+  // Supported nodes (any fixed DOF or an elastic support), replicated and ascending.
+  std::vector<int> supported;
+  for (const auto& s : m.supports) supported.push_back(s.node);
+  for (const auto& s : m.elastic_supports) supported.push_back(s.node);
+  std::sort(supported.begin(), supported.end());
+  supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
+  auto slot = [&](int node) {
+    return static_cast<size_t>(std::lower_bound(supported.begin(), supported.end(), node) -
+                               supported.begin());
+  };
+
+  // Partial sums of the support force on each nodal DOF, completed by an allreduce.
+  std::vector<double> partial(12 * supported.size(), 0.0), total(partial.size(), 0.0);
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  {
+    const LocalArrayRead q(q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+    std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_), f_el(max_kernel_dofs_);
+    for (size_t k = 0; k < kernels_.size(); ++k) {
+      const Kernel& kern = kernels_[k];
+      const elements::Element& el = *kern.element;
+      const size_t n = static_cast<size_t>(el.n_dofs());
+      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
+      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
+      if (p.v) s.v = {v_el.data(), n};
+      el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
+      const int dpn = el.dofs_per_node();
+      for (size_t i = 0; i < n; ++i) {
+        const int node = kern.nodes[i / dpn], comp = static_cast<int>(i % dpn);
+        if (kern.origin == KernelOrigin::elastic_support) {
+          partial[12 * slot(node) + comp] -= f_el[i];  // the spring pulls the node back
+        } else if (global_index_[kernel_offset_[k] + i] < 0) {
+          partial[12 * slot(node) + comp] += f_el[i];  // R = f_int − f_ext at a fixed DOF
+        }
+      }
+    }
+  }
+  MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE,
+                MPI_SUM, comm_);
+
+  Reactions r;
+  std::vector<double> positions, slopes;
+  const int rank = mpi_rank(comm_);
+  const LocalArrayRead q(q_work_.get());
+  for (int node : supported) {
+    if (partition_.node_owner[node] != rank) continue;
+    const double* R = &total[12 * slot(node)];
+    r.nodes.push_back(node);
+    for (int d = 0; d < 3; ++d) r.force.push_back(R[d]);
+    // Generalised forces Q_g on gradient g act as the moment Σ g × Q_g.
+    Vec3 moment = Vec3::Zero();
+    for (int b = 1; b * 3 < dofs_.node_dofs(node); ++b) {
+      Vec3 grad, Q;
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt l = dofs_.local_dof(node, 3 * b + d);
+        grad[d] = l >= 0 ? q.data()[l] : node_reference_[12 * node + 3 * b + d];
+        Q[d] = R[3 * b + d];
+      }
+      moment += grad.cross(Q);
+    }
+    for (int d = 0; d < 3; ++d) r.moment.push_back(moment[d]);
+  }
+  return r;
+}
+
+}  // namespace catena::assembly

@@ -1,0 +1,200 @@
+#include "catena/elements/ancf_cable.hpp"
+
+#include "catena/core/error.hpp"
+
+#include <cmath>
+
+
+namespace catena::elements {
+namespace {
+
+constexpr int kQuadraturePoints = 5;
+
+// TEMPORARY until elements/hermite.hpp lands: cubic Hermite on ξ = x/L ∈ [0, 1].
+struct HermiteAt {
+  double s[4], ds[4], dds[4];
+};
+HermiteAt hermite_at(double xi, double L) {
+  const double x2 = xi * xi, x3 = x2 * xi;
+  return {{1 - 3 * x2 + 2 * x3, L * (xi - 2 * x2 + x3), 3 * x2 - 2 * x3, L * (x3 - x2)},
+          {(6 * x2 - 6 * xi) / L, 1 - 4 * xi + 3 * x2, (6 * xi - 6 * x2) / L, 3 * x2 - 2 * xi},
+          {(12 * xi - 6) / (L * L), (6 * xi - 4) / L, (6 - 12 * xi) / (L * L), (6 * xi - 2) / L}};
+}
+double gauss_point_01(int, int k) {
+  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                              0.5384693101056831, 0.9061798459386640};
+  return 0.5 * (1.0 + x[k]);
+}
+double gauss_weight_01(int, int k) {
+  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                              0.4786286704993665, 0.2369268850561891};
+  return 0.5 * w[k];
+}
+
+// Energy density of bending, κ² = p/g² − c²/g³, and its derivatives in (g, p, c).
+struct CurvatureSquared {
+  double F, Fg, Fp, Fc, Fgg, Fgp, Fgc, Fcc;
+};
+
+CurvatureSquared curvature_squared(double g, double p, double c) {
+  const double ig = 1.0 / g, ig2 = ig * ig, ig3 = ig2 * ig, ig4 = ig3 * ig, ig5 = ig4 * ig;
+  return {p * ig2 - c * c * ig3,
+          -2.0 * p * ig3 + 3.0 * c * c * ig4,
+          ig2,
+          -2.0 * c * ig3,
+          6.0 * p * ig4 - 12.0 * c * c * ig5,
+          -2.0 * ig3,
+          6.0 * c * ig4,
+          -2.0 * ig3};
+}
+
+using Blocks = std::array<Vec3, 4>;
+
+Blocks gather(std::span<const double> x) {
+  Blocks b;
+  for (int i = 0; i < 4; ++i) b[i] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+  return b;
+}
+
+// Generalised force and tangent at one quadrature point in terms of (u, w).
+struct PointTangent {
+  Vec3 fu = Vec3::Zero(), fw = Vec3::Zero();  // ∂φ/∂u, ∂φ/∂w (+ damping force on u)
+  Mat3 Huu = Mat3::Zero(), Huw = Mat3::Zero(), Hwu = Mat3::Zero(), Hww = Mat3::Zero();
+  Mat3 Cuu = Mat3::Zero();  // ∂(damping force)/∂u̇
+};
+
+}  // namespace
+
+AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gravity,
+                     const Vec3& distributed_load)
+    : length_(length), section_(section) {
+  CATENA_ASSERT(length > 0.0, "AncfCable: length must be positive");
+  // Mass per mesh length: the unstretched length L/(1+ε_p) carries μ per unit length.
+  const double mu_mesh = section.mass_per_length / (1.0 + section.prestrain);
+  const Vec3 load = mu_mesh * gravity + distributed_load;
+  // ∫_0^L S_i dx for the Hermite functions: L/2, L²/12, L/2, −L²/12.
+  const double L = length;
+  const double integral[4] = {L / 2, L * L / 12, L / 2, -L * L / 12};
+  for (int i = 0; i < 4; ++i) external_force_[i] = integral[i] * load;
+}
+
+void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
+  const double L = length_;
+  const double a = 1.0 + s.load_factor * section_.prestrain;
+  const double EA = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
+  const bool damped = tau > 0.0 && !s.v.empty();
+  const Blocks e = gather(s.q);
+  Blocks ev;
+  if (damped) ev = gather(s.v);
+
+  Blocks f;
+  for (auto& b : f) b.setZero();
+  std::array<std::array<Mat3, 4>, 4> K{}, C{};
+  if (r.stiffness)
+    for (auto& row : K)
+      for (auto& b : row) b.setZero();
+  if (r.damping)
+    for (auto& row : C)
+      for (auto& b : row) b.setZero();
+
+  const Mat3 I = Mat3::Identity();
+  for (int k = 0; k < kQuadraturePoints; ++k) {
+    const double xi = gauss_point_01(kQuadraturePoints, k);
+    const double W = gauss_weight_01(kQuadraturePoints, k) * L;
+    const HermiteAt h = hermite_at(xi, L);
+
+    Vec3 u = Vec3::Zero(), w = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) {
+      u += h.ds[i] * e[i];
+      w += h.dds[i] * e[i];
+    }
+    const double g = u.squaredNorm(), p = w.squaredNorm(), c = u.dot(w);
+    const double norm_u = std::sqrt(g);
+    const Vec3 t = u / norm_u;
+    const double eps = a * norm_u - 1.0;
+    const CurvatureSquared F = curvature_squared(g, p, c);
+
+    PointTangent pt;
+    pt.fu = EA * eps * t + 0.5 * kb * (2.0 * F.Fg * u + F.Fc * w);
+    pt.fw = 0.5 * kb * (2.0 * F.Fp * w + F.Fc * u);
+
+    Mat3 P;  // projector orthogonal to the tangent, scaled by 1/|u|
+    if (r.stiffness || damped) P = (I - t * t.transpose()) / norm_u;
+    double eps_rate = 0.0;
+    Vec3 u_rate = Vec3::Zero();
+    if (damped) {
+      for (int i = 0; i < 4; ++i) u_rate += h.ds[i] * ev[i];
+      eps_rate = a * t.dot(u_rate);
+      pt.fu += EA * tau * eps_rate * t;
+    }
+    if (r.stiffness) {
+      const Vec3 Gu = 2.0 * u;  // ∇_u g ; ∇_w p = 2w ; ∇_u c = w, ∇_w c = u
+      pt.Huu = EA * (a * t * t.transpose() + eps * P) +
+               0.5 * kb *
+                   (F.Fgg * Gu * Gu.transpose() + F.Fgc * (Gu * w.transpose() + w * Gu.transpose()) +
+                    F.Fcc * w * w.transpose() + 2.0 * F.Fg * I);
+      pt.Huw = 0.5 * kb *
+               (F.Fgp * Gu * (2.0 * w).transpose() + F.Fgc * Gu * u.transpose() +
+                F.Fcc * w * u.transpose() + F.Fc * I);
+      pt.Hwu = pt.Huw.transpose();
+      pt.Hww = 0.5 * kb * (F.Fcc * u * u.transpose() + 2.0 * F.Fp * I);
+      if (damped)
+        pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
+    }
+    if (r.damping) pt.Cuu = EA * tau * a * t * t.transpose();
+
+    for (int i = 0; i < 4; ++i) f[i] += W * (h.ds[i] * pt.fu + h.dds[i] * pt.fw);
+    if (r.stiffness) {
+      for (int i = 0; i < 4; ++i) {
+        const Mat3 A = W * (h.ds[i] * pt.Huu + h.dds[i] * pt.Hwu);
+        const Mat3 B = W * (h.ds[i] * pt.Huw + h.dds[i] * pt.Hww);
+        for (int j = 0; j < 4; ++j) K[i][j] += h.ds[j] * A + h.dds[j] * B;
+      }
+    }
+    if (r.damping && tau > 0.0) {
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
+    }
+  }
+
+  if (r.force) {
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 fi = f[i] - s.load_factor * external_force_[i];
+      for (int d = 0; d < 3; ++d) out.f[3 * i + d] = fi[d];
+    }
+  }
+  auto scatter = [](const std::array<std::array<Mat3, 4>, 4>& blocks, double* dst) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int a2 = 0; a2 < 3; ++a2)
+          for (int b2 = 0; b2 < 3; ++b2) dst[(3 * i + a2) * 12 + 3 * j + b2] = blocks[i][j](a2, b2);
+  };
+  if (r.stiffness) scatter(K, out.K);
+  if (r.damping) scatter(C, out.C);
+}
+
+void AncfCable::mass(double* M) const {
+  // Consistent mass: μ_x ∫ S_i S_j dx ⊗ I3, the classical cubic Hermite matrix (L/420)·[…].
+  const double L = length_;
+  const double mu_mesh = section_.mass_per_length / (1.0 + section_.prestrain);
+  const double m[4][4] = {{156, 22 * L, 54, -13 * L},
+                          {22 * L, 4 * L * L, 13 * L, -3 * L * L},
+                          {54, 13 * L, 156, -22 * L},
+                          {-13 * L, -3 * L * L, -22 * L, 4 * L * L}};
+  for (int k = 0; k < 144; ++k) M[k] = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int d = 0; d < 3; ++d) M[(3 * i + d) * 12 + 3 * j + d] = mu_mesh * L / 420.0 * m[i][j];
+}
+
+SectionResult AncfCable::section_result(const LocalState& s) const {
+  const Blocks e = gather(s.q);
+  const HermiteAt h = hermite_at(0.5, length_);
+  Vec3 u = Vec3::Zero();
+  for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
+  const double a = 1.0 + s.load_factor * section_.prestrain;
+  const double eps = a * u.norm() - 1.0;
+  return {section_.EA * eps, eps};
+}
+
+}  // namespace catena::elements
