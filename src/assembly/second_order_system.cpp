@@ -1,9 +1,12 @@
 #include "catena/assembly/second_order_system.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <span>
 #include <map>
 
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/elements/ancf_cable.hpp"
 #include "catena/core/mpi_comm.hpp"
 
 namespace catena::assembly {
@@ -188,31 +191,49 @@ void SecondOrderSystem::gather(size_t k, const double* q_local, const double* v_
   }
 }
 
-void SecondOrderSystem::force(const EvalPoint& p, Vec f) {
+template <class Fn>
+void SecondOrderSystem::visit_element_forces(const EvalPoint& p, Fn&& fn) {
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
+  const LocalArrayRead q(q_work_.get());
+  std::unique_ptr<LocalArrayRead> v;
+  if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+  std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_), f_el(max_kernel_dofs_);
+  for (size_t k = 0; k < kernels_.size(); ++k) {
+    const elements::Element& el = *kernels_[k].element;
+    const size_t n = static_cast<size_t>(el.n_dofs());
+    gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
+    elements::LocalState s{{q_el.data(), n}, {}, p.path};
+    if (p.v) s.v = {v_el.data(), n};
+    el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
+    fn(k, std::span<const double>(f_el.data(), n));
+  }
+}
+
+void SecondOrderSystem::force(const EvalPoint& p, Vec f) {
   {
-    const LocalArrayRead q(q_work_.get());
-    std::unique_ptr<LocalArrayRead> v;
-    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
     LocalArrayWrite out(f_work_.get());
     CATENA_PETSC(VecSet(out.local(), 0.0));
-    std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_), f_el(max_kernel_dofs_);
-    for (size_t k = 0; k < kernels_.size(); ++k) {
-      const elements::Element& el = *kernels_[k].element;
-      const size_t n = static_cast<size_t>(el.n_dofs());
-      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
-      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
-      if (p.v) s.v = {v_el.data(), n};
-      el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
-      const size_t begin = kernel_offset_[k];
-      for (size_t i = 0; i < n; ++i)
-        if (local_index_[begin + i] >= 0) out.data()[local_index_[begin + i]] += f_el[i];
-    }
+    double* dst = out.data();
+    visit_element_forces(p, [&](size_t k, std::span<const double> f_el) {
+      const PetscInt* idx = local_index_.data() + kernel_offset_[k];
+      for (size_t i = 0; i < f_el.size(); ++i)
+        if (idx[i] >= 0) dst[idx[i]] += f_el[i];
+    });
   }
   CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecGhostUpdateEnd(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecCopy(f_work_.get(), f));
+}
+
+double SecondOrderSystem::element_force_norm(const EvalPoint& p) {
+  double local = 0.0;
+  visit_element_forces(p, [&](size_t, std::span<const double> f_el) {
+    for (double x : f_el) local += x * x;
+  });
+  double global = 0.0;
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, comm_);
+  return std::sqrt(global);
 }
 
 void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J) {
@@ -230,7 +251,7 @@ void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients&
       const elements::Element& el = *kernels_[k].element;
       const size_t n = static_cast<size_t>(el.n_dofs());
       gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
-      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
+      elements::LocalState s{{q_el.data(), n}, {}, p.path};
       if (p.v) s.v = {v_el.data(), n};
       el.evaluate(s, request, {f_el.data(), K.data(), C.data()});
       if (c.c_M != 0.0) el.mass(M.data());
@@ -262,7 +283,7 @@ void SecondOrderSystem::section_results(const EvalPoint& p, std::vector<int>& el
     const elements::Element& el = *kernels_[k].element;
     gather(k, q.data(), nullptr, q_el.data(), v_el.data());
     const elements::LocalState s{{q_el.data(), static_cast<size_t>(el.n_dofs())}, {},
-                                 p.load_factor};
+                                 p.path};
     element_indices.push_back(kernels_[k].source);
     results.push_back(el.section_result(s));
   }
@@ -284,6 +305,14 @@ void SecondOrderSystem::owned_node_values(Vec q_global, std::vector<double>& pos
   }
 }
 
+bool SecondOrderSystem::has_slack_prestrain() const {
+  for (const auto& e : model_->elements)
+    if (const auto* c = std::get_if<model::CableProps>(&e.props);
+        c && c->prestrain < elements::AncfCable::kPathPrestrain)
+      return true;
+  return false;
+}
+
 Reactions SecondOrderSystem::reactions(const EvalPoint& p) {
   const model::Model& m = *model_;
   // Supported nodes (any fixed DOF or an elastic support), replicated and ascending.
@@ -299,32 +328,17 @@ Reactions SecondOrderSystem::reactions(const EvalPoint& p) {
 
   // Partial sums of the support force on each nodal DOF, completed by an allreduce.
   std::vector<double> partial(12 * supported.size(), 0.0), total(partial.size(), 0.0);
-  scatter_to_local(p.q, q_work_.get());
-  if (p.v) scatter_to_local(p.v, v_work_.get());
-  {
-    const LocalArrayRead q(q_work_.get());
-    std::unique_ptr<LocalArrayRead> v;
-    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
-    std::vector<double> q_el(max_kernel_dofs_), v_el(max_kernel_dofs_), f_el(max_kernel_dofs_);
-    for (size_t k = 0; k < kernels_.size(); ++k) {
-      const Kernel& kern = kernels_[k];
-      const elements::Element& el = *kern.element;
-      const size_t n = static_cast<size_t>(el.n_dofs());
-      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
-      elements::LocalState s{{q_el.data(), n}, {}, p.load_factor};
-      if (p.v) s.v = {v_el.data(), n};
-      el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
-      const int dpn = el.dofs_per_node();
-      for (size_t i = 0; i < n; ++i) {
-        const int node = kern.nodes[i / dpn], comp = static_cast<int>(i % dpn);
-        if (kern.origin == KernelOrigin::elastic_support) {
-          partial[12 * slot(node) + comp] -= f_el[i];  // the spring pulls the node back
-        } else if (global_index_[kernel_offset_[k] + i] < 0) {
-          partial[12 * slot(node) + comp] += f_el[i];  // R = f_int − f_ext at a fixed DOF
-        }
-      }
+  visit_element_forces(p, [&](size_t k, std::span<const double> f_el) {
+    const Kernel& kern = kernels_[k];
+    const int dpn = kern.element->dofs_per_node();
+    for (size_t i = 0; i < f_el.size(); ++i) {
+      const int node = kern.nodes[i / dpn], comp = static_cast<int>(i % dpn);
+      if (kern.origin == KernelOrigin::elastic_support)
+        partial[12 * slot(node) + comp] -= f_el[i];  // the spring pulls the node back
+      else if (global_index_[kernel_offset_[k] + i] < 0)
+        partial[12 * slot(node) + comp] += f_el[i];  // R = f_int − f_ext at a fixed DOF
     }
-  }
+  });
   MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE,
                 MPI_SUM, comm_);
 

@@ -2,6 +2,7 @@
 
 #include "catena/core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 
@@ -80,7 +81,7 @@ AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gra
 
 void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   const double L = length_;
-  const double a = 1.0 + s.load_factor * section_.prestrain;
+  const double a = 1.0 + path_prestrain(section_.prestrain, s.path);
   const double EA = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
   const bool damped = tau > 0.0 && !s.v.empty();
   const Blocks e = gather(s.q);
@@ -159,7 +160,7 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
 
   if (r.force) {
     for (int i = 0; i < 4; ++i) {
-      const Vec3 fi = f[i] - s.load_factor * external_force_[i];
+      const Vec3 fi = f[i] - s.path.loads * external_force_[i];
       for (int d = 0; d < 3; ++d) out.f[3 * i + d] = fi[d];
     }
   }
@@ -187,12 +188,17 @@ void AncfCable::mass(double* M) const {
       for (int d = 0; d < 3; ++d) M[(3 * i + d) * 12 + 3 * j + d] = mu_mesh * L / 420.0 * m[i][j];
 }
 
+double AncfCable::path_prestrain(double prestrain, const LoadPath& path) {
+  const double held = std::max(prestrain, kPathPrestrain);
+  return held * path.prestrain + path.release * (prestrain - held);
+}
+
 SectionResult AncfCable::section_result(const LocalState& s) const {
   const Blocks e = gather(s.q);
   const HermiteAt h = hermite_at(0.5, length_);
   Vec3 u = Vec3::Zero();
   for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
-  const double a = 1.0 + s.load_factor * section_.prestrain;
+  const double a = 1.0 + path_prestrain(section_.prestrain, s.path);
   const double eps = a * u.norm() - 1.0;
   return {section_.EA * eps, eps};
 }

@@ -9,7 +9,7 @@ void zero(double* a, int n) {
 
 void PointMass::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   if (r.force)
-    for (int k = 0; k < 3; ++k) out.f[k] = -s.load_factor * mass_ * gravity_[k];
+    for (int k = 0; k < 3; ++k) out.f[k] = -s.path.loads * mass_ * gravity_[k];
   if (r.stiffness) zero(out.K, 9);
   if (r.damping) zero(out.C, 9);
 }
@@ -21,7 +21,7 @@ void PointMass::mass(double* M) const {
 
 void NodalForce::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   if (r.force)
-    for (int k = 0; k < 3; ++k) out.f[k] = -s.load_factor * force_[k];
+    for (int k = 0; k < 3; ++k) out.f[k] = -s.path.loads * force_[k];
   if (r.stiffness) zero(out.K, 9);
   if (r.damping) zero(out.C, 9);
 }

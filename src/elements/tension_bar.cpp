@@ -26,8 +26,8 @@ void TensionBar::evaluate(const LocalState& s, Request r, LocalOutput out) const
   const double N = EA * eps + c * l_rate;
 
   if (r.force) {
-    const Vec3 fB = N * e - s.load_factor * node_weight_;
-    const Vec3 fA = -N * e - s.load_factor * node_weight_;
+    const Vec3 fB = N * e - s.path.loads * node_weight_;
+    const Vec3 fA = -N * e - s.path.loads * node_weight_;
     for (int k = 0; k < 3; ++k) {
       out.f[k] = fA[k];
       out.f[3 + k] = fB[k];

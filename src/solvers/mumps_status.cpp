@@ -21,14 +21,17 @@ MumpsStatus mumps_status(KSP ksp) {
   if (!type || std::strcmp(type, MATSOLVERMUMPS) != 0) return status;
   Mat factor = nullptr;
   CATENA_PETSC(PCFactorGetMatrix(pc, &factor));
-  PetscInt v1 = 0, v2 = 0, v28 = 0;
+  PetscInt v1 = 0, v2 = 0, v12 = 0, v28 = 0;
   CATENA_PETSC(MatMumpsGetInfog(factor, 1, &v1));
   CATENA_PETSC(MatMumpsGetInfog(factor, 2, &v2));
+  CATENA_PETSC(MatMumpsGetInfog(factor, 12, &v12));
   CATENA_PETSC(MatMumpsGetInfog(factor, 28, &v28));
   status.is_mumps = true;
   status.infog1 = v1;
   status.infog2 = v2;
   status.null_pivots = v28;
+  status.symmetric = is_cholesky;
+  status.negative_pivots = is_cholesky ? v12 : 0;
   return status;
 }
 

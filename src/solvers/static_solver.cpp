@@ -3,6 +3,7 @@
 #include <petscsnes.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <sstream>
 
@@ -19,22 +20,30 @@ struct StaticSolver::Impl {
   VecHandle residual;
   MatHandle jacobian;
   CallbackGuard guard;
-  double load_factor = 0.0;
+  // The load path (elements::LoadPath) parameterised by τ: [0, 1] tensions, [1, 2] loads,
+  // [2, 3] releases prestrain to its scene value (only when some cable needs it).
+  elements::LoadPath path{0.0, 0.0, 0.0};
   int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
 
   Impl(assembly::SecondOrderSystem& s, const model::StaticOptions& o) : system(s), options(o) {}
 
+  void set_path(double tau) {
+    path = {std::clamp(tau, 0.0, 1.0), std::clamp(tau - 1.0, 0.0, 1.0),
+            std::clamp(tau - 2.0, 0.0, 1.0)};
+  }
+
   static PetscErrorCode form_function(SNES, Vec q, Vec f, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
     return self->guard.run([&] {
-      self->system.force({q, nullptr, self->load_factor}, f);
+      self->system.force({q, nullptr, self->path}, f);
     });
   }
   static PetscErrorCode form_jacobian(SNES, Vec q, Mat J, Mat, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
     ++self->n_jacobians;
     return self->guard.run([&] {
-      self->system.jacobian({q, nullptr, self->load_factor}, {1.0, 0.0, 0.0}, J);
+      self->system.jacobian({q, nullptr, self->path},
+                            {1.0, 0.0, 0.0}, J);
     });
   }
 };
@@ -58,7 +67,8 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
   CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
   CATENA_PETSC(KSPGetPC(ksp, &pc));
-  CATENA_PETSC(PCSetType(pc, PCLU));
+  // The static tangent is symmetric: LDLᵀ halves the factorisation and yields the inertia.
+  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
   CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   enable_mumps_null_pivot_detection("static_");
   CATENA_PETSC(SNESSetFromOptions(s.snes.get()));
@@ -87,6 +97,34 @@ std::string largest_residual_location(const assembly::SecondOrderSystem& system,
   return os.str();
 }
 
+// Where on the load path τ is, in words.
+std::string describe_path(double tau, double tau_end) {
+  std::ostringstream os;
+  if (tau <= 1.0)
+    os << "prestrain " << 100.0 * tau << " % applied, no loads yet";
+  else if (tau <= 2.0)
+    os << "load factor " << tau - 1.0
+       << (tau_end > 2.0 ? " (cables held at their path prestrain)" : "");
+  else
+    os << "full load, cable prestrain " << 100.0 * (tau - 2.0)
+       << " % of the way from the path prestrain to its scene value";
+  return os.str();
+}
+
+void check_factorisation(const MumpsStatus& mumps, const std::string& where) {
+  if (mumps.null_pivots > 0 || mumps.infog1 == -10)
+    throw NumericalError(
+        "static solve: the stiffness matrix is singular at " + where + " (MUMPS found " + std::to_string(mumps.null_pivots) +
+        " null pivots, INFOG(1) = " + std::to_string(mumps.infog1) +
+        "): the structure is a mechanism. Check the supports (a cable pinned at one end "
+        "only can swing; a beam needs its rotations held somewhere) and that every node is "
+        "connected to a supported part.");
+  if (mumps.infog1 < 0)
+    throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
+                         std::to_string(mumps.infog1) + ", INFOG(2) = " +
+                         std::to_string(mumps.infog2) + " at " + where);
+}
+
 }  // namespace
 
 StaticReport StaticSolver::solve(Vec q) {
@@ -95,13 +133,25 @@ StaticReport StaticSolver::solve(Vec q) {
   VecHandle q_trial;
   CATENA_PETSC(VecDuplicate(q, q_trial.out()));
 
-  double lambda = 0.0;
+
+  const double tau_end = s.system.has_slack_prestrain() ? 3.0 : 2.0;
+
+  double tau = 0.0;  // reached point on the load path
   double step = std::clamp(s.options.initial_load_step, s.options.min_load_step, 1.0);
   int attempts = 0;
-  while (lambda < 1.0) {
+  while (tau < tau_end) {
     if (attempts++ >= s.options.max_load_steps) break;
-    const double target = std::min(1.0, lambda + step);
-    s.load_factor = target;
+    // Never step across a phase boundary (integer τ), where the path changes what it ramps.
+    const double target = std::min({std::floor(tau) + 1.0, tau + step, tau_end});
+    s.set_path(target);
+    // Converged when |f| ≤ atol + rtol·(norm of the unassembled element forces), the scale
+    // of f's round-off, or SNES's rtol against the step's initial residual. Element forces
+    // are large where they cancel at nodes (tension), so a scale from external loads
+    // alone would ask for more than round-off allows.
+    const double scale = s.system.element_force_norm({q, nullptr, s.path});
+    CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.options.atol + s.options.rtol * scale,
+                                   s.options.rtol, 0.0, s.options.max_newton_iterations,
+                                   100000));
     CATENA_PETSC(VecCopy(q, q_trial.get()));
     s.n_jacobians = 0;
     const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, q_trial.get());
@@ -116,22 +166,17 @@ StaticReport StaticSolver::solve(Vec q) {
     KSP ksp = nullptr;
     CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
     const MumpsStatus mumps = s.n_jacobians > 0 ? mumps_status(ksp) : MumpsStatus{};
-    if (mumps.null_pivots > 0 || mumps.infog1 == -10)
-      throw NumericalError(
-          "static solve: the stiffness matrix is singular at load factor " +
-          std::to_string(target) + " (MUMPS found " + std::to_string(mumps.null_pivots) +
-          " null pivots, INFOG(1) = " + std::to_string(mumps.infog1) +
-          "): the structure is a mechanism. Check supports (a pinned cable end also needs "
-          "the other end held) and that every node is connected.");
-    if (mumps.infog1 < 0)
-      throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
-                           std::to_string(mumps.infog1) + ", INFOG(2) = " +
-                           std::to_string(mumps.infog2) + " at load factor " +
-                           std::to_string(target));
+    check_factorisation(mumps, describe_path(target, tau_end));
 
-    if (reason > 0) {
+    // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
+    // cable's inverted arch), whose tangent stiffness has negative eigenvalues. The LDLᵀ
+    // factorisation's inertia (MUMPS INFOG(12)) counts them at no extra cost; it belongs
+    // to the last Newton iterate, which is within the convergence tolerance.
+    const bool unstable = mumps.symmetric && mumps.negative_pivots > 0;
+    if (unstable) ++report.n_unstable_rejections;
+    if (reason > 0 && !unstable) {
       CATENA_PETSC(VecCopy(q_trial.get(), q));
-      lambda = target;
+      tau = target;
       ++report.n_load_steps;
       if (its <= 4) step = std::min(1.0, 2.0 * step);
     } else {
@@ -141,24 +186,28 @@ StaticReport StaticSolver::solve(Vec q) {
     }
   }
 
-  // Residual at the returned state (the last converged load level).
-  s.load_factor = lambda;
-  s.system.force({q, nullptr, lambda}, s.residual.get());
+  // Residual at the returned state (the last converged point of the path).
+  s.set_path(tau);
+  s.system.force({q, nullptr, s.path}, s.residual.get());
   PetscReal norm = 0.0;
   CATENA_PETSC(VecNorm(s.residual.get(), NORM_2, &norm));
-  report.load_factor = lambda;
+  report.load_factor = s.path.loads;
   report.residual_norm = norm;
-  if (lambda < 1.0) {
+  if (tau < tau_end) {
     // Report where the failed attempt left the largest residual.
-    s.load_factor = std::min(1.0, lambda + step);
-    s.system.force({q_trial.get(), nullptr, s.load_factor}, s.residual.get());
+    const double failed = std::min(tau_end, tau + step);
+    s.set_path(failed);
+    s.system.force({q_trial.get(), nullptr, s.path}, s.residual.get());
     std::ostringstream os;
-    os << "static solve did not converge: reached load factor " << lambda << " of 1 after "
+    os << "static solve did not converge: reached " << describe_path(tau, tau_end) << " after "
        << report.n_load_steps << " accepted and " << report.n_rejected_steps
        << " rejected load steps (" << report.n_newton_iterations
-       << " Newton iterations); at the last attempt (load factor " << s.load_factor
+       << " Newton iterations); at the last attempt (" << describe_path(failed, tau_end)
        << ") the largest residual is at " << largest_residual_location(s.system, s.residual.get())
-       << ". Try a smaller analysis.load_steps.initial or more analysis.newton.max_iterations.";
+       << ". " << report.n_unstable_rejections
+       << " steps converged to unstable equilibria (negative tangent stiffness) and were "
+          "retried. Try a smaller analysis.load_steps.initial or more "
+          "analysis.newton.max_iterations.";
     throw NumericalError(os.str());
   }
   return report;

@@ -52,7 +52,7 @@ TEST(AncfCable, StiffnessIsSymmetricWithoutDamping) {
   const AncfCable cable(1.5, s, kGravity, Vec3::Zero());
   const auto q = perturbed(straight({0, 0, 0}, {1.5, 0, 0}), 0.1, rng);
   std::vector<double> f(12), K(144);
-  cable.evaluate({q, {}, 1.0}, {true, true, false}, {f.data(), K.data(), nullptr});
+  cable.evaluate({q, {}, {}}, {true, true, false}, {f.data(), K.data(), nullptr});
   double asym = 0.0, scale = 0.0;
   for (int i = 0; i < 12; ++i)
     for (int j = 0; j < 12; ++j) {
@@ -114,7 +114,7 @@ TEST(AncfCable, UniformStretchGivesAxialForceEAEpsilon) {
   EXPECT_NEAR(f[0], -s.EA * eps, 1e-6 * s.EA * eps);
   EXPECT_NEAR(f[6], s.EA * eps, 1e-6 * s.EA * eps);
   EXPECT_NEAR(f[3], 0.0, 1e-6);
-  EXPECT_NEAR(cable.section_result({q, {}, 1.0}).axial_force, s.EA * eps, 1e-6 * s.EA * eps);
+  EXPECT_NEAR(cable.section_result({q, {}, {}}).axial_force, s.EA * eps, 1e-6 * s.EA * eps);
 }
 
 TEST(AncfCable, ConstantCurvatureBendingEnergyMatchesArc) {

@@ -29,10 +29,10 @@ TEST(TensionBar, SlackBarCarriesNoForce) {
   const el::TensionBar bar(1.0, {1e5, 0.0, 30.0, true}, Vec3::Zero());
   const std::vector<double> q = {0, 0, 0, 0, 0, 0.9}, v = {0, 0, 0, 0, 0, 1.0};
   for (double f : catena::test::element_force(bar, q, v, 1.0)) EXPECT_EQ(f, 0.0);
-  EXPECT_EQ(bar.section_result({q, {}, 1.0}).axial_force, 0.0);
+  EXPECT_EQ(bar.section_result({q, {}, {}}).axial_force, 0.0);
   // Taut: N = EA ε.
   const std::vector<double> taut = {0, 0, 0, 0, 0, 1.01};
-  EXPECT_NEAR(bar.section_result({taut, {}, 1.0}).axial_force, 1e5 * 0.01, 1e-6);
+  EXPECT_NEAR(bar.section_result({taut, {}, {}}).axial_force, 1e5 * 0.01, 1e-6);
 }
 
 TEST(TensionBar, LumpedMassAndWeight) {

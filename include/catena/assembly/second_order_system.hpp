@@ -28,7 +28,7 @@ namespace catena::assembly {
 struct EvalPoint {
   Vec q = nullptr;
   Vec v = nullptr;
-  double load_factor = 1.0;
+  elements::LoadPath path;  // the static load path; dynamics uses its end
 };
 
 struct JacobianCoefficients {
@@ -65,6 +65,9 @@ class SecondOrderSystem {
 
   // Collective. f(q, v; λ) into f (global vector).
   void force(const EvalPoint& p, Vec f);
+  // Collective. Norm of the unassembled element forces, sqrt(Σ_e |f_e|²): the scale of
+  // the round-off in f, against which convergence tolerances are set.
+  double element_force_norm(const EvalPoint& p);
   // Collective. J = c_K K + c_C C + c_M M into J (zeroed first, assembled on return).
   void jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
 
@@ -77,11 +80,18 @@ class SecondOrderSystem {
   // Collective. Support reactions at owned supported nodes.
   Reactions reactions(const EvalPoint& p);
 
+  // True if the static load path needs its second phase (some cable's prestrain is below
+  // the path's tensioning prestrain, see elements::LocalState).
+  bool has_slack_prestrain() const;
+
   // Number of kernels this rank evaluates (for load-balance reports).
   size_t n_local_kernels() const { return kernels_.size(); }
 
  private:
   void scatter_to_local(Vec global, Vec local_ghosted);
+  // Collective. Evaluates every local kernel's force at p and calls fn(kernel, f_el).
+  template <class Fn>
+  void visit_element_forces(const EvalPoint& p, Fn&& fn);
   // Gathers kernel k's local state from the ghosted local arrays.
   void gather(size_t k, const double* q_local, const double* v_local, double* q_el,
               double* v_el) const;

@@ -6,7 +6,8 @@
 //   r(x) = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x ,   x ∈ [0, L] (mesh length),
 //   S = cubic Hermite (elements/hermite.hpp).
 //
-// Strain energy per mesh length, with a = 1 + λ·ε_p (prestrain ramped by the load factor λ;
+// Strain energy per mesh length, with a = 1 + ε_p (ε_p along the static load path, see
+// LocalState and path_prestrain;
 // the unstretched element length is L/a), u = r', w = r'':
 //   axial (Biot strain, exact for the elastic catenary):  ε = a|u| − 1,  ½ (EA/a) ε²
 //   bending, exact curvature of the centre line:          κ² = |u×w|²/|u|⁶ ,  ½ (EI/a) κ²
@@ -50,7 +51,13 @@ class AncfCable final : public Element {
 
   double length() const { return length_; }
 
+  // Least prestrain held while the static load path puts the loads on (see LoadPath).
+  static constexpr double kPathPrestrain = 1.0e-3;
+  // Prestrain at a point of the load path: ε_t·p + r·(ε_p − ε_t), ε_t = max(ε_p, kPathPrestrain).
+  static double path_prestrain(double prestrain, const LoadPath& path);
+
  private:
+
   double length_;
   CableSection section_;
   // ∫ Sᵀ (μ_x g + q) dx at full load, per Hermite block (4 blocks of 3).

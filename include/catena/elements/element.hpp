@@ -22,12 +22,29 @@ struct Request {
   bool damping = false;    // C = ∂f/∂v
 };
 
+// A point on the static load path; dynamics runs at its end {1, 1, 1}. The path first
+// tensions the cables (prestrain: 0 → 1 of ε_t = max(ε_p, AncfCable::kPathPrestrain)),
+// then puts on gravity and loads (loads: 0 → 1), then moves each cable's prestrain from ε_t
+// to its scene value ε_p (release: 0 → 1). Loads applied to an unstressed or compressed
+// straight cable meet no transverse stiffness, and the nearest equilibrium of a
+// compressed one is the inverted arch: tension first avoids both.
+struct LoadPath {
+  double prestrain = 1.0;
+  double loads = 1.0;
+  double release = 1.0;
+
+  LoadPath() = default;
+  LoadPath(double prestrain_factor, double load_factor, double release_factor)
+      : prestrain(prestrain_factor), loads(load_factor), release(release_factor) {}
+  // Prestrain in place, loads scaled by `load_factor` (element tests, load stepping).
+  LoadPath(double load_factor) : loads(load_factor) {}  // NOLINT(google-explicit-constructor)
+};
+
 // Local state, node-major. `v` may be empty: then velocities are zero (statics).
 struct LocalState {
   std::span<const double> q;
   std::span<const double> v;
-  // Scales gravity, distributed loads and prestrain; load stepping ramps it 0 → 1.
-  double load_factor = 1.0;
+  LoadPath path;
 };
 
 // Caller-owned output buffers of size n_dofs() (f) and n_dofs()² (K, C, row-major).

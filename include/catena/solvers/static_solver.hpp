@@ -1,9 +1,11 @@
 #pragma once
-// Static equilibrium f(q; λ = 1) = 0 by Newton's method (PETSc SNES, line search) with a
-// direct solve (KSPPREONLY + LU from MUMPS), under load stepping: the load factor λ scales
-// gravity, loads and prestrain and is advanced from 0 (the stress-free reference
-// configuration) to 1, halving the increment when Newton fails and growing it when Newton
-// converges quickly. Every SNES/KSP convergence reason and MUMPS's status are checked.
+// Static equilibrium f(q) = 0 by Newton's method (PETSc SNES, line search) with a direct
+// solve (KSPPREONLY + MUMPS LDLᵀ, the tangent being symmetric), continued along the load
+// path of elements::LoadPath from the stress-free reference configuration: tension the
+// cables, put on gravity and loads, release cable prestrain to its scene value. The step
+// along the path halves when Newton fails or converges to an unstable equilibrium
+// (negative pivots in the LDLᵀ factorisation) and doubles when Newton converges quickly.
+// Every SNES convergence reason and MUMPS's status are checked.
 //
 // Options database prefix: -static_ (e.g. -static_snes_monitor, -static_ksp_type gmres,
 // -static_pc_type, -static_mat_mumps_icntl_14 50). Set last, so the command line wins.
@@ -19,6 +21,7 @@ struct StaticReport {
   double load_factor = 0.0;  // reached (1 on success)
   int n_load_steps = 0;      // accepted
   int n_rejected_steps = 0;
+  int n_unstable_rejections = 0;  // rejected because the equilibrium was unstable
   int n_newton_iterations = 0;  // over all attempts
   double residual_norm = 0.0;   // 2-norm of f at the returned state, N
 };

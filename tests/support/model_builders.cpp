@@ -1,0 +1,47 @@
+#include "model_builders.hpp"
+
+#include <variant>
+
+namespace catena::test {
+
+std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_elements,
+                          const model::ElementProps& props) {
+  std::vector<int> nodes;
+  for (int i = 0; i <= n_elements; ++i) {
+    model::Node node;
+    node.position = a + (b - a) * (static_cast<double>(i) / n_elements);
+    node.id = static_cast<std::int64_t>(m.nodes.size()) + 1;
+    nodes.push_back(static_cast<int>(m.nodes.size()));
+    m.nodes.push_back(node);
+  }
+  for (int i = 0; i < n_elements; ++i) {
+    model::ElementDesc e;
+    e.id = static_cast<std::int64_t>(m.elements.size()) + 1;
+    e.nodes = {nodes[i], nodes[i + 1]};
+    e.props = props;
+    m.elements.push_back(e);
+  }
+  return nodes;
+}
+
+void set_reference_frames(model::Model& m) {
+  for (const auto& e : m.elements) {
+    const bool has_slope = std::holds_alternative<model::CableProps>(e.props) ||
+                           std::holds_alternative<model::BeamProps>(e.props);
+    if (!has_slope) continue;
+    const Vec3 t = (m.nodes[e.nodes[1]].position - m.nodes[e.nodes[0]].position).normalized();
+    for (int n : e.nodes) m.nodes[n].tangent = t;
+    if (const auto* beam = std::get_if<model::BeamProps>(&e.props)) {
+      const Vec3 y = (beam->y_axis - beam->y_axis.dot(t) * t).normalized();
+      for (int n : e.nodes) {
+        m.nodes[n].section_y = y;
+        m.nodes[n].section_z = t.cross(y);
+      }
+    }
+  }
+}
+
+void pin(model::Model& m, int node) { m.supports.push_back({node, 0x7u}); }
+void clamp(model::Model& m, int node) { m.supports.push_back({node, 0xFFFu}); }
+
+}  // namespace catena::test

@@ -1,0 +1,21 @@
+#pragma once
+// Programmatic models for tests that exercise layers below the scene reader.
+#include <vector>
+
+#include "catena/model/model.hpp"
+
+namespace catena::test {
+
+// A straight line of n two-node elements from a to b with the given properties; nodes are
+// appended to `m` (ids = index + 1) and the node indices returned (first to last).
+std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_elements,
+                          const model::ElementProps& props);
+
+// Sets the nodal reference frames (tangent) from attached cable/beam elements, as the
+// scene reader does.
+void set_reference_frames(model::Model& m);
+
+void pin(model::Model& m, int node);    // fix x, y, z
+void clamp(model::Model& m, int node);  // fix all 12 nodal DOFs (trimmed to the node's)
+
+}  // namespace catena::test
