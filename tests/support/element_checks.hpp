@@ -13,10 +13,10 @@ struct JacobianCheck {
 
 // f evaluated at (q, v, load_factor).
 std::vector<double> element_force(const elements::Element& e, const std::vector<double>& q,
-                                  const std::vector<double>& v, double load_factor);
+                                  const std::vector<double>& v, elements::LoadPath path);
 
 JacobianCheck check_element_jacobians(const elements::Element& e, const std::vector<double>& q,
-                                      const std::vector<double>& v, double load_factor,
+                                      const std::vector<double>& v, elements::LoadPath path,
                                       double h = 1e-6);
 
 }  // namespace catena::test
