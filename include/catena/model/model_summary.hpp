@@ -1,0 +1,24 @@
+#pragma once
+// The human summary `catena check` prints: what the scene holds, how many DOFs it makes
+// and how many MPI ranks it deserves.
+#include <string>
+
+#include "catena/model/model.hpp"
+
+namespace catena::model {
+
+// Free DOFs per rank the suggestion aims at: enough work per rank for the parallel
+// direct/iterative solve to beat its communication.
+inline constexpr int free_dofs_per_rank_target = 20000;
+
+// Not collective. max(1, round(free DOFs / free_dofs_per_rank_target)).
+int suggested_rank_count(const Model& model);
+
+// Not collective. Multi-line summary: node, element (per kind) and DOF (per node kind:
+// beam 12, cable 6, other 3) counts, fixed and free DOFs, supports, elastic supports,
+// loads, masses, sets with their element counts and prestrain/tension, analysis and
+// output settings, and the suggested rank count. `n_ranks_running` is the size of the
+// communicator the check runs on, shown beside the suggestion (pass 1 if unknown).
+std::string describe(const Model& model, int n_ranks_running);
+
+}  // namespace catena::model

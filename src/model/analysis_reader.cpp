@@ -1,0 +1,70 @@
+#include "analysis_reader.hpp"
+
+#include "did_you_mean.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+// Generous caps that still catch a misplaced exponent ("max: 2e9").
+constexpr std::int64_t max_load_steps_cap = 1'000'000;
+constexpr std::int64_t max_newton_iterations_cap = 10'000;
+
+void read_analysis_type(const Field& type) {
+  // Only statics exists so far; dynamics (HHT, IRK) will add types here.
+  static const std::vector<std::string> accepted{"static"};
+  const std::string name = type.text_or("static");
+  if (name != "static")
+    type.fail("unknown analysis type '" + name + "';" + did_you_mean(name, accepted) +
+              " accepted: static");
+}
+
+void read_load_steps(const Field& steps, StaticOptions& options) {
+  if (!steps.present()) return;
+  steps.expect_map("load stepping settings {initial, min, max}");
+  steps.check_keys({"initial", "min", "max"});
+  const RealRange fraction = RealRange::between(0.0, false, 1.0, true, "");
+  const Field initial = steps.child("initial");
+  const Field min = steps.child("min");
+  options.initial_load_step = initial.real_or(options.initial_load_step, fraction);
+  options.min_load_step = min.real_or(options.min_load_step, fraction);
+  options.max_load_steps = static_cast<int>(steps.child("max").integer_or(
+      options.max_load_steps, IntRange::between(1, max_load_steps_cap)));
+  if (options.min_load_step > options.initial_load_step)
+    (min.present() ? min : initial)
+        .fail("the smallest load step (min = " + format_number(options.min_load_step) +
+              ") exceeds the first one (initial = " + format_number(options.initial_load_step) +
+              "); expected 0 < min <= initial <= 1");
+}
+
+void read_newton(const Field& newton, StaticOptions& options) {
+  if (!newton.present()) return;
+  newton.expect_map("Newton settings {rtol, atol, max_iterations}");
+  newton.check_keys({"rtol", "atol", "max_iterations"});
+  options.rtol =
+      newton.child("rtol").real_or(options.rtol, RealRange::between(0.0, false, 1.0, false, ""));
+  options.atol = newton.child("atol").real_or(options.atol, RealRange::positive("N"));
+  options.max_newton_iterations =
+      static_cast<int>(newton.child("max_iterations")
+                           .integer_or(options.max_newton_iterations,
+                                       IntRange::between(1, max_newton_iterations_cap)));
+}
+
+}  // namespace
+
+void read_analysis(const Field& analysis, StaticOptions& options) {
+  if (!analysis.present()) return;
+  analysis.expect_map("analysis settings {type, load_steps, newton}");
+  analysis.check_keys({"type", "load_steps", "newton"});
+  read_analysis_type(analysis.child("type"));
+  read_load_steps(analysis.child("load_steps"), options);
+  read_newton(analysis.child("newton"), options);
+}
+
+void read_output(const Field& output, OutputOptions& options) {
+  if (!output.present()) return;
+  output.expect_map("output settings {file}");
+  output.check_keys({"file"});
+  options.file = output.child("file").text_or(options.file);
+}
+
+}  // namespace catena::model::detail

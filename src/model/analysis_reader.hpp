@@ -1,0 +1,15 @@
+#pragma once
+// The scene's `analysis` (which problem to solve and the solver's load stepping and Newton
+// settings) and `output` (where results go). Both optional; defaults in model.hpp.
+#include "catena/model/model.hpp"
+#include "yaml_fields.hpp"
+
+namespace catena::model::detail {
+
+// Not collective. Reads `analysis` into `options` (absent keys keep their defaults).
+void read_analysis(const Field& analysis, StaticOptions& options);
+
+// Not collective. Reads `output` into `options`.
+void read_output(const Field& output, OutputOptions& options);
+
+}  // namespace catena::model::detail

@@ -1,0 +1,173 @@
+#include "catena/model/model_summary.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "catena/model/node_dofs.hpp"
+#include "number_format.hpp"
+
+namespace catena::model {
+namespace {
+
+using detail::format_number;
+using detail::format_vector;
+
+constexpr int label_width = 18;
+
+std::string plural(long long n, const std::string& word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+// Counts per element kind in variant order, e.g. "cable 300, bar 12".
+std::string kind_counts(const std::vector<long long>& counts) {
+  static constexpr const char* names[] = {"cable", "beam", "bar", "spring"};
+  std::string text;
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    if (counts[k] > 0)
+      text += (text.empty() ? "" : ", ") + std::string(names[k]) + " " + std::to_string(counts[k]);
+  return text.empty() ? "none" : text;
+}
+
+// What one set (a line name or an explicit elements' `set`) holds.
+struct SetSummary {
+  std::vector<long long> count_per_kind = std::vector<long long>(4, 0);
+  long long n_cables = 0;
+  double min_prestrain = 0.0, max_prestrain = 0.0;
+  double min_tension = 0.0, max_tension = 0.0;  // EA·prestrain, N (EA may differ)
+
+  void add(const ElementDesc& element) {
+    ++count_per_kind[element.props.index()];
+    const auto* cable = std::get_if<CableProps>(&element.props);
+    if (!cable) return;
+    const double tension = cable->EA * cable->prestrain;
+    if (n_cables++ == 0) {
+      min_prestrain = max_prestrain = cable->prestrain;
+      min_tension = max_tension = tension;
+      return;
+    }
+    min_prestrain = std::min(min_prestrain, cable->prestrain);
+    max_prestrain = std::max(max_prestrain, cable->prestrain);
+    min_tension = std::min(min_tension, tension);
+    max_tension = std::max(max_tension, tension);
+  }
+
+  std::string text() const {
+    long long total = 0;
+    for (const long long c : count_per_kind) total += c;
+    std::string out = plural(total, "element") + " (" + kind_counts(count_per_kind) + ")";
+    if (n_cables == 0) return out;
+    const auto range = [](double lo, double hi) {
+      return lo == hi ? format_number(lo) : format_number(lo) + " to " + format_number(hi);
+    };
+    // EA·ε_p is the tension at the mesh length; a negative one means a slack cable
+    // (longer unstretched than its mesh), not a compressed one.
+    const std::string prestress =
+        ", prestrain " + range(min_prestrain, max_prestrain) +
+        " (tension at mesh length EA*prestrain = " + range(min_tension, max_tension) + " N";
+    return out + prestress + (max_prestrain < 0.0 ? "; slack)" : ")");
+  }
+};
+
+class Table {
+ public:
+  void row(const std::string& label, const std::string& value, int indent = 2) {
+    out_ << std::string(static_cast<std::size_t>(indent), ' ') << label;
+    const int pad = label_width - static_cast<int>(label.size()) - (indent - 2);
+    out_ << std::string(static_cast<std::size_t>(std::max(pad, 1)), ' ') << value << "\n";
+  }
+  void heading(const std::string& text) { out_ << text << "\n"; }
+  std::string str() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+};
+
+struct DofCounts {
+  long long nodes_with[13] = {};  // indexed by DOFs per node (3, 6, 12)
+  long long total = 0;
+  long long fixed = 0;
+};
+
+DofCounts count_dofs(const Model& model) {
+  DofCounts c;
+  for (const int d : all_node_dofs(model)) {
+    ++c.nodes_with[d];
+    c.total += d;
+  }
+  for (const Support& s : model.supports) c.fixed += std::popcount(s.fixed_mask);
+  return c;
+}
+
+}  // namespace
+
+int suggested_rank_count(const Model& model) {
+  const DofCounts dofs = count_dofs(model);
+  const double ranks =
+      std::round(static_cast<double>(dofs.total - dofs.fixed) / free_dofs_per_rank_target);
+  return std::max(1, static_cast<int>(ranks));
+}
+
+std::string describe(const Model& model, int n_ranks_running) {
+  Table t;
+  t.heading("Scene" + (model.name.empty() ? std::string() : " '" + model.name + "'") +
+            (model.source_file.empty() ? std::string() : " from " + model.source_file));
+
+  std::vector<long long> per_kind(4, 0);
+  std::vector<std::string> set_order;
+  std::map<std::string, SetSummary> sets;
+  for (const ElementDesc& element : model.elements) {
+    ++per_kind[element.props.index()];
+    if (!sets.contains(element.set)) set_order.push_back(element.set);
+    sets[element.set].add(element);
+  }
+
+  const DofCounts dofs = count_dofs(model);
+  std::string dof_split;
+  for (const int d : {12, 6, 3}) {
+    if (dofs.nodes_with[d] == 0) continue;
+    const char* kind = d == 12 ? "beam" : d == 6 ? "cable" : "other";
+    dof_split += (dof_split.empty() ? "" : " + ") + std::to_string(dofs.nodes_with[d]) + " " +
+                 kind + " nodes x " + std::to_string(d);
+  }
+
+  Vec3 total_load = Vec3::Zero();
+  for (const NodalLoad& load : model.nodal_loads) total_load += load.force;
+  double total_mass = 0.0;
+  for (const PointMass& m : model.point_masses) total_mass += m.mass;
+
+  t.row("nodes", std::to_string(model.nodes.size()));
+  t.row("elements", std::to_string(model.elements.size()) + " (" + kind_counts(per_kind) + ")");
+  t.row("DOFs", std::to_string(dofs.total) + " = " + dof_split);
+  t.row("fixed DOFs", std::to_string(dofs.fixed));
+  t.row("free DOFs", std::to_string(dofs.total - dofs.fixed));
+  t.row("supports", std::to_string(model.supports.size()));
+  t.row("elastic supports", std::to_string(model.elastic_supports.size()));
+  t.row("nodal loads",
+        std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");
+  t.row("point masses",
+        std::to_string(model.point_masses.size()) + " (sum " + format_number(total_mass) + " kg)");
+  t.row("gravity", format_vector(model.gravity) + " m/s^2");
+  if (!set_order.empty()) {
+    t.heading("  sets");
+    for (const std::string& name : set_order)
+      t.row(name.empty() ? "(no set)" : name, sets.at(name).text(), 4);
+  }
+  const StaticOptions& s = model.static_options;
+  t.row("analysis", "static; load steps initial " + format_number(s.initial_load_step) + ", min " +
+                        format_number(s.min_load_step) + ", at most " +
+                        std::to_string(s.max_load_steps) + "; Newton rtol " +
+                        format_number(s.rtol) + ", atol " + format_number(s.atol) + " N, at most " +
+                        std::to_string(s.max_newton_iterations) + " iterations");
+  t.row("output", model.output.file);
+  t.row("suggested ranks", std::to_string(suggested_rank_count(model)) + " (about " +
+                               std::to_string(free_dofs_per_rank_target) +
+                               " free DOFs per rank); this check ran on " +
+                               plural(n_ranks_running, "rank"));
+  return t.str();
+}
+
+}  // namespace catena::model

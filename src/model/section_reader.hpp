@@ -1,0 +1,40 @@
+#pragma once
+// The scene's `sections`: named property sets (cable, beam, bar, spring) that lines and
+// elements refer to by name. Keys, units and ranges: docs/scene.md "sections".
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "catena/model/model.hpp"
+#include "yaml_fields.hpp"
+
+namespace catena::model::detail {
+
+enum class SectionKind { cable, beam, bar, spring };
+
+// Not collective. "cable", "beam", "bar" or "spring".
+std::string_view section_kind_name(SectionKind kind);
+
+struct Section {
+  std::string name;
+  SectionKind kind = SectionKind::cable;
+  ElementProps props;  // copied into every element of this section
+};
+
+using SectionTable = std::map<std::string, Section, std::less<>>;
+
+// Not collective. Reads and validates the `sections` map (absent: no sections).
+SectionTable read_sections(const Field& sections);
+
+// Not collective. The section a line's or element's `section:` key names; errors with the
+// defined names (and the closest one) if there is none.
+const Section& find_section(const SectionTable& sections, const Field& reference);
+
+// Not collective. A spring's (or elastic support's) `stiffness`: a scalar s ([s, s, s]) or
+// [kx, ky, kz], each >= 0 N/m and not all zero (no stiffness at all only adds a singular
+// block). Required.
+Vec3 read_spring_stiffness(const Field& stiffness);
+// Not collective. `damping`: a scalar or [cx, cy, cz], each >= 0 N·s/m; absent = zero.
+Vec3 read_spring_damping(const Field& damping);
+
+}  // namespace catena::model::detail
