@@ -1,0 +1,31 @@
+#include "collective_phase.hpp"
+
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+
+namespace catena::io {
+
+void throw_if_any_rank_failed(MPI_Comm comm, const std::string& local_error) {
+  const int n_ranks = mpi_size(comm);
+  const int my_candidate = local_error.empty() ? n_ranks : mpi_rank(comm);
+  int first_failed_rank = n_ranks;
+  MPI_Allreduce(&my_candidate, &first_failed_rank, 1, MPI_INT, MPI_MIN, comm);
+  if (first_failed_rank == n_ranks) return;
+
+  std::string message = local_error;
+  broadcast_string(comm, message, first_failed_rank);
+  if (n_ranks > 1) message += " (on rank " + std::to_string(first_failed_rank) + ")";
+  throw Error(message);
+}
+
+std::string current_exception_message() {
+  try {
+    throw;
+  } catch (const std::exception& e) {
+    return e.what()[0] != '\0' ? e.what() : "unnamed std::exception";
+  } catch (...) {
+    return "unknown exception";
+  }
+}
+
+}  // namespace catena::io

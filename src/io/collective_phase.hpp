@@ -1,0 +1,56 @@
+#pragma once
+// Agreement on failure between the phases of a collective operation.
+//
+// Parallel HDF5 and MPI-IO calls are collective: if one rank throws and skips the next
+// collective call while the others enter it, the job hangs. So the writer is cut into
+// phases; each phase runs on every rank, any exception is caught, and at the phase
+// boundary the ranks agree (one MPI_Allreduce) whether any of them failed. If so, every
+// rank throws the same catena::Error and they all unwind together through the same
+// destructors (which include H5Fclose, itself collective).
+//
+// A phase must not throw on some ranks *before* a collective call that the other ranks
+// then enter: keep purely local checks (validation) in their own phase.
+#include <mpi.h>
+
+#include <exception>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace catena::io {
+
+// Collective. If `local_error` is non-empty on any rank, throws catena::Error on every
+// rank, carrying the message of the lowest failing rank (and that rank's number when the
+// communicator has more than one rank).
+void throw_if_any_rank_failed(MPI_Comm comm, const std::string& local_error);
+
+// Not collective: the message of the exception currently being handled.
+std::string current_exception_message();
+
+// Collective. Runs `phase` on every rank and returns its result; throws on every rank
+// (see throw_if_any_rank_failed) if it threw on any.
+template <class Phase>
+std::invoke_result_t<Phase> run_collective_phase(MPI_Comm comm, Phase&& phase) {
+  using Result = std::invoke_result_t<Phase>;
+  std::string local_error;
+  if constexpr (std::is_void_v<Result>) {
+    try {
+      std::forward<Phase>(phase)();
+    } catch (...) {
+      local_error = current_exception_message();
+    }
+    throw_if_any_rank_failed(comm, local_error);
+  } else {
+    std::optional<Result> result;
+    try {
+      result.emplace(std::forward<Phase>(phase)());
+    } catch (...) {
+      local_error = current_exception_message();
+    }
+    throw_if_any_rank_failed(comm, local_error);
+    return std::move(*result);
+  }
+}
+
+}  // namespace catena::io

@@ -1,0 +1,29 @@
+#pragma once
+// Attributes of HDF5 objects (the root group, groups, datasets): scalars, strings and
+// lists of strings. Strings are variable-length UTF-8, so h5py returns them as str.
+//
+// Collective when the file is open for parallel access: every rank must make the same
+// calls with the same values, because each rank keeps its own copy of the file's metadata
+// (the writer broadcasts rank 0's values beforehand to guarantee it).
+#include <hdf5.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace catena::io {
+
+// Where attributes go, and the file path that errors name.
+struct AttributeTarget {
+  hid_t object = H5I_INVALID_HID;
+  std::string file_path;
+};
+
+void write_string_attribute(const AttributeTarget& target, const char* name,
+                            const std::string& value);
+void write_string_list_attribute(const AttributeTarget& target, const char* name,
+                                 const std::vector<std::string>& values);
+void write_int64_attribute(const AttributeTarget& target, const char* name, std::int64_t value);
+void write_double_attribute(const AttributeTarget& target, const char* name, double value);
+
+}  // namespace catena::io

@@ -1,0 +1,38 @@
+#pragma once
+// HDF5 status codes → catena::Error. Every HDF5 call in the io layer goes through one of
+// these checks, so a failure names the call, the file and the object, plus the most
+// specific message from HDF5's error stack (e.g. MPI_File_open's "no such file").
+#include <hdf5.h>
+
+#include <string_view>
+
+namespace catena::io {
+
+// Not collective. Throws catena::Error "<call> failed for '<file>' [at <object>]: <why>",
+// with <why> taken from the innermost entry of HDF5's default error stack.
+[[noreturn]] void throw_hdf5_error(std::string_view call, std::string_view file,
+                                   std::string_view object = {});
+
+// Not collective. Returns `id` if valid, else throws as above.
+hid_t checked_hdf5_id(hid_t id, std::string_view call, std::string_view file,
+                      std::string_view object = {});
+
+// Not collective. Throws as above if `status` is negative.
+void check_hdf5_status(herr_t status, std::string_view call, std::string_view file,
+                       std::string_view object = {});
+
+// While alive, HDF5 does not print its error stack to stderr: failures are reported once,
+// as exceptions, instead of as a screenful per rank. Restores the previous handler.
+class Hdf5ErrorPrintingSuppressed {
+ public:
+  Hdf5ErrorPrintingSuppressed();
+  ~Hdf5ErrorPrintingSuppressed();
+  Hdf5ErrorPrintingSuppressed(const Hdf5ErrorPrintingSuppressed&) = delete;
+  Hdf5ErrorPrintingSuppressed& operator=(const Hdf5ErrorPrintingSuppressed&) = delete;
+
+ private:
+  H5E_auto2_t previous_handler_ = nullptr;
+  void* previous_data_ = nullptr;
+};
+
+}  // namespace catena::io

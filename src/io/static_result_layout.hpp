@@ -1,0 +1,39 @@
+#pragma once
+// The names in a static-result HDF5 file, in one place: the HDF5 writer and the XDMF
+// writer both use them, and docs/output.md documents them (shapes, types, units).
+// Changing a name or a meaning means a new `format` string.
+#include <cstdint>
+
+namespace catena::io::static_layout {
+
+inline constexpr const char* format = "catena-static-1";
+inline constexpr const char* units = "SI";
+
+inline constexpr const char* mesh_group = "/mesh";
+inline constexpr const char* node_ids = "/mesh/node_ids";
+inline constexpr const char* node_positions = "/mesh/node_positions";
+inline constexpr const char* element_ids = "/mesh/element_ids";
+inline constexpr const char* element_nodes = "/mesh/element_nodes";
+inline constexpr const char* element_kind = "/mesh/element_kind";
+inline constexpr const char* element_set = "/mesh/element_set";
+
+inline constexpr const char* static_group = "/static";
+inline constexpr const char* positions = "/static/positions";
+inline constexpr const char* slopes = "/static/slopes";
+inline constexpr const char* displacements = "/static/displacements";
+inline constexpr const char* axial_force = "/static/axial_force";
+inline constexpr const char* axial_strain = "/static/axial_strain";
+inline constexpr const char* support_nodes = "/static/support_nodes";
+inline constexpr const char* reaction_force = "/static/reaction_force";
+inline constexpr const char* reaction_moment = "/static/reaction_moment";
+
+// Every element is a 2-node element so far; the XDMF topology relies on it.
+inline constexpr int nodes_per_element = 2;
+
+// Values of /mesh/element_kind; the attribute "kinds" lists the names in this order.
+enum class ElementKind : std::int8_t { cable = 0, beam = 1, bar = 2, spring = 3 };
+inline constexpr const char* element_kind_names = "cable,beam,bar,spring";
+// Value of /mesh/element_set for an element in no set.
+inline constexpr std::int32_t no_set = -1;
+
+}  // namespace catena::io::static_layout
