@@ -3,23 +3,14 @@
 #include <algorithm>
 #include <variant>
 
-namespace catena::assembly {
+#include "catena/model/node_dofs.hpp"
 
-std::vector<int> node_dof_counts(const model::Model& model) {
-  std::vector<int> dofs(model.nodes.size(), 3);
-  for (const auto& e : model.elements) {
-    const int need = std::holds_alternative<model::BeamProps>(e.props)    ? 12
-                     : std::holds_alternative<model::CableProps>(e.props) ? 6
-                                                                           : 3;
-    for (int n : e.nodes) dofs[n] = std::max(dofs[n], need);
-  }
-  return dofs;
-}
+namespace catena::assembly {
 
 DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
     : partition_(&partition) {
   const int n_nodes = static_cast<int>(model.nodes.size());
-  const std::vector<int> counts = node_dof_counts(model);
+  const std::vector<int> counts = model::all_node_dofs(model);
   node_offset_.assign(n_nodes + 1, 0);
   for (int n = 0; n < n_nodes; ++n) node_offset_[n + 1] = node_offset_[n] + counts[n];
 

@@ -7,6 +7,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/elements/ancf_cable.hpp"
+#include "catena/model/node_dofs.hpp"
 #include "catena/core/mpi_comm.hpp"
 
 namespace catena::assembly {
@@ -109,13 +110,8 @@ void SecondOrderSystem::preallocation(std::vector<PetscInt>& d_nnz,
   std::vector<std::vector<int>> node_elements(m.nodes.size());
   for (size_t e = 0; e < m.elements.size(); ++e)
     for (int n : m.elements[e].nodes) node_elements[n].push_back(static_cast<int>(e));
-  const std::vector<int> counts = node_dof_counts(m);
-  auto element_dofs = [&](int e) {
-    const auto& p = m.elements[e].props;
-    return std::holds_alternative<model::BeamProps>(p)    ? 12
-           : std::holds_alternative<model::CableProps>(p) ? 6
-                                                          : 3;
-  };
+  const std::vector<int> counts = model::all_node_dofs(m);
+  auto element_dofs = [&](int e) { return model::element_node_dofs(m.elements[e].props); };
   const PetscInt lo = dofs_.first_owned(), hi = lo + dofs_.n_owned();
   d_nnz.assign(dofs_.n_owned(), 0);
   o_nnz.assign(dofs_.n_owned(), 0);

@@ -19,9 +19,6 @@
 
 namespace catena::assembly {
 
-// Number of DOFs each node carries: 12 if a beam touches it, else 6 if a cable does, else 3.
-std::vector<int> node_dof_counts(const model::Model& model);
-
 class DofMap {
  public:
   // Not collective (deterministic on every rank).
