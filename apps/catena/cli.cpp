@@ -34,7 +34,10 @@ Examples:
 
 CommandLine parse_command_line(int argc, char** argv) {
   CommandLine cl;
-  for (int i = 0; i < argc; ++i) cl.joined += (i ? " " : "") + std::string(argv[i]);
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0) cl.joined += ' ';
+    cl.joined += argv[i];
+  }
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) {
     // No arguments: run the shipped default scene (style.md: every app runs with none).

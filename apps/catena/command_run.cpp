@@ -15,7 +15,11 @@
 namespace catena::app {
 namespace {
 
+// PETSc options in force, without the app's own flags (PETSc also stores those, having
+// seen them on the command line).
 std::string petsc_options_text() {
+  for (const char* own : {"-o", "--output", "--set", "-h", "--help"})
+    PetscOptionsClearValue(nullptr, own);
   char* text = nullptr;
   if (PetscOptionsGetAll(nullptr, &text) != 0 || !text) return "";
   std::string s(text);
