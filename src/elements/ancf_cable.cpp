@@ -1,6 +1,7 @@
 #include "catena/elements/ancf_cable.hpp"
 
 #include "catena/core/error.hpp"
+#include "catena/elements/hermite.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,28 +10,13 @@
 namespace catena::elements {
 namespace {
 
-constexpr int kQuadraturePoints = 5;
-
-// TEMPORARY until elements/hermite.hpp lands: cubic Hermite on ξ = x/L ∈ [0, 1].
-struct HermiteAt {
-  double s[4], ds[4], dds[4];
-};
-HermiteAt hermite_at(double xi, double L) {
-  const double x2 = xi * xi, x3 = x2 * xi;
-  return {{1 - 3 * x2 + 2 * x3, L * (xi - 2 * x2 + x3), 3 * x2 - 2 * x3, L * (x3 - x2)},
-          {(6 * x2 - 6 * xi) / L, 1 - 4 * xi + 3 * x2, (6 * xi - 6 * x2) / L, 3 * x2 - 2 * xi},
-          {(12 * xi - 6) / (L * L), (6 * xi - 4) / L, (6 - 12 * xi) / (L * L), (6 * xi - 2) / L}};
-}
-double gauss_point_01(int, int k) {
-  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
-                              0.5384693101056831, 0.9061798459386640};
-  return 0.5 * (1.0 + x[k]);
-}
-double gauss_weight_01(int, int k) {
-  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                              0.4786286704993665, 0.2369268850561891};
-  return 0.5 * w[k];
-}
+// Axial strain sampled at the Lobatto 3 points (x = 0, L/2, L; Simpson weights): Gauss
+// sampling locks in bending-dominated states of slender cables (membrane locking; the
+// error grows with EA·L²/EI), while two Gauss points would leave a zero-energy stretching
+// mode. Bending at 3 Gauss points: κ² is nearly quadratic in x for moderate stretch.
+constexpr double kAxialPoints[3] = {0.0, 0.5, 1.0};
+constexpr double kAxialWeights[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
+constexpr int kBendingPoints = 3;
 
 // Energy density of bending, κ² = p/g² − c²/g³, and its derivatives in (g, p, c).
 struct CurvatureSquared {
@@ -99,28 +85,41 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
       for (auto& b : row) b.setZero();
 
   const Mat3 I = Mat3::Identity();
-  for (int k = 0; k < kQuadraturePoints; ++k) {
-    const double xi = gauss_point_01(kQuadraturePoints, k);
-    const double W = gauss_weight_01(kQuadraturePoints, k) * L;
-    const HermiteAt h = hermite_at(xi, L);
-
-    Vec3 u = Vec3::Zero(), w = Vec3::Zero();
+  // Adds a point's generalised force and tangent (in terms of u = r', w = r'') to the
+  // element blocks: f_i += W (S'_i f_u + S''_i f_w), K_ij += W [S'_j (S'_i H_uu + S''_i H_wu)
+  // + S''_j (S'_i H_uw + S''_i H_ww)], C_ij += W S'_i S'_j C_uu.
+  auto accumulate = [&](const HermiteAt& h, double W, const PointTangent& pt, bool bending) {
     for (int i = 0; i < 4; ++i) {
-      u += h.ds[i] * e[i];
-      w += h.dds[i] * e[i];
+      f[i] += W * h.ds[i] * pt.fu;
+      if (bending) f[i] += W * h.dds[i] * pt.fw;
     }
-    const double g = u.squaredNorm(), p = w.squaredNorm(), c = u.dot(w);
-    const double norm_u = std::sqrt(g);
+    if (r.stiffness) {
+      for (int i = 0; i < 4; ++i) {
+        Mat3 A = W * h.ds[i] * pt.Huu;
+        if (bending) A += W * h.dds[i] * pt.Hwu;
+        for (int j = 0; j < 4; ++j) K[i][j] += h.ds[j] * A;
+        if (bending) {
+          const Mat3 B = W * (h.ds[i] * pt.Huw + h.dds[i] * pt.Hww);
+          for (int j = 0; j < 4; ++j) K[i][j] += h.dds[j] * B;
+        }
+      }
+    }
+    if (r.damping && tau > 0.0)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
+  };
+
+  // Axial strain and its rate (Kelvin–Voigt): N = EA (ε + τ ε̇), ε = a|u| − 1.
+  for (int k = 0; k < 3; ++k) {
+    const HermiteAt h = hermite_at(kAxialPoints[k] * L, L);
+    Vec3 u = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
+    const double norm_u = u.norm();
     const Vec3 t = u / norm_u;
     const double eps = a * norm_u - 1.0;
-    const CurvatureSquared F = curvature_squared(g, p, c);
-
     PointTangent pt;
-    pt.fu = EA * eps * t + 0.5 * kb * (2.0 * F.Fg * u + F.Fc * w);
-    pt.fw = 0.5 * kb * (2.0 * F.Fp * w + F.Fc * u);
-
-    Mat3 P;  // projector orthogonal to the tangent, scaled by 1/|u|
-    if (r.stiffness || damped) P = (I - t * t.transpose()) / norm_u;
+    pt.fu = EA * eps * t;
+    const Mat3 P = (I - t * t.transpose()) / norm_u;  // ∂t/∂u
     double eps_rate = 0.0;
     Vec3 u_rate = Vec3::Zero();
     if (damped) {
@@ -129,33 +128,40 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
       pt.fu += EA * tau * eps_rate * t;
     }
     if (r.stiffness) {
+      pt.Huu = EA * (a * t * t.transpose() + eps * P);
+      if (damped) pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
+    }
+    if (r.damping && tau > 0.0) pt.Cuu = EA * tau * a * t * t.transpose();
+    accumulate(h, kAxialWeights[k] * L, pt, false);
+  }
+
+  // Bending: ½ (EI/a) κ², κ² = p/g² − c²/g³.
+  const auto xg = gauss_points(kBendingPoints);
+  const auto wg = gauss_weights(kBendingPoints);
+  for (int k = 0; k < kBendingPoints; ++k) {
+    const HermiteAt h = hermite_at(0.5 * (1.0 + xg[k]) * L, L);
+    Vec3 u = Vec3::Zero(), w = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) {
+      u += h.ds[i] * e[i];
+      w += h.dds[i] * e[i];
+    }
+    const double g = u.squaredNorm(), p = w.squaredNorm(), c = u.dot(w);
+    const CurvatureSquared F = curvature_squared(g, p, c);
+    PointTangent pt;
+    pt.fu = 0.5 * kb * (2.0 * F.Fg * u + F.Fc * w);
+    pt.fw = 0.5 * kb * (2.0 * F.Fp * w + F.Fc * u);
+    if (r.stiffness) {
       const Vec3 Gu = 2.0 * u;  // ∇_u g ; ∇_w p = 2w ; ∇_u c = w, ∇_w c = u
-      pt.Huu = EA * (a * t * t.transpose() + eps * P) +
-               0.5 * kb *
-                   (F.Fgg * Gu * Gu.transpose() + F.Fgc * (Gu * w.transpose() + w * Gu.transpose()) +
-                    F.Fcc * w * w.transpose() + 2.0 * F.Fg * I);
+      pt.Huu = 0.5 * kb *
+               (F.Fgg * Gu * Gu.transpose() + F.Fgc * (Gu * w.transpose() + w * Gu.transpose()) +
+                F.Fcc * w * w.transpose() + 2.0 * F.Fg * I);
       pt.Huw = 0.5 * kb *
                (F.Fgp * Gu * (2.0 * w).transpose() + F.Fgc * Gu * u.transpose() +
                 F.Fcc * w * u.transpose() + F.Fc * I);
       pt.Hwu = pt.Huw.transpose();
       pt.Hww = 0.5 * kb * (F.Fcc * u * u.transpose() + 2.0 * F.Fp * I);
-      if (damped)
-        pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
     }
-    if (r.damping) pt.Cuu = EA * tau * a * t * t.transpose();
-
-    for (int i = 0; i < 4; ++i) f[i] += W * (h.ds[i] * pt.fu + h.dds[i] * pt.fw);
-    if (r.stiffness) {
-      for (int i = 0; i < 4; ++i) {
-        const Mat3 A = W * (h.ds[i] * pt.Huu + h.dds[i] * pt.Hwu);
-        const Mat3 B = W * (h.ds[i] * pt.Huw + h.dds[i] * pt.Hww);
-        for (int j = 0; j < 4; ++j) K[i][j] += h.ds[j] * A + h.dds[j] * B;
-      }
-    }
-    if (r.damping && tau > 0.0) {
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
-    }
+    accumulate(h, 0.5 * wg[k] * L, pt, true);
   }
 
   if (r.force) {
@@ -195,7 +201,7 @@ double AncfCable::path_prestrain(double prestrain, const LoadPath& path) {
 
 SectionResult AncfCable::section_result(const LocalState& s) const {
   const Blocks e = gather(s.q);
-  const HermiteAt h = hermite_at(0.5, length_);
+  const HermiteAt h = hermite_at(0.5 * length_, length_);
   Vec3 u = Vec3::Zero();
   for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
   const double a = 1.0 + path_prestrain(section_.prestrain, s.path);

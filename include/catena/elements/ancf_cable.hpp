@@ -15,9 +15,9 @@
 // smooth rational function whose gradient and Hessian in (u, w) are closed form. The
 // element vectors follow from u = Σ S'_i e_i, w = Σ S''_i e_i.
 // Kelvin–Voigt axial damping: N = EA (ε + τ ε̇), objective (ε̇ = 0 under rigid motion).
-// Quadrature: 5-point Gauss for all terms (axial energy is not polynomial because of |u|;
-// 5 points keep the quadrature error below the discretisation error in the catenary and
-// cantilever convergence tests, see docs/formulation.md).
+// Quadrature: the axial strain (and its rate) is sampled at the Lobatto 3 points
+// x = 0, L/2, L (Simpson weights), which avoids membrane locking in bending-dominated
+// states of slender cables; bending uses 3 Gauss points (docs/formulation.md).
 //
 // Units: EA [N], EI [N·m²], mass_per_length [kg/m of unstretched length], τ [s],
 // gravity [m/s²], distributed load [N/m of mesh length].
