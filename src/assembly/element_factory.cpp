@@ -2,8 +2,8 @@
 
 #include <type_traits>
 
-#include "catena/core/error.hpp"
 
+#include "catena/elements/ancf_beam.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/linear_spring.hpp"
 #include "catena/elements/point_mass.hpp"
@@ -37,7 +37,17 @@ Kernel make_element_kernel(const model::Model& model, int index) {
                                                           elements::SpringSection{p.stiffness, p.damping});
         } else {
           static_assert(std::is_same_v<P, model::BeamProps>);
-          throw InputError({model.source_file, 0, "elements"}, "BEAM PENDING");
+          auto node_ref = [&](int n) {
+            const model::Node& node = model.nodes[n];
+            return elements::BeamNodeRef{node.position, node.tangent, node.section_y,
+                                         node.section_z};
+          };
+          const elements::BeamSection s{p.EA,   p.GA_y, p.GA_z,   p.GJ,     p.EI_y,
+                                        p.EI_z, p.mass_per_length, p.rho_Iy, p.rho_Iz,
+                                        p.damping_time};
+          return std::make_unique<elements::AncfBeam>(
+              node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
+              elements::BeamLoads{model.gravity, desc.distributed_load});
         }
       },
       desc.props);
