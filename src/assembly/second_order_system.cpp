@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <type_traits>
 #include <map>
 
 #include "catena/assembly/petsc_call.hpp"
@@ -13,47 +14,38 @@
 namespace catena::assembly {
 namespace {
 
-// Read access to the ghosted local form of a vector for the lifetime of the object.
-class LocalArrayRead {
+// Access to the ghosted local form ([owned | ghosts]) of a vector for the lifetime of the
+// object; read-only unless Writable.
+template <bool Writable>
+class LocalArray {
  public:
-  explicit LocalArrayRead(Vec ghosted) : ghosted_(ghosted) {
+  using Scalar = std::conditional_t<Writable, PetscScalar, const PetscScalar>;
+  explicit LocalArray(Vec ghosted) : ghosted_(ghosted) {
     CATENA_PETSC(VecGhostGetLocalForm(ghosted_, &local_));
-    CATENA_PETSC(VecGetArrayRead(local_, &data_));
+    if constexpr (Writable)
+      CATENA_PETSC(VecGetArray(local_, &data_));
+    else
+      CATENA_PETSC(VecGetArrayRead(local_, &data_));
   }
-  ~LocalArrayRead() {
-    VecRestoreArrayRead(local_, &data_);
+  ~LocalArray() {
+    if constexpr (Writable)
+      VecRestoreArray(local_, &data_);
+    else
+      VecRestoreArrayRead(local_, &data_);
     VecGhostRestoreLocalForm(ghosted_, &local_);
   }
-  LocalArrayRead(const LocalArrayRead&) = delete;
-  LocalArrayRead& operator=(const LocalArrayRead&) = delete;
-  const double* data() const { return data_; }
-
- private:
-  Vec ghosted_;
-  Vec local_ = nullptr;
-  const PetscScalar* data_ = nullptr;
-};
-
-class LocalArrayWrite {
- public:
-  explicit LocalArrayWrite(Vec ghosted) : ghosted_(ghosted) {
-    CATENA_PETSC(VecGhostGetLocalForm(ghosted_, &local_));
-    CATENA_PETSC(VecGetArray(local_, &data_));
-  }
-  ~LocalArrayWrite() {
-    VecRestoreArray(local_, &data_);
-    VecGhostRestoreLocalForm(ghosted_, &local_);
-  }
-  LocalArrayWrite(const LocalArrayWrite&) = delete;
-  LocalArrayWrite& operator=(const LocalArrayWrite&) = delete;
-  double* data() { return data_; }
+  LocalArray(const LocalArray&) = delete;
+  LocalArray& operator=(const LocalArray&) = delete;
+  Scalar* data() const { return data_; }
   Vec local() const { return local_; }
 
  private:
   Vec ghosted_;
   Vec local_ = nullptr;
-  PetscScalar* data_ = nullptr;
+  Scalar* data_ = nullptr;
 };
+using LocalArrayRead = LocalArray<false>;
+using LocalArrayWrite = LocalArray<true>;
 
 }  // namespace
 
