@@ -9,6 +9,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/solvers/direct_newton.hpp"
 #include "catena/solvers/mumps_status.hpp"
 
 namespace catena::solvers {
@@ -54,30 +55,11 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   s.residual = system.create_vector();
   s.jacobian = system.create_matrix();
   CATENA_PETSC(SNESCreate(system.comm(), s.snes.out()));
-  CATENA_PETSC(SNESSetOptionsPrefix(s.snes.get(), "static_"));
   CATENA_PETSC(SNESSetFunction(s.snes.get(), s.residual.get(), Impl::form_function, &s));
   CATENA_PETSC(SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(),
                                Impl::form_jacobian, &s));
-  CATENA_PETSC(SNESSetType(s.snes.get(), SNESNEWTONLS));
-  // Full Newton steps: a residual-norm line search rejects good steps in stiff
-  // axial/bending problems (the axial residual of a bending step is large but is removed
-  // by the next step). Failed steps are handled by load stepping instead.
-  SNESLineSearch line_search = nullptr;
-  CATENA_PETSC(SNESGetLineSearch(s.snes.get(), &line_search));
-  CATENA_PETSC(SNESLineSearchSetType(line_search, SNESLINESEARCHBASIC));
-  // Transient residual growth is normal in full Newton; non-convergence is caught by the
-  // iteration limit and NaN checks.
-  CATENA_PETSC(SNESSetDivergenceTolerance(s.snes.get(), -1.0));
-  KSP ksp = nullptr;
-  PC pc = nullptr;
-  CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
-  CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
-  CATENA_PETSC(KSPGetPC(ksp, &pc));
   // The static tangent is symmetric: LDLᵀ halves the factorisation and yields the inertia.
-  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
-  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  enable_mumps_null_pivot_detection("static_");
-  CATENA_PETSC(SNESSetFromOptions(s.snes.get()));
+  configure_direct_newton(s.snes.get(), "static_", JacobianSymmetry::symmetric);
 }
 
 StaticSolver::~StaticSolver() = default;
@@ -102,9 +84,6 @@ std::string largest_residual_location(const assembly::SecondOrderSystem& system,
      << "), |f| = " << value << " N";
   return os.str();
 }
-
-// Relative Newton update at which the iterate is converged to round-off.
-constexpr double kStepTolerance = 1e-12;
 
 // Where on the load path τ is, in words.
 std::string describe_path(double tau, double tau_end) {
@@ -154,14 +133,14 @@ StaticReport StaticSolver::solve(Vec q) {
     const double target = std::min({std::floor(tau) + 1.0, tau + step, tau_end});
     s.set_path(target);
     // Converged when |f| ≤ atol + rtol·(norm of the unassembled element forces), or |f|
-    // fell by rtol within the step, or the Newton update is below kStepTolerance·|q|.
+    // fell by rtol within the step, or the Newton update is below kNewtonStepTolerance·|q|.
     // Element forces are large where they cancel at nodes (tension): a scale from external
     // loads alone would ask for more than round-off allows. Where stiffness is large and
     // forces small (a stiff cantilever under a small load) the residual's round-off floor
     // is stiffness × size × ε and only the update criterion can see convergence.
     const double scale = s.system.element_force_norm({q, nullptr, s.path});
     CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.options.atol + s.options.rtol * scale,
-                                   s.options.rtol, kStepTolerance,
+                                   s.options.rtol, kNewtonStepTolerance,
                                    s.options.max_newton_iterations, 100000));
     CATENA_PETSC(VecCopy(q, q_trial.get()));
     s.n_jacobians = 0;

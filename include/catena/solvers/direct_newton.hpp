@@ -1,0 +1,21 @@
+#pragma once
+// The Newton configuration shared by Catena's nonlinear solvers (statics, HHT, IRK stages):
+// SNES newtonls with full steps (a residual-norm line search rejects good steps in stiff
+// axial/bending problems; callers cut the load or time step instead), no divergence
+// tolerance, KSPPREONLY with a MUMPS factorisation (LDLᵀ when the Jacobian is symmetric,
+// else LU) with null-pivot detection, options prefix `prefix`, SNESSetFromOptions last.
+#include <petscsnes.h>
+
+#include <string>
+
+namespace catena::solvers {
+
+enum class JacobianSymmetry { symmetric, general };
+
+// Logically collective on the SNES.
+void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry);
+
+// Relative Newton update at which an iterate is converged to round-off (SNES stol).
+inline constexpr double kNewtonStepTolerance = 1e-12;
+
+}  // namespace catena::solvers
