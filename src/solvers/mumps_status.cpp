@@ -35,11 +35,22 @@ MumpsStatus mumps_status(KSP ksp) {
   return status;
 }
 
-void enable_mumps_null_pivot_detection(const std::string& prefix) {
-  const std::string name = "-" + prefix + "mat_mumps_icntl_24";
+namespace {
+// Sets -<prefix><option> to `value` unless the user gave it.
+void set_default_option(const std::string& prefix, const char* option, const char* value) {
+  const std::string name = "-" + prefix + option;
   PetscBool set = PETSC_FALSE;
   CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
-  if (!set) CATENA_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), "1"));
+  if (!set) CATENA_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), value));
+}
+}  // namespace
+
+void enable_mumps_null_pivot_detection(const std::string& prefix) {
+  set_default_option(prefix, "mat_mumps_icntl_24", "1");
+}
+
+void enable_mumps_exact_inertia(const std::string& prefix) {
+  set_default_option(prefix, "mat_mumps_icntl_13", "1");
 }
 
 }  // namespace catena::solvers

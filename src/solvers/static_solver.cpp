@@ -24,9 +24,26 @@ struct StaticSolver::Impl {
   // The load path (elements::LoadPath) parameterised by τ: [0, 1] tensions, [1, 2] loads,
   // [2, 3] releases prestrain to its scene value (only when some cable needs it).
   elements::LoadPath path{0.0, 0.0, 0.0};
+  // Tolerances in force after the command line (SNESSetFromOptions): the per-step
+  // round-off floor is added to the absolute one, the rest is left as the user set it.
+  PetscReal base_atol = 0, base_rtol = 0, base_stol = 0;
+  PetscInt base_max_it = 0, base_max_f = 0;
+  // An LDLᵀ factorisation of the tangent at each accepted state, independent of the
+  // solver the user chose for Newton, for its inertia (stability) and null pivots.
+  KspHandle stability_ksp;
   int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
 
   Impl(assembly::SecondOrderSystem& s, const model::StaticOptions& o) : system(s), options(o) {}
+
+  // Collective. Factors the tangent at q (current path point); MUMPS's status gives the
+  // number of negative eigenvalues (INFOG(12), exact in parallel with ICNTL(13) = 1) and
+  // of null pivots (INFOG(28)).
+  MumpsStatus tangent_status(Vec q) {
+    system.jacobian({q, nullptr, path}, {1.0, 0.0, 0.0}, jacobian.get());
+    CATENA_PETSC(KSPSetOperators(stability_ksp.get(), jacobian.get(), jacobian.get()));
+    CATENA_PETSC(KSPSetUp(stability_ksp.get()));
+    return mumps_status(stability_ksp.get());
+  }
 
   void set_path(double tau) {
     path = {std::clamp(tau, 0.0, 1.0), std::clamp(tau - 1.0, 0.0, 1.0),
@@ -58,8 +75,24 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   CATENA_PETSC(SNESSetFunction(s.snes.get(), s.residual.get(), Impl::form_function, &s));
   CATENA_PETSC(SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(),
                                Impl::form_jacobian, &s));
-  // The static tangent is symmetric: LDLᵀ halves the factorisation and yields the inertia.
+  // Scene tolerances first, so that -static_snes_* on the command line wins.
+  CATENA_PETSC(SNESSetTolerances(s.snes.get(), options.atol, options.rtol, kNewtonStepTolerance,
+                                 options.max_newton_iterations, 100000));
+  // The static tangent is symmetric: LDLᵀ halves the factorisation.
   configure_direct_newton(s.snes.get(), "static_", JacobianSymmetry::symmetric);
+  CATENA_PETSC(SNESGetTolerances(s.snes.get(), &s.base_atol, &s.base_rtol, &s.base_stol,
+                                 &s.base_max_it, &s.base_max_f));
+
+  CATENA_PETSC(KSPCreate(system.comm(), s.stability_ksp.out()));
+  CATENA_PETSC(KSPSetOptionsPrefix(s.stability_ksp.get(), "static_stability_"));
+  CATENA_PETSC(KSPSetType(s.stability_ksp.get(), KSPPREONLY));
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(s.stability_ksp.get(), &pc));
+  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
+  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  enable_mumps_null_pivot_detection("static_stability_");
+  enable_mumps_exact_inertia("static_stability_");
+  CATENA_PETSC(KSPSetFromOptions(s.stability_ksp.get()));
 }
 
 StaticSolver::~StaticSolver() = default;
@@ -99,14 +132,10 @@ std::string describe_path(double tau, double tau_end) {
   return os.str();
 }
 
+// Fraction of the element-force norm below which the residual is round-off.
+constexpr double kRoundoffFraction = 1e-10;
+
 void check_factorisation(const MumpsStatus& mumps, const std::string& where) {
-  if (mumps.null_pivots > 0 || mumps.infog1 == -10)
-    throw NumericalError(
-        "static solve: the stiffness matrix is singular at " + where + " (MUMPS found " + std::to_string(mumps.null_pivots) +
-        " null pivots, INFOG(1) = " + std::to_string(mumps.infog1) +
-        "): the structure is a mechanism. Check the supports (a cable pinned at one end "
-        "only can swing; a beam needs its rotations held somewhere) and that every node is "
-        "connected to a supported part.");
   if (mumps.infog1 < 0)
     throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
                          std::to_string(mumps.infog1) + ", INFOG(2) = " +
@@ -121,27 +150,29 @@ StaticReport StaticSolver::solve(Vec q) {
   VecHandle q_trial;
   CATENA_PETSC(VecDuplicate(q, q_trial.out()));
 
-
   const double tau_end = s.system.has_slack_prestrain() ? 3.0 : 2.0;
-
+  const double initial_step = std::clamp(s.options.initial_load_step, s.options.min_load_step, 1.0);
   double tau = 0.0;  // reached point on the load path
-  double step = std::clamp(s.options.initial_load_step, s.options.min_load_step, 1.0);
-  int attempts = 0;
+  double step = initial_step;
+  double last_attempt = 0.0;
+  int attempts = 0;  // steps that needed Newton iterations, or were rejected
   while (tau < tau_end) {
-    if (attempts++ >= s.options.max_load_steps) break;
+    if (attempts >= s.options.max_load_steps) break;
     // Never step across a phase boundary (integer τ), where the path changes what it ramps.
-    const double target = std::min({std::floor(tau) + 1.0, tau + step, tau_end});
+    const double phase_end = std::floor(tau) + 1.0;
+    const double target = std::min({phase_end, tau + step, tau_end});
+    last_attempt = target;
     s.set_path(target);
-    // Converged when |f| ≤ atol + rtol·(norm of the unassembled element forces), or |f|
-    // fell by rtol within the step, or the Newton update is below kNewtonStepTolerance·|q|.
-    // Element forces are large where they cancel at nodes (tension): a scale from external
-    // loads alone would ask for more than round-off allows. Where stiffness is large and
-    // forces small (a stiff cantilever under a small load) the residual's round-off floor
-    // is stiffness × size × ε and only the update criterion can see convergence.
+    // Converged when |f| ≤ atol + kRoundoffFraction·(norm of the unassembled element
+    // forces), or |f| fell by rtol within the step, or the Newton update is below
+    // kNewtonStepTolerance·|q|. Element forces are large where they cancel at nodes
+    // (tension): a scale from external loads alone would ask for more than round-off
+    // allows. Where stiffness is large and forces small (a stiff cantilever under a small
+    // load) the residual's round-off floor is stiffness × size × ε and only the update
+    // criterion can see convergence.
     const double scale = s.system.element_force_norm({q, nullptr, s.path});
-    CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.options.atol + s.options.rtol * scale,
-                                   s.options.rtol, kNewtonStepTolerance,
-                                   s.options.max_newton_iterations, 100000));
+    CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.base_atol + kRoundoffFraction * scale,
+                                   s.base_rtol, s.base_stol, s.base_max_it, s.base_max_f));
     CATENA_PETSC(VecCopy(q, q_trial.get()));
     s.n_jacobians = 0;
     const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, q_trial.get());
@@ -155,21 +186,49 @@ StaticReport StaticSolver::solve(Vec q) {
     report.n_newton_iterations += static_cast<int>(its);
     KSP ksp = nullptr;
     CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
-    const MumpsStatus mumps = s.n_jacobians > 0 ? mumps_status(ksp) : MumpsStatus{};
-    check_factorisation(mumps, describe_path(target, tau_end));
+    if (s.n_jacobians > 0) {
+      const MumpsStatus newton = mumps_status(ksp);
+      if (newton.infog1 < 0 && newton.infog1 != -10)
+        throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
+                             std::to_string(newton.infog1) + ", INFOG(2) = " +
+                             std::to_string(newton.infog2) + " at " +
+                             describe_path(target, tau_end));
+    }
 
     // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
-    // cable's inverted arch), whose tangent stiffness has negative eigenvalues. The LDLᵀ
-    // factorisation's inertia (MUMPS INFOG(12)) counts them at no extra cost; it belongs
-    // to the last Newton iterate, which is within the convergence tolerance.
-    const bool unstable = mumps.symmetric && mumps.negative_pivots > 0;
-    if (reason > 0 && unstable) ++report.n_unstable_rejections;
-    if (reason > 0 && !unstable) {
+    // cable's inverted arch, a column beyond buckling), whose tangent has negative
+    // eigenvalues. The tangent is factored at the converged state itself.
+    bool accept = reason > 0;
+    if (accept) {
+      const MumpsStatus tangent = s.tangent_status(q_trial.get());
+      check_factorisation(tangent, describe_path(target, tau_end));
+      if (tangent.negative_pivots > 0) {
+        accept = false;
+        ++report.n_unstable_rejections;
+      } else if (tangent.null_pivots > 0 && target >= tau_end) {
+        // Neutral directions are normal before the loads are on (an unloaded pendulum);
+        // at full load they mean a mechanism.
+        throw NumericalError(
+            "static solve: the stiffness matrix at the equilibrium is singular (" +
+            std::to_string(tangent.null_pivots) +
+            " null pivots): the structure is a mechanism. Check the supports (a cable or "
+            "bar held at one end only can swing; a beam needs its rotations held "
+            "somewhere) and that every node is connected to a supported part.");
+      }
+    }
+    if (accept) {
       CATENA_PETSC(VecCopy(q_trial.get(), q));
       tau = target;
       ++report.n_load_steps;
-      if (its <= 4) step = std::min(1.0, 2.0 * step);
+      if (its > 0) ++attempts;
+      if (tau >= phase_end)
+        step = initial_step;  // a new phase starts with the user's increment
+      else if (its == 0)
+        step = phase_end - tau;  // nothing changes in this phase here: finish it
+      else if (its <= 4)
+        step = std::min(1.0, 2.0 * step);
     } else {
+      ++attempts;
       ++report.n_rejected_steps;
       step *= 0.5;
       if (step < s.options.min_load_step) break;
@@ -184,20 +243,27 @@ StaticReport StaticSolver::solve(Vec q) {
   report.load_factor = s.path.loads;
   report.residual_norm = norm;
   if (tau < tau_end) {
-    // Report where the failed attempt left the largest residual.
-    const double failed = std::min(tau_end, tau + step);
-    s.set_path(failed);
+    // A mechanism shows as null pivots at the last accepted state.
+    const MumpsStatus tangent = s.tangent_status(q);
+    const bool singular = tangent.null_pivots > 0;
+    // Where the failed attempt left the largest residual (at its own load level).
+    s.set_path(last_attempt);
     s.system.force({q_trial.get(), nullptr, s.path}, s.residual.get());
     std::ostringstream os;
     os << "static solve did not converge: reached " << describe_path(tau, tau_end) << " after "
        << report.n_load_steps << " accepted and " << report.n_rejected_steps
        << " rejected load steps (" << report.n_newton_iterations
-       << " Newton iterations); at the last attempt (" << describe_path(failed, tau_end)
+       << " Newton iterations); at the last attempt (" << describe_path(last_attempt, tau_end)
        << ") the largest residual is at " << largest_residual_location(s.system, s.residual.get())
        << ". " << report.n_unstable_rejections
        << " steps converged to unstable equilibria (negative tangent stiffness) and were "
-          "retried. Try a smaller analysis.load_steps.initial or more "
-          "analysis.newton.max_iterations.";
+          "retried. ";
+    if (singular)
+      os << "The stiffness matrix at the last equilibrium is singular ("
+         << tangent.null_pivots
+         << " null pivots): the structure is probably a mechanism; check its supports.";
+    else
+      os << "Try a smaller analysis.load_steps.initial or more analysis.newton.max_iterations.";
     throw NumericalError(os.str());
   }
   return report;

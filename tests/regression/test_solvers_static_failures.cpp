@@ -10,9 +10,29 @@
 using catena::Vec3;
 namespace model = catena::model;
 
-TEST(StaticFailures, SwingingBarIsReportedAsSingular) {
-  // A bar pinned at one end only, with its far end loaded along the bar: the transverse
-  // directions of the free node have no stiffness at all (a mechanism).
+TEST(StaticFailures, UnresistedLoadIsReportedAsMechanism) {
+  // A mass on an elastic support acting along x only, loaded along y: no stiffness
+  // resists the load, no equilibrium exists. (A bar pinned at one end and pushed sideways
+  // is not such a case: it swings into line with the load, a stable equilibrium.)
+  catena::test::ensure_petsc();
+  model::Model m;
+  m.gravity = Vec3::Zero();
+  m.nodes.emplace_back();
+  m.nodes.back().id = 1;
+  m.elastic_supports.push_back({0, Vec3(1e4, 0, 0), Vec3::Zero()});
+  m.point_masses.push_back({0, 1.0});
+  m.nodal_loads.push_back({0, Vec3(0, 100, 0)});
+  try {
+    catena::test::solve_static(MPI_COMM_WORLD, m);
+    FAIL() << "expected a NumericalError";
+  } catch (const catena::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mechanism"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StaticFailures, UnloadedMechanismIsReported) {
+  // No loads at all: the reference state is the equilibrium, but its tangent is singular.
   catena::test::ensure_petsc();
   model::Model m;
   m.gravity = Vec3::Zero();
@@ -20,13 +40,55 @@ TEST(StaticFailures, SwingingBarIsReportedAsSingular) {
   bar.EA = 1e6;
   const auto nodes = catena::test::add_line(m, {0, 0, 0}, {1, 0, 0}, 1, bar);
   catena::test::pin(m, nodes.front());
-  m.nodal_loads.push_back({nodes.back(), Vec3(100, 0, 0)});
+  m.point_masses.push_back({nodes.back(), 1.0});
   try {
     catena::test::solve_static(MPI_COMM_WORLD, m);
     FAIL() << "expected a NumericalError";
   } catch (const catena::NumericalError& e) {
-    EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("mechanism"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StaticStability, HangingPendulumIsStable) {
+  // A bar hanging from a pin with a mass: singular before the load is on, stiffened by
+  // its tension once loaded. Must succeed with the bar force m·g.
+  catena::test::ensure_petsc();
+  model::Model m;
+  m.gravity = Vec3(0, 0, -9.81);
+  model::BarProps bar;
+  bar.EA = 1e6;
+  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {0, 0, -1}, 1, bar);
+  catena::test::pin(m, nodes.front());
+  m.point_masses.push_back({nodes.back(), 10.0});
+  const auto sol = catena::test::solve_static(MPI_COMM_WORLD, m);
+  EXPECT_NEAR(sol.axial_force[0], 98.1, 1e-6);
+}
+
+TEST(StaticStability, ColumnBeyondBucklingIsNotAccepted) {
+  // A clamped beam column under 3× its Euler load π²EI/(4L²): the straight state is an
+  // equilibrium but unstable (negative pivots in the tangent at it); it must not be
+  // reported as the solution.
+  catena::test::ensure_petsc();
+  model::Model m;
+  m.gravity = Vec3::Zero();
+  const double L = 2.0, EI = 1e4;
+  model::BeamProps b;
+  b.EA = 1e9;
+  b.GA_y = b.GA_z = 1e9;
+  b.GJ = EI;
+  b.EI_y = b.EI_z = EI;
+  b.mass_per_length = 1.0;
+  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {L, 0, 0}, 8, b);
+  catena::test::set_reference_frames(m);
+  catena::test::clamp(m, nodes.front());
+  const double euler = 3.14159265358979 * 3.14159265358979 * EI / (4 * L * L);
+  m.nodal_loads.push_back({nodes.back(), Vec3(-3.0 * euler, 0, 0)});
+  m.static_options.max_load_steps = 60;
+  try {
+    catena::test::solve_static(MPI_COMM_WORLD, m);
+    FAIL() << "expected a NumericalError";
+  } catch (const catena::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("unstable"), std::string::npos) << e.what();
   }
 }
 

@@ -21,4 +21,9 @@ MumpsStatus mumps_status(KSP ksp);
 // options prefix `prefix`, unless the user set it on the command line.
 void enable_mumps_null_pivot_detection(const std::string& prefix);
 
+// Not collective. Makes MUMPS's negative-pivot count (INFOG(12)) exact in parallel
+// (ICNTL(13) = 1: no ScaLAPACK on the root front, whose pivots INFOG(12) would not count)
+// for the solver with options prefix `prefix`, unless the user set it.
+void enable_mumps_exact_inertia(const std::string& prefix);
+
 }  // namespace catena::solvers
