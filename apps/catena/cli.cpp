@@ -32,6 +32,16 @@ Examples:
 )";
 }
 
+namespace {
+bool is_scene_path(const std::string& token) {
+  auto ends_with = [&](const std::string& suffix) {
+    return token.size() >= suffix.size() &&
+           token.compare(token.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  return ends_with(".yaml") || ends_with(".yml");
+}
+}  // namespace
+
 CommandLine parse_command_line(int argc, char** argv) {
   CommandLine cl;
   for (int i = 0; i < argc; ++i) {
@@ -71,9 +81,10 @@ CommandLine parse_command_line(int argc, char** argv) {
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
     } else if (!a.empty() && a[0] == '-') {
-      // A PETSc option; skip its value if it has one (next token not starting with '-').
+      // A PETSc option; skip its value if it has one: the next token, unless it starts
+      // with '-' or names the scene file (a .yaml/.yml path).
       if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-' &&
-          cl.scene.size() > 0)
+          !(cl.scene.empty() && is_scene_path(args[i + 1])))
         ++i;
     } else if (cl.scene.empty()) {
       cl.scene = a;

@@ -41,7 +41,7 @@ void read_newton(const Field& newton, StaticOptions& options) {
   newton.expect_map("Newton settings {rtol, atol, max_iterations}");
   newton.check_keys({"rtol", "atol", "max_iterations"});
   options.rtol =
-      newton.child("rtol").real_or(options.rtol, RealRange::between(0.0, false, 1.0, false, ""));
+      newton.child("rtol").real_or(options.rtol, RealRange::between(0.0, false, 1e-3, true, ""));
   options.atol = newton.child("atol").real_or(options.atol, RealRange::positive("N"));
   options.max_newton_iterations =
       static_cast<int>(newton.child("max_iterations")
