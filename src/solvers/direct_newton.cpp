@@ -26,3 +26,21 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 }
 
 }  // namespace catena::solvers
+
+namespace catena::solvers {
+
+KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry) {
+  KspHandle ksp;
+  CATENA_PETSC(KSPCreate(comm, ksp.out()));
+  CATENA_PETSC(KSPSetOptionsPrefix(ksp.get(), prefix.c_str()));
+  CATENA_PETSC(KSPSetType(ksp.get(), KSPPREONLY));
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp.get(), &pc));
+  CATENA_PETSC(PCSetType(pc, symmetry == JacobianSymmetry::symmetric ? PCCHOLESKY : PCLU));
+  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  enable_mumps_null_pivot_detection(prefix);
+  CATENA_PETSC(KSPSetFromOptions(ksp.get()));
+  return ksp;
+}
+
+}  // namespace catena::solvers

@@ -95,17 +95,8 @@ void HhtIntegrator::initialize(double t, Vec q, Vec v) {
   s.system.jacobian({s.q0.get(), s.v0.get(), {}}, {0.0, 0.0, 1.0}, s.mass.get());
   s.system.force({s.q0.get(), s.v0.get(), {}}, s.f0.get());
   // Consistent initial acceleration: M a0 = −f(q0, v0).
-  KspHandle ksp;
-  CATENA_PETSC(KSPCreate(s.system.comm(), ksp.out()));
-  CATENA_PETSC(KSPSetOptionsPrefix(ksp.get(), "hht_mass_"));
+  KspHandle ksp = create_direct_ksp(s.system.comm(), "hht_mass_", JacobianSymmetry::symmetric);
   CATENA_PETSC(KSPSetOperators(ksp.get(), s.mass.get(), s.mass.get()));
-  CATENA_PETSC(KSPSetType(ksp.get(), KSPPREONLY));
-  PC pc = nullptr;
-  CATENA_PETSC(KSPGetPC(ksp.get(), &pc));
-  CATENA_PETSC(PCSetType(pc, PCLU));
-  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  enable_mumps_null_pivot_detection("hht_mass_");
-  CATENA_PETSC(KSPSetFromOptions(ksp.get()));
   CATENA_PETSC(VecScale(s.f0.get(), -1.0));
   CATENA_PETSC(KSPSolve(ksp.get(), s.f0.get(), s.a0.get()));
   CATENA_PETSC(VecScale(s.f0.get(), -1.0));

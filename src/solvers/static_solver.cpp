@@ -83,16 +83,9 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   CATENA_PETSC(SNESGetTolerances(s.snes.get(), &s.base_atol, &s.base_rtol, &s.base_stol,
                                  &s.base_max_it, &s.base_max_f));
 
-  CATENA_PETSC(KSPCreate(system.comm(), s.stability_ksp.out()));
-  CATENA_PETSC(KSPSetOptionsPrefix(s.stability_ksp.get(), "static_stability_"));
-  CATENA_PETSC(KSPSetType(s.stability_ksp.get(), KSPPREONLY));
-  PC pc = nullptr;
-  CATENA_PETSC(KSPGetPC(s.stability_ksp.get(), &pc));
-  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
-  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  enable_mumps_null_pivot_detection("static_stability_");
   enable_mumps_exact_inertia("static_stability_");
-  CATENA_PETSC(KSPSetFromOptions(s.stability_ksp.get()));
+  s.stability_ksp =
+      create_direct_ksp(system.comm(), "static_stability_", JacobianSymmetry::symmetric);
 }
 
 StaticSolver::~StaticSolver() = default;
