@@ -8,6 +8,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/elements/ancf_cable.hpp"
+#include "catena/elements/hermite.hpp"
 #include "catena/model/node_dofs.hpp"
 #include "catena/core/mpi_comm.hpp"
 
@@ -82,9 +83,51 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     max_kernel_dofs_ = std::max(max_kernel_dofs_, static_cast<size_t>(k.element->n_dofs()));
   }
 
+  std::vector<int> kernel_of_element(model.elements.size(), -1);
+  for (size_t k = 0; k < kernels_.size(); ++k)
+    if (kernels_[k].origin == KernelOrigin::element)
+      kernel_of_element[kernels_[k].source] = static_cast<int>(k);
+  for (const model::MovingLoad& load : model.moving_loads) {
+    MovingPath path;
+    path.start.push_back(0.0);
+    for (int e : load.elements) {
+      const auto& nodes = model.elements[e].nodes;
+      const double length = (model.nodes[nodes.back()].position - model.nodes[nodes.front()].position).norm();
+      path.start.push_back(path.start.back() + length);
+      path.kernel.push_back(kernel_of_element[e]);
+    }
+    moving_paths_.push_back(std::move(path));
+  }
+
   q_work_ = create_vector();
   v_work_ = create_vector();
   f_work_ = create_vector();
+}
+
+void SecondOrderSystem::add_moving_loads(double t, double* f_local) const {
+  for (size_t i = 0; i < moving_paths_.size(); ++i) {
+    const model::MovingLoad& load = model_->moving_loads[i];
+    const MovingPath& path = moving_paths_[i];
+    const double s = load.start + load.speed * (t - load.start_time);
+    if (t < load.start_time || s < 0.0 || s > path.start.back()) continue;  // off the path
+    // The element holding s (the first one at an element boundary).
+    const auto it = std::upper_bound(path.start.begin() + 1, path.start.end() - 1, s);
+    const size_t e = static_cast<size_t>(it - path.start.begin()) - 1;
+    const int k = path.kernel[e];
+    if (k < 0) continue;  // evaluated by the rank that owns the element
+    const double L = path.start[e + 1] - path.start[e];
+    const elements::HermiteAt h = elements::hermite_at(std::clamp(s - path.start[e], 0.0, L), L);
+    const int dpn = kernels_[static_cast<size_t>(k)].element->dofs_per_node();
+    const PetscInt* idx = local_index_.data() + kernel_offset_[static_cast<size_t>(k)];
+    // r(x) = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x: the generalised force of F is Sᵀ F,
+    // and f carries −f_ext.
+    const int offset[4] = {0, 3, dpn, dpn + 3};
+    for (int a = 0; a < 4; ++a)
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt l = idx[offset[a] + d];
+        if (l >= 0) f_local[l] -= h.s[a] * load.force[d];
+      }
+  }
 }
 
 VecHandle SecondOrderSystem::create_vector() const {
@@ -198,7 +241,8 @@ void SecondOrderSystem::visit_element_forces(const EvalPoint& p, Fn&& fn) {
   }
 }
 
-void SecondOrderSystem::force(const EvalPoint& p, Vec f) {
+void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
+  double squares = 0.0;
   {
     LocalArrayWrite out(f_work_.get());
     CATENA_PETSC(VecSet(out.local(), 0.0));
@@ -207,11 +251,19 @@ void SecondOrderSystem::force(const EvalPoint& p, Vec f) {
       const PetscInt* idx = local_index_.data() + kernel_offset_[k];
       for (size_t i = 0; i < f_el.size(); ++i)
         if (idx[i] >= 0) dst[idx[i]] += f_el[i];
+      if (element_norm)
+        for (double x : f_el) squares += x * x;
     });
+    if (!moving_paths_.empty()) add_moving_loads(p.t, dst);
   }
   CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecGhostUpdateEnd(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecCopy(f_work_.get(), f));
+  if (element_norm) {
+    double global = 0.0;
+    MPI_Allreduce(&squares, &global, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    *element_norm = std::sqrt(global);
+  }
 }
 
 double SecondOrderSystem::element_force_norm(const EvalPoint& p) {
@@ -257,6 +309,38 @@ void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients&
   }
   CATENA_PETSC(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   CATENA_PETSC(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+}
+
+void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) {
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  for (Mat A : {K_out, C_out})
+    if (A) CATENA_PETSC(MatZeroEntries(A));
+  {
+    const LocalArrayRead q(q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+    const size_t m = max_kernel_dofs_;
+    std::vector<double> q_el(m), v_el(m), f_el(m), K(m * m), C(m * m);
+    const elements::Request request{false, K_out != nullptr, C_out != nullptr};
+    for (size_t k = 0; k < kernels_.size(); ++k) {
+      const elements::Element& el = *kernels_[k].element;
+      const size_t n = static_cast<size_t>(el.n_dofs());
+      gather(k, q.data(), v ? v->data() : nullptr, q_el.data(), v_el.data());
+      elements::LocalState s{{q_el.data(), n}, {}, p.path};
+      if (p.v) s.v = {v_el.data(), n};
+      el.evaluate(s, request, {f_el.data(), K.data(), C.data()});
+      const PetscInt* idx = global_index_.data() + kernel_offset_[k];
+      const auto N = static_cast<PetscInt>(n);
+      if (K_out) CATENA_PETSC(MatSetValues(K_out, N, idx, N, idx, K.data(), ADD_VALUES));
+      if (C_out) CATENA_PETSC(MatSetValues(C_out, N, idx, N, idx, C.data(), ADD_VALUES));
+    }
+  }
+  for (Mat A : {K_out, C_out})
+    if (A) {
+      CATENA_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+      CATENA_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+    }
 }
 
 void SecondOrderSystem::section_results(const EvalPoint& p, std::vector<int>& element_indices,

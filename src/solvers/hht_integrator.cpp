@@ -1,13 +1,13 @@
 #include "catena/solvers/hht_integrator.hpp"
 
-#include <petscsnes.h>
-
+#include <cstdio>
 #include <sstream>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/direct_newton.hpp"
-#include "catena/solvers/mumps_status.hpp"
+#include "catena/solvers/consistent_acceleration.hpp"
+#include "catena/solvers/hermite_interpolation.hpp"
+#include "catena/solvers/reusable_newton.hpp"
 
 namespace catena::solvers {
 
@@ -15,20 +15,23 @@ struct HhtIntegrator::Impl {
   assembly::SecondOrderSystem& system;
   HhtOptions options;
   double beta, gamma;
-  double t = 0.0;
-  VecHandle q0, v0, a0, f0;  // state at the start of the step (f0 = f(q0, v0))
-  VecHandle q1, v1;          // trial state built from the unknown a1
-  VecHandle a1, residual, work;
-  MatHandle mass, jacobian;
-  SnesHandle snes;
-  CallbackGuard guard;
+  // Current state (start of the next step) and the one before (dense output).
+  double t0 = 0.0, t_prev = 0.0, scale0 = 0.0;
+  VecHandle q0, v0, a0, f0;  // f0 = f(t0, q0, v0)
+  VecHandle q_prev, v_prev, a_prev;
+  // Pending step: built from the unknown a1.
+  double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
+  VecHandle q1, v1, a1, f1, residual, error;
+  MatHandle mass, K, C, jacobian;
+  std::unique_ptr<ReusableNewton> newton;
+  IntegratorCounters counters;
+  bool pending_valid = false;
 
   Impl(assembly::SecondOrderSystem& s, const HhtOptions& o)
       : system(s), options(o), beta(0.25 * (1 - o.alpha) * (1 - o.alpha)), gamma(0.5 - o.alpha) {}
 
   // q1, v1 from a1 (Newmark).
   void kinematics(Vec a) {
-    const double h = options.dt;
     CATENA_PETSC(VecCopy(q0.get(), q1.get()));
     CATENA_PETSC(VecAXPY(q1.get(), h, v0.get()));
     CATENA_PETSC(VecAXPY(q1.get(), h * h * (0.5 - beta), a0.get()));
@@ -38,27 +41,26 @@ struct HhtIntegrator::Impl {
     CATENA_PETSC(VecAXPY(v1.get(), h * gamma, a));
   }
 
-  // R(a1) = M a1 + (1 + α) f(q1, v1) − α f0.
+  // R(a1) = M a1 + (1 + α) f(t1, q1, v1) − α f0.
   void residual_at(Vec a, Vec r) {
     kinematics(a);
-    system.force({q1.get(), v1.get(), {}}, work.get());
+    system.force({q1.get(), v1.get(), {}, t0 + h}, f1.get(), &scale1);
     CATENA_PETSC(MatMult(mass.get(), a, r));
-    CATENA_PETSC(VecAXPY(r, 1.0 + options.alpha, work.get()));
+    CATENA_PETSC(VecAXPY(r, 1.0 + options.alpha, f1.get()));
     CATENA_PETSC(VecAXPY(r, -options.alpha, f0.get()));
   }
 
-  static PetscErrorCode form_function(SNES, Vec a, Vec r, void* ctx) {
-    auto* self = static_cast<Impl*>(ctx);
-    return self->guard.run([&] { self->residual_at(a, r); });
-  }
-  static PetscErrorCode form_jacobian(SNES, Vec a, Mat J, Mat, void* ctx) {
-    auto* self = static_cast<Impl*>(ctx);
-    return self->guard.run([&] {
-      self->kinematics(a);
-      const double h = self->options.dt, s = 1.0 + self->options.alpha;
-      self->system.jacobian({self->q1.get(), self->v1.get(), {}},
-                            {s * self->beta * h * h, s * self->gamma * h, 1.0}, J);
-    });
+  // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
+  void build_matrix(Vec a, bool refresh_tangent, Mat J) {
+    if (refresh_tangent) {
+      kinematics(a);
+      system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), C.get());
+      ++counters.jacobian_evaluations;
+    }
+    const double s = 1.0 + options.alpha;
+    CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
+    CATENA_PETSC(MatAXPY(J, s * gamma * h, C.get(), SAME_NONZERO_PATTERN));
+    CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
   }
 };
 
@@ -67,96 +69,129 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
     throw InputError({"", 0, "integrator.alpha"},
                      "HHT alpha = " + std::to_string(options.alpha) +
                          " is outside the accepted range [-1/3, 0]");
-  if (!(options.dt > 0.0))
-    throw InputError({"", 0, "integrator.dt"},
-                     "time step " + std::to_string(options.dt) + " s must be positive");
   impl_ = std::make_unique<Impl>(system, options);
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q1, &s.v1, &s.a1, &s.residual, &s.work})
+  for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q_prev, &s.v_prev, &s.a_prev, &s.q1,
+                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error})
     *v = system.create_vector();
+  for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian}) *m = system.create_matrix();
   // The mass matrix is constant (ANCF): assemble it once.
-  s.mass = system.create_matrix();
-  s.jacobian = system.create_matrix();
-  CATENA_PETSC(SNESCreate(system.comm(), s.snes.out()));
-  CATENA_PETSC(SNESSetFunction(s.snes.get(), s.residual.get(), Impl::form_function, &s));
-  CATENA_PETSC(SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(),
-                               Impl::form_jacobian, &s));
-  // Damping makes the Jacobian non-symmetric in general.
-  configure_direct_newton(s.snes.get(), "hht_", JacobianSymmetry::general);
+  system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
+  // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
+  CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
+  NewtonSettings settings;
+  settings.max_iterations = options.max_newton_iterations;
+  settings.full_newton = options.full_newton;
+  // Damping makes the matrix non-symmetric in general.
+  s.newton = std::make_unique<ReusableNewton>(
+      system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
+      settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
+      [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
 }
 
 HhtIntegrator::~HhtIntegrator() = default;
 
-void HhtIntegrator::initialize(double t, Vec q, Vec v) {
+std::string HhtIntegrator::name() const {
+  char text[64];
+  std::snprintf(text, sizeof text, "hht(alpha=%g)", impl_->options.alpha);
+  return text;
+}
+
+void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   Impl& s = *impl_;
-  s.t = t;
+  s.t0 = s.t_prev = t;
   CATENA_PETSC(VecCopy(q, s.q0.get()));
   CATENA_PETSC(VecCopy(v, s.v0.get()));
-  s.system.jacobian({s.q0.get(), s.v0.get(), {}}, {0.0, 0.0, 1.0}, s.mass.get());
-  s.system.force({s.q0.get(), s.v0.get(), {}}, s.f0.get());
-  // Consistent initial acceleration: M a0 = −f(q0, v0).
-  KspHandle ksp = create_direct_ksp(s.system.comm(), "hht_mass_", JacobianSymmetry::symmetric);
-  CATENA_PETSC(KSPSetOperators(ksp.get(), s.mass.get(), s.mass.get()));
-  CATENA_PETSC(VecScale(s.f0.get(), -1.0));
-  CATENA_PETSC(KSPSolve(ksp.get(), s.f0.get(), s.a0.get()));
-  CATENA_PETSC(VecScale(s.f0.get(), -1.0));
-  const MumpsStatus mumps = mumps_status(ksp.get());
-  if (mumps.null_pivots > 0 || mumps.infog1 < 0)
-    throw NumericalError(
-        "HHT: the mass matrix is singular (" + std::to_string(mumps.null_pivots) +
-        " null pivots, MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
-        "): every free DOF needs mass; massless nodes (e.g. joined only by massless bars "
-        "or springs) need a point mass");
-  KSPConvergedReason reason;
-  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
-  if (reason < 0) throw NumericalError("HHT: the initial acceleration solve failed");
+  if (a)
+    CATENA_PETSC(VecCopy(a, s.a0.get()));
+  else
+    consistent_acceleration(s.system, s.mass.get(), t, s.q0.get(), s.v0.get(), s.a0.get());
+  s.system.force({s.q0.get(), s.v0.get(), {}, t}, s.f0.get(), &s.scale0);
+  for (auto [from, to] : {std::pair{&s.q0, &s.q_prev}, {&s.v0, &s.v_prev}, {&s.a0, &s.a_prev}})
+    CATENA_PETSC(VecCopy(from->get(), to->get()));
+  s.newton->invalidate_tangent();
+  s.pending_valid = false;
 }
 
-HhtStepReport HhtIntegrator::step() {
+StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   Impl& s = *impl_;
-  // Scale of f's round-off for the convergence test (see StaticSolver).
-  const double scale = s.system.element_force_norm({s.q0.get(), s.v0.get(), {}});
-  CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.options.atol + s.options.rtol * scale,
-                                 s.options.rtol, kNewtonStepTolerance,
-                                 s.options.max_newton_iterations, 100000));
-  CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
-  const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, s.a1.get());
-  s.guard.rethrow_if_any();
-  CATENA_PETSC(ierr);
-  SNESConvergedReason reason;
-  PetscInt its = 0;
-  CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
-  CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
-  KSP ksp = nullptr;
-  CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
-  const MumpsStatus mumps = its > 0 ? mumps_status(ksp) : MumpsStatus{};
-  if (mumps.infog1 < 0 || mumps.null_pivots > 0 || reason <= 0) {
-    std::ostringstream os;
-    os << "HHT step from t = " << s.t << " s with h = " << s.options.dt
-       << " s did not converge (SNES reason " << static_cast<int>(reason) << ", " << its
-       << " iterations, MUMPS INFOG(1) = " << mumps.infog1 << ", null pivots "
-       << mumps.null_pivots << ")";
-    throw NumericalError(os.str());
+  s.h = h;
+  if (h != s.h_matrix) {
+    s.newton->invalidate_matrix();
+    s.h_matrix = h;
   }
-  HhtStepReport report;
-  report.newton_iterations = static_cast<int>(its);
-  PetscReal norm = 0.0;
-  CATENA_PETSC(SNESGetFunctionNorm(s.snes.get(), &norm));
-  report.residual_norm = norm;
-  // Accept: the new state becomes the start of the next step.
+  CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
+  const NewtonResult result =
+      s.newton->solve(s.a1.get(), s.options.atol + s.options.rtol * s.scale0);
+  StepOutcome out;
+  out.converged = result.converged;
+  out.newton_iterations = result.iterations;
+  out.residual_norm = result.residual_norm;
+  s.counters.newton_iterations += result.iterations;
+  if (!result.converged) {
+    ++s.counters.newton_failures;
+    out.failure = result.failure;
+    PetscReal worst = 0.0, least = 0.0;
+    PetscInt imin = -1, imax = -1;
+    CATENA_PETSC(VecMax(s.residual.get(), &imax, &worst));
+    CATENA_PETSC(VecMin(s.residual.get(), &imin, &least));
+    out.worst_dof = std::abs(least) > std::abs(worst) ? imin : imax;
+    s.pending_valid = false;
+    return out;
+  }
+  // The last residual evaluation was at the converged a1: q1, v1, f1 belong to it.
   s.kinematics(s.a1.get());
-  CATENA_PETSC(VecCopy(s.q1.get(), s.q0.get()));
-  CATENA_PETSC(VecCopy(s.v1.get(), s.v0.get()));
-  CATENA_PETSC(VecCopy(s.a1.get(), s.a0.get()));
-  s.system.force({s.q0.get(), s.v0.get(), {}}, s.f0.get());
-  s.t += s.options.dt;
-  return report;
+  s.pending_valid = true;
+  if (tol) {
+    CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.a0.get(), s.a1.get()));
+    CATENA_PETSC(VecScale(s.error.get(), h * h * (s.beta - 1.0 / 6.0)));
+    out.error = weighted_error_norm(*tol, s.error.get(), s.q0.get(), s.q1.get());
+  }
+  return out;
 }
 
-double HhtIntegrator::time() const { return impl_->t; }
+void HhtIntegrator::accept() {
+  Impl& s = *impl_;
+  if (!s.pending_valid) throw std::logic_error("HhtIntegrator::accept without a converged step");
+  std::swap(s.q_prev, s.q0);
+  std::swap(s.v_prev, s.v0);
+  std::swap(s.a_prev, s.a0);
+  std::swap(s.q0, s.q1);
+  std::swap(s.v0, s.v1);
+  std::swap(s.a0, s.a1);
+  std::swap(s.f0, s.f1);
+  s.scale0 = s.scale1;
+  s.t_prev = s.t0;
+  s.t0 += s.h;
+  s.pending_valid = false;
+  ++s.counters.steps_accepted;
+}
+
+void HhtIntegrator::interpolate(double t, Vec q, Vec v) {
+  const Impl& s = *impl_;
+  const double h = s.t0 - s.t_prev;
+  const double theta = h > 0.0 ? (t - s.t_prev) / h : 1.0;
+  if (q) hermite_interpolate(theta, h, s.q_prev.get(), s.v_prev.get(), s.q0.get(), s.v0.get(), q);
+  if (v) hermite_interpolate(theta, h, s.v_prev.get(), s.a_prev.get(), s.v0.get(), s.a0.get(), v);
+}
+
+double HhtIntegrator::time() const { return impl_->t0; }
+double HhtIntegrator::previous_time() const { return impl_->t_prev; }
 Vec HhtIntegrator::q() const { return impl_->q0.get(); }
 Vec HhtIntegrator::v() const { return impl_->v0.get(); }
 Vec HhtIntegrator::a() const { return impl_->a0.get(); }
+Vec HhtIntegrator::pending_q() const { return impl_->q1.get(); }
+Vec HhtIntegrator::pending_v() const { return impl_->v1.get(); }
+
+const IntegratorCounters& HhtIntegrator::counters() const {
+  Impl& s = *impl_;
+  const NewtonCounters& n = s.newton->counters();
+  s.counters.residual_evaluations = n.residual_evaluations;
+  s.counters.factorizations = n.factorizations;
+  s.counters.linear_solves = n.linear_solves;
+  return s.counters;
+}
+
 double HhtIntegrator::spectral_radius_at_infinity() const {
   return (1.0 + impl_->options.alpha) / (1.0 - impl_->options.alpha);
 }

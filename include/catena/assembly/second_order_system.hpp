@@ -1,8 +1,10 @@
 #pragma once
 // The distributed second-order system every solver and integrator sees:
 //
-//   R(t, q, v, a) = M a + f(q, v; λ) ,   f = f_int + f_damp − λ f_ext
+//   R(t, q, v, a) = M a + f(t, q, v; λ) ,   f = f_int + f_damp − λ f_ext(t)
 //   J = c_K ∂f/∂q + c_C ∂f/∂v + c_M M
+// f_ext(t) holds dead loads (gravity, nodal and distributed loads) and moving loads
+// (model::MovingLoad), which depend on t but not on q, so they add nothing to J.
 //
 // over the free DOFs (supports eliminated; their values are the reference values).
 // Solvers hand in global PETSc vectors and coefficients; they never see elements.
@@ -29,6 +31,7 @@ struct EvalPoint {
   Vec q = nullptr;
   Vec v = nullptr;
   elements::LoadPath path;  // the static load path; dynamics uses its end
+  double t = 0.0;           // s: time, for time-dependent loads (moving loads)
 };
 
 struct JacobianCoefficients {
@@ -63,13 +66,18 @@ class SecondOrderSystem {
   // Collective. q at the reference configuration (positions and nodal frames).
   void reference_state(Vec q) const;
 
-  // Collective. f(q, v; λ) into f (global vector).
-  void force(const EvalPoint& p, Vec f);
+  // Collective. f(t, q, v; λ) into f (global vector). If element_norm is given, it also
+  // receives element_force_norm(p) from the same pass (one extra reduction).
+  void force(const EvalPoint& p, Vec f, double* element_norm = nullptr);
   // Collective. Norm of the unassembled element forces, sqrt(Σ_e |f_e|²): the scale of
   // the round-off in f, against which convergence tolerances are set.
   double element_force_norm(const EvalPoint& p);
   // Collective. J = c_K K + c_C C + c_M M into J (zeroed first, assembled on return).
   void jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
+  // Collective. K = ∂f/∂q and C = ∂f/∂v at p in one element pass (matrices from
+  // create_matrix(); either may be null). For integrators that combine them with
+  // coefficients of their own (the IRK stage matrix).
+  void tangent_parts(const EvalPoint& p, Mat K, Mat C);
 
   // Collective. Section results for this rank's model elements (ascending index).
   void section_results(const EvalPoint& p, std::vector<int>& elements,
@@ -96,6 +104,16 @@ class SecondOrderSystem {
   void gather(size_t k, const double* q_local, const double* v_local, double* q_el,
               double* v_el) const;
   void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
+  // Adds −f_ext of the moving loads at time t into the ghosted local force array.
+  void add_moving_loads(double t, double* f_local) const;
+
+  // Per moving load: cumulative reference length at the start of each path element, and
+  // the local kernel index of each path element (−1: another rank's).
+  struct MovingPath {
+    std::vector<double> start;   // size n_elements + 1 (last: total length)
+    std::vector<int> kernel;
+  };
+  std::vector<MovingPath> moving_paths_;
 
   MPI_Comm comm_;
   const model::Model* model_;

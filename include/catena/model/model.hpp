@@ -109,6 +109,72 @@ struct StaticOptions {
 
 struct OutputOptions {
   std::string file = "catena.h5";
+  // Dynamics: state sampled every `interval` s of simulated time (0: every accepted step)
+  // by the integrator's dense output; results flushed to disk at most every
+  // `flush_wall_seconds` of wall time.
+  double interval = 0.0;
+  double flush_wall_seconds = 10.0;
+  // Dynamics: a checkpoint (full integrator state, atomic write) every `checkpoint_wall_seconds`
+  // of wall time (0: only at the end and on SIGTERM/SIGINT), to `file` + ".chk".
+  double checkpoint_wall_seconds = 600.0;
+};
+
+enum class AnalysisType { static_equilibrium, dynamic };
+
+// Time integrator settings (docs/integrators.md). `type` selects the method:
+//   hht                                    HHT-α (alpha)
+//   gauss, radau_iia, lobatto_iiia,        implicit Runge–Kutta in K-form with `stages`
+//   lobatto_iiic, sdirk                    (see solvers/butcher_tableau.hpp)
+//   petsc                                  PETSc TS (-ts_type alpha2, bdf, rosw, theta, ...)
+struct IntegratorOptions {
+  std::string type = "hht";  // canonical names: "radau" is stored as "radau_iia"
+  int stages = 3;            // IRK only
+  double alpha = -0.1;       // HHT only, ∈ [−1/3, 0]
+  double dt = 1e-3;          // s: the step (fixed) or the first step (adaptive)
+  bool adaptive = false;
+  double rtol = 1e-4;        // local error, relative to the displacement from the reference
+  double atol = 1e-6;        // local error, absolute (m for positions, 1 for slopes)
+  double dt_min = 1e-10;     // s: below this an adaptive run stops with an error
+  double dt_max = 0.0;       // s: 0 = no limit beyond the duration
+  // auto: embedded where the method has one (Radau IIA odd s, HHT), else step doubling.
+  std::string error_estimate = "auto";  // auto | embedded | step_doubling
+  std::string newton = "simplified";    // simplified (frozen Jacobian) | full
+  double newton_rtol = 1e-10;  // Newton residual tolerance, relative to the force scale
+  double newton_atol = 1e-8;   // N
+  int max_newton_iterations = 10;
+};
+
+// A displacement field added to the initial configuration (e.g. a plucked string).
+struct InitialNodeOffset {
+  int node = 0;
+  Vec3 displacement = Vec3::Zero();  // m, added to r
+  Vec3 slope = Vec3::Zero();         // added to ∂r/∂x (nodes with slopes only)
+};
+
+struct InitialConditions {
+  bool from_static = true;  // start from the static equilibrium; else from the reference
+  std::vector<InitialNodeOffset> offsets;
+  Vec3 velocity = Vec3::Zero();  // m/s, uniform initial velocity of every free position DOF
+};
+
+// A constant force moving at constant speed along a chain of cable/beam elements
+// (a pantograph's uplift as a dead load): at time t it acts at arc length
+// s(t) = start + speed·(t − start_time) along `elements` (in path order, measured on the
+// reference geometry), distributed by the element's shape functions; off the path it
+// does nothing.
+struct MovingLoad {
+  std::string name;
+  std::vector<int> elements;  // element indices in path order
+  Vec3 force = Vec3::Zero();  // N
+  double speed = 0.0;         // m/s
+  double start = 0.0;         // m, arc length at start_time
+  double start_time = 0.0;    // s
+};
+
+struct DynamicOptions {
+  double duration = 0.0;  // s, > 0
+  IntegratorOptions integrator;
+  InitialConditions initial;
 };
 
 struct Model {
@@ -124,7 +190,11 @@ struct Model {
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;
 
-  StaticOptions static_options;
+  std::vector<MovingLoad> moving_loads;
+
+  AnalysisType analysis = AnalysisType::static_equilibrium;
+  StaticOptions static_options;  // statics, and the initial equilibrium of dynamics
+  DynamicOptions dynamic_options;
   OutputOptions output;
 };
 

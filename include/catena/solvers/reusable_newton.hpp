@@ -1,0 +1,101 @@
+#pragma once
+// Newton's method on SNES + MUMPS with the matrix kept across solves: the simplified
+// Newton iteration of implicit integrators (Hairer & Wanner II, IV.8), in which the
+// factorisation of one step is reused by the next steps while the iteration contracts
+// fast, and refreshed only when it does not.
+//
+// Two levels of freshness, because they cost differently:
+//   tangent   — the element Jacobians K, C (one element pass): invalidate_tangent();
+//   matrix    — the Newton matrix built from them with the step's coefficients (h):
+//               invalidate_matrix(); every rebuild is one numeric factorisation.
+// The owner's Jacobian callback is told which one to redo. In one solve, when the
+// contraction ‖F_{k+1}‖/‖F_k‖ exceeds `refresh_contraction` with a tangent from an earlier
+// solve, the tangent is refreshed at the next iteration; with a fresh tangent, a
+// contraction above `divergence_contraction` or the iteration limit fails the solve (the
+// caller cuts the step). `full_newton` re-evaluates the tangent at every iterate.
+//
+// Convergence: ‖F‖₂ ≤ atol (set per solve), or a Newton update below kNewtonStepTolerance
+// relative to the iterate (round-off). Failures are reported, not thrown.
+#include <petscsnes.h>
+
+#include <functional>
+#include <string>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/petsc_handle.hpp"
+#include "catena/solvers/direct_newton.hpp"
+
+namespace catena::solvers {
+
+struct NewtonCounters {
+  long iterations = 0;
+  long residual_evaluations = 0;
+  long tangent_evaluations = 0;
+  long factorizations = 0;
+  long linear_solves = 0;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;
+  double residual_norm = 0.0;
+  double max_contraction = 0.0;  // largest ‖F_{k+1}‖/‖F_k‖ seen
+  std::string failure;           // empty if converged
+};
+
+struct NewtonSettings {
+  int max_iterations = 10;
+  bool full_newton = false;
+  double refresh_contraction = 0.3;     // refresh a stale tangent above this rate
+  double divergence_contraction = 0.9;  // fail above this rate with a fresh tangent
+};
+
+class ReusableNewton {
+ public:
+  // F(x, r): the residual. J(x, refresh_tangent, J): builds the Newton matrix; re-evaluate
+  // the element tangent first if refresh_tangent (else rebuild from the stored one).
+  using Residual = std::function<void(Vec x, Vec r)>;
+  using MatrixBuilder = std::function<void(Vec x, bool refresh_tangent, Mat J)>;
+
+  // Collective. J: the matrix to build into (its pattern fixed); r: a residual-shaped
+  // vector (kept). Options prefix `prefix` (e.g. "irk_": -irk_ksp_type, ...).
+  ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& prefix,
+                 JacobianSymmetry symmetry, const NewtonSettings& settings, Residual residual,
+                 MatrixBuilder builder);
+  ~ReusableNewton();
+  ReusableNewton(const ReusableNewton&) = delete;
+  ReusableNewton& operator=(const ReusableNewton&) = delete;
+
+  // The matrix coefficients changed (e.g. a new step size): rebuild before the next solve.
+  void invalidate_matrix() { matrix_valid_ = false; }
+  // The tangent is out of date: re-evaluate it before the next solve.
+  void invalidate_tangent() { tangent_valid_ = false; matrix_valid_ = false; }
+
+  // Collective. Solves F(x) = 0 from the initial guess in x.
+  NewtonResult solve(Vec x, double atol);
+
+  // The last residual evaluated and the iterate it was evaluated at (valid after solve).
+  Vec last_residual() const { return residual_; }
+  const NewtonCounters& counters() const { return counters_; }
+  KSP ksp() const;
+
+ private:
+  static PetscErrorCode form_function(SNES, Vec x, Vec r, void* ctx);
+  static PetscErrorCode form_jacobian(SNES, Vec x, Mat J, Mat P, void* ctx);
+  static PetscErrorCode converged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                  PetscReal fnorm, SNESConvergedReason* reason, void* ctx);
+
+  NewtonSettings settings_;
+  Residual residual_fn_;
+  MatrixBuilder builder_;
+  Vec residual_;
+  SnesHandle snes_;
+  CallbackGuard guard_;
+  NewtonCounters counters_;
+  bool tangent_valid_ = false, matrix_valid_ = false;
+  bool tangent_fresh_ = false;  // tangent evaluated during the current solve
+  double atol_ = 0.0, previous_norm_ = 0.0, max_contraction_ = 0.0;
+  std::string failure_;
+};
+
+}  // namespace catena::solvers

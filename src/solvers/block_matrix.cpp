@@ -1,0 +1,157 @@
+#include "catena/solvers/block_matrix.hpp"
+
+#include <memory>
+#include <stdexcept>
+
+#include "catena/assembly/petsc_call.hpp"
+
+namespace catena::solvers {
+
+BlockCoefficients::BlockCoefficients(int blocks)
+    : s(blocks),
+      k(static_cast<size_t>(blocks * blocks), 0.0),
+      c(static_cast<size_t>(blocks * blocks), 0.0),
+      m(static_cast<size_t>(blocks * blocks), 0.0),
+      d(static_cast<size_t>(blocks * blocks), 0.0) {}
+
+namespace {
+
+// Owned rows of an MPIAIJ matrix, restored on scope exit.
+class RowView {
+ public:
+  RowView(Mat A, PetscInt row) : A_(A), row_(row) {
+    CATENA_PETSC(MatGetRow(A_, row_, &n, &cols, &values));
+  }
+  ~RowView() { MatRestoreRow(A_, row_, &n, &cols, &values); }
+  RowView(const RowView&) = delete;
+  RowView& operator=(const RowView&) = delete;
+  PetscInt n = 0;
+  const PetscInt* cols = nullptr;
+  const PetscScalar* values = nullptr;
+
+ private:
+  Mat A_;
+  PetscInt row_;
+};
+
+}  // namespace
+
+BlockMatrix::BlockMatrix(Mat pattern, int blocks) : s_(blocks) {
+  if (blocks < 1) throw std::invalid_argument("BlockMatrix: blocks must be >= 1");
+  MPI_Comm comm = PETSC_COMM_SELF;
+  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(pattern), &comm));
+  PetscInt last = 0;
+  CATENA_PETSC(MatGetOwnershipRange(pattern, &first_, &last));
+  n_owned_ = last - first_;
+  // Exact preallocation: each block row i of DOF g has s entries per nonzero of row g.
+  std::vector<PetscInt> d_nnz(static_cast<size_t>(n_owned_ * s_)),
+      o_nnz(static_cast<size_t>(n_owned_ * s_));
+  for (PetscInt g = first_; g < last; ++g) {
+    const RowView row(pattern, g);
+    PetscInt diag = 0;
+    for (PetscInt k = 0; k < row.n; ++k) diag += (row.cols[k] >= first_ && row.cols[k] < last);
+    for (int i = 0; i < s_; ++i) {
+      d_nnz[static_cast<size_t>((g - first_) * s_ + i)] = diag * s_;
+      o_nnz[static_cast<size_t>((g - first_) * s_ + i)] = (row.n - diag) * s_;
+    }
+  }
+  const PetscInt n_local = n_owned_ * s_;
+  CATENA_PETSC(MatCreate(comm, B_.out()));
+  CATENA_PETSC(MatSetSizes(B_.get(), n_local, n_local, PETSC_DETERMINE, PETSC_DETERMINE));
+  CATENA_PETSC(MatSetType(B_.get(), MATAIJ));
+  CATENA_PETSC(MatSeqAIJSetPreallocation(B_.get(), 0, d_nnz.data()));
+  CATENA_PETSC(MatMPIAIJSetPreallocation(B_.get(), 0, d_nnz.data(), 0, o_nnz.data()));
+  CATENA_PETSC(MatSetOption(B_.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+}
+
+void BlockMatrix::assemble(Mat K, Mat C, Mat M, const BlockCoefficients& coefficients) {
+  assemble_rows(std::vector<Mat>(static_cast<size_t>(s_), K),
+                std::vector<Mat>(static_cast<size_t>(s_), C), M, coefficients);
+}
+
+void BlockMatrix::assemble_rows(const std::vector<Mat>& K_rows, const std::vector<Mat>& C_rows,
+                                Mat M, const BlockCoefficients& coefficients) {
+  const int s = s_;
+  if (coefficients.s != s || static_cast<int>(K_rows.size()) != s ||
+      static_cast<int>(C_rows.size()) != s)
+    throw std::invalid_argument("BlockMatrix: block count mismatch");
+  // Which of K, C, M block row i needs.
+  auto row_uses = [&](const std::vector<double>& x, int i) {
+    for (int j = 0; j < s; ++j)
+      if (x[static_cast<size_t>(i * s + j)] != 0.0) return true;
+    return false;
+  };
+  std::vector<PetscInt> cols;
+  std::vector<PetscScalar> values;
+  for (PetscInt g = first_; g < first_ + n_owned_; ++g) {
+    for (int i = 0; i < s; ++i) {
+      const bool use_K = row_uses(coefficients.k, i), use_C = row_uses(coefficients.c, i),
+                 use_M = row_uses(coefficients.m, i);
+      Mat Ki = K_rows[static_cast<size_t>(i)], Ci = C_rows[static_cast<size_t>(i)];
+      if ((use_K && !Ki) || (use_C && !Ci) || (use_M && !M))
+        throw std::invalid_argument("BlockMatrix: a matrix with nonzero coefficients is missing");
+      Mat shape = Ki ? Ki : (Ci ? Ci : M);
+      const RowView pattern_row(shape, g);
+      std::unique_ptr<RowView> kr, cr, mr;
+      if (use_K) kr = std::make_unique<RowView>(Ki, g);
+      if (use_C) cr = std::make_unique<RowView>(Ci, g);
+      if (use_M) mr = std::make_unique<RowView>(M, g);
+      for (const RowView* r : {kr.get(), cr.get(), mr.get()})
+        if (r && r->n != pattern_row.n)
+          throw std::logic_error("BlockMatrix: K, C and M must share one sparsity pattern");
+      const PetscInt n = pattern_row.n;
+      cols.resize(static_cast<size_t>(n * s));
+      values.resize(static_cast<size_t>(n * s));
+      for (PetscInt k = 0; k < n; ++k) {
+        const bool diagonal = pattern_row.cols[k] == g;
+        for (int j = 0; j < s; ++j) {
+          const size_t ij = static_cast<size_t>(i * s + j);
+          double value = 0.0;
+          if (use_K) value += coefficients.k[ij] * kr->values[k];
+          if (use_C) value += coefficients.c[ij] * cr->values[k];
+          if (use_M) value += coefficients.m[ij] * mr->values[k];
+          if (diagonal) value += coefficients.d[ij];
+          cols[static_cast<size_t>(k * s + j)] = pattern_row.cols[k] * s + j;
+          values[static_cast<size_t>(k * s + j)] = value;
+        }
+      }
+      const PetscInt row = g * s + i;
+      CATENA_PETSC(MatSetValues(B_.get(), 1, &row, n * s, cols.data(), values.data(),
+                                INSERT_VALUES));
+    }
+  }
+  CATENA_PETSC(MatAssemblyBegin(B_.get(), MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(MatAssemblyEnd(B_.get(), MAT_FINAL_ASSEMBLY));
+}
+
+VecHandle BlockMatrix::create_vector() const {
+  VecHandle v;
+  CATENA_PETSC(MatCreateVecs(B_.get(), v.out(), nullptr));
+  return v;
+}
+
+void BlockMatrix::split(Vec block, const std::vector<Vec>& parts) const {
+  const PetscScalar* b = nullptr;
+  CATENA_PETSC(VecGetArrayRead(block, &b));
+  for (int i = 0; i < s_; ++i) {
+    PetscScalar* p = nullptr;
+    CATENA_PETSC(VecGetArrayWrite(parts[static_cast<size_t>(i)], &p));
+    for (PetscInt l = 0; l < n_owned_; ++l) p[l] = b[l * s_ + i];
+    CATENA_PETSC(VecRestoreArrayWrite(parts[static_cast<size_t>(i)], &p));
+  }
+  CATENA_PETSC(VecRestoreArrayRead(block, &b));
+}
+
+void BlockMatrix::join(const std::vector<Vec>& parts, Vec block) const {
+  PetscScalar* b = nullptr;
+  CATENA_PETSC(VecGetArrayWrite(block, &b));
+  for (int i = 0; i < s_; ++i) {
+    const PetscScalar* p = nullptr;
+    CATENA_PETSC(VecGetArrayRead(parts[static_cast<size_t>(i)], &p));
+    for (PetscInt l = 0; l < n_owned_; ++l) b[l * s_ + i] = p[l];
+    CATENA_PETSC(VecRestoreArrayRead(parts[static_cast<size_t>(i)], &p));
+  }
+  CATENA_PETSC(VecRestoreArrayWrite(block, &b));
+}
+
+}  // namespace catena::solvers

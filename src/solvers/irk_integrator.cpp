@@ -1,0 +1,396 @@
+#include "catena/solvers/irk_integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/solvers/block_matrix.hpp"
+#include "catena/solvers/consistent_acceleration.hpp"
+#include "catena/solvers/direct_newton.hpp"
+#include "catena/solvers/hermite_interpolation.hpp"
+#include "catena/solvers/mumps_status.hpp"
+#include "catena/solvers/reusable_newton.hpp"
+
+namespace catena::solvers {
+namespace {
+
+// y = x0 + Σ_j w_j parts_j (y may not alias the parts).
+void combine(Vec y, Vec x0, const std::vector<double>& w, const std::vector<VecHandle>& parts) {
+  CATENA_PETSC(VecCopy(x0, y));
+  std::vector<Vec> raw;
+  for (const VecHandle& p : parts) raw.push_back(p.get());
+  CATENA_PETSC(VecMAXPY(y, static_cast<PetscInt>(raw.size()), w.data(), raw.data()));
+}
+
+std::vector<VecHandle> vectors(assembly::SecondOrderSystem& system, int count) {
+  std::vector<VecHandle> v;
+  for (int i = 0; i < count; ++i) v.push_back(system.create_vector());
+  return v;
+}
+
+}  // namespace
+
+struct IrkIntegrator::Impl {
+  assembly::SecondOrderSystem& system;
+  IrkOptions options;
+  ButcherTableau T;
+  int s;
+  Eigen::MatrixXd A2;     // A²
+  Eigen::VectorXd bA;     // bᵀA
+  Eigen::MatrixXd L;      // Lagrange basis on c: ℓ_j(σ) = Σ_k L(j, k) σ^k (s ≥ 2)
+  bool polynomial_dense;  // dense output by the collocation polynomial
+  bool stiffly_accurate;
+
+  double t0 = 0.0, t_prev = 0.0, h = 0.0, h_last = 0.0, h_matrix = -1.0;
+  double scale0 = 0.0, stage_scale = 0.0;
+  double klast_end = -1.0;  // end time of the step whose stages Klast holds
+  VecHandle q0, v0, a0, q_prev, v_prev, a_prev, q1, v1, a1, scratch;
+  std::vector<VecHandle> Kst, Klast, U, V, F;
+  MatHandle mass, K, C;
+  std::vector<MatHandle> Ks, Cs;  // full Newton: per-stage tangents
+  std::unique_ptr<BlockMatrix> block;
+  VecHandle x, r;
+  std::unique_ptr<ReusableNewton> newton;
+  long tangent_serial = 0;  // bumped whenever K, C change
+
+  // Embedded estimate (Radau IIA, odd s).
+  MatHandle E;
+  KspHandle estimate_ksp;
+  double estimate_h = -1.0;
+  long estimate_tangent = -1;
+  VecHandle ru, rv, rhs, xu, xv;
+  long estimate_factorizations = 0, estimate_solves = 0;
+
+  IntegratorCounters counters;
+  bool pending_valid = false;
+
+  Impl(assembly::SecondOrderSystem& sys, const IrkOptions& o)
+      : system(sys), options(o), T(make_tableau(o.family, o.stages)), s(T.stages) {
+    A2 = a_squared(T);
+    bA = T.A.transpose() * T.b;
+    stiffly_accurate = T.stiffly_accurate && T.c(s - 1) == 1.0;
+    const bool collocation = T.family == TableauFamily::gauss ||
+                             T.family == TableauFamily::radau_iia ||
+                             T.family == TableauFamily::lobatto_iiia;
+    polynomial_dense = collocation && s >= 2;
+    if (s >= 2) {
+      Eigen::MatrixXd vandermonde(s, s);  // row i: c_i^k
+      for (int i = 0; i < s; ++i)
+        for (int k = 0; k < s; ++k) vandermonde(i, k) = std::pow(T.c(i), k);
+      // ℓ_j(c_i) = δ_ij  ⇒  vandermonde · Lᵀ = I.
+      L = vandermonde.inverse().transpose();
+    }
+  }
+
+  // Lagrange weights ℓ_j(σ), and their integrals w_j = ∫0^σ ℓ_j, W_j = ∫0^σ (σ − τ) ℓ_j dτ.
+  void basis(double sigma, std::vector<double>& l, std::vector<double>* w,
+             std::vector<double>* W) const {
+    l.assign(s, 0.0);
+    if (w) w->assign(s, 0.0);
+    if (W) W->assign(s, 0.0);
+    for (int j = 0; j < s; ++j)
+      for (int k = 0; k < s; ++k) {
+        const double p = std::pow(sigma, k);
+        l[j] += L(j, k) * p;
+        if (w) (*w)[j] += L(j, k) * p * sigma / (k + 1);
+        if (W) (*W)[j] += L(j, k) * p * sigma * sigma / ((k + 1) * (k + 2));
+      }
+  }
+
+  // U_i, V_i from the stage accelerations in Kst.
+  void stage_states() {
+    std::vector<double> w(s);
+    for (int i = 0; i < s; ++i) {
+      for (int j = 0; j < s; ++j) w[j] = h * h * A2(i, j);
+      combine(U[i].get(), q0.get(), w, Kst);
+      CATENA_PETSC(VecAXPY(U[i].get(), T.c(i) * h, v0.get()));
+      for (int j = 0; j < s; ++j) w[j] = h * T.A(i, j);
+      combine(V[i].get(), v0.get(), w, Kst);
+    }
+  }
+
+  std::vector<Vec> raw(const std::vector<VecHandle>& v) const {
+    std::vector<Vec> out;
+    for (const VecHandle& e : v) out.push_back(e.get());
+    return out;
+  }
+
+  void residual(Vec xk, Vec rk) {
+    block->split(xk, raw(Kst));
+    stage_states();
+    stage_scale = 0.0;
+    for (int i = 0; i < s; ++i) {
+      double norm = 0.0;
+      system.force({U[i].get(), V[i].get(), {}, t0 + T.c(i) * h}, F[i].get(), &norm);
+      stage_scale = std::max(stage_scale, norm);
+      CATENA_PETSC(MatMultAdd(mass.get(), Kst[i].get(), F[i].get(), F[i].get()));
+    }
+    counters.residual_evaluations += s;
+    block->join(raw(F), rk);
+  }
+
+  BlockCoefficients coefficients() const {
+    BlockCoefficients c(s);
+    for (int i = 0; i < s; ++i)
+      for (int j = 0; j < s; ++j) {
+        c.M(i, j) = i == j ? 1.0 : 0.0;
+        c.C(i, j) = h * T.A(i, j);
+        c.K(i, j) = h * h * A2(i, j);
+      }
+    return c;
+  }
+
+  void evaluate_start_tangent() {
+    system.tangent_parts({q0.get(), v0.get(), {}, t0}, K.get(), C.get());
+    ++counters.jacobian_evaluations;
+    ++tangent_serial;
+  }
+
+  void build(Vec xk, bool refresh, Mat) {
+    if (options.full_newton) {
+      block->split(xk, raw(Kst));
+      stage_states();
+      std::vector<Mat> k_rows, c_rows;
+      for (int i = 0; i < s; ++i) {
+        system.tangent_parts({U[i].get(), V[i].get(), {}, t0 + T.c(i) * h}, Ks[i].get(),
+                             Cs[i].get());
+        k_rows.push_back(Ks[i].get());
+        c_rows.push_back(Cs[i].get());
+      }
+      counters.jacobian_evaluations += s;
+      block->assemble_rows(k_rows, c_rows, mass.get(), coefficients());
+      return;
+    }
+    if (refresh) evaluate_start_tangent();
+    block->assemble(K.get(), C.get(), mass.get(), coefficients());
+  }
+
+  void predict() {
+    if (s >= 2 && klast_end == t0 && h_last > 0.0) {
+      std::vector<double> l;
+      for (int i = 0; i < s; ++i) {
+        basis(1.0 + T.c(i) * h / h_last, l, nullptr, nullptr);
+        CATENA_PETSC(VecSet(Kst[i].get(), 0.0));
+        std::vector<Vec> parts = raw(Klast);
+        CATENA_PETSC(VecMAXPY(Kst[i].get(), s, l.data(), parts.data()));
+      }
+    } else {
+      for (int i = 0; i < s; ++i) CATENA_PETSC(VecCopy(a0.get(), Kst[i].get()));
+    }
+    block->join(raw(Kst), x.get());
+  }
+
+  // The Radau IIA estimate x_u (docs/tableaus.md), in the weighted norm.
+  double embedded_error(const ErrorTolerance& tol) {
+    const Eigen::VectorXd d = *T.b_embedded - T.b;
+    const Eigen::VectorXd Atd = T.A.transpose() * d;
+    std::vector<double> w(s);
+    for (int j = 0; j < s; ++j) w[j] = h * h * Atd(j);
+    CATENA_PETSC(VecSet(scratch.get(), 0.0));
+    combine(ru.get(), scratch.get(), w, Kst);
+    for (int j = 0; j < s; ++j) w[j] = h * d(j);
+    combine(rv.get(), scratch.get(), w, Kst);
+    const double g = h * T.gamma0;
+    CATENA_PETSC(VecAXPY(rv.get(), g, a0.get()));
+    if (options.full_newton || tangent_serial == 0) {
+      // Full Newton keeps no tangent at the step start: take one for the filter.
+      evaluate_start_tangent();
+    }
+    if (estimate_h != h || estimate_tangent != tangent_serial) {
+      CATENA_PETSC(MatCopy(mass.get(), E.get(), SAME_NONZERO_PATTERN));
+      CATENA_PETSC(MatAXPY(E.get(), g, C.get(), SAME_NONZERO_PATTERN));
+      CATENA_PETSC(MatAXPY(E.get(), g * g, K.get(), SAME_NONZERO_PATTERN));
+      CATENA_PETSC(KSPSetOperators(estimate_ksp.get(), E.get(), E.get()));
+      estimate_h = h;
+      estimate_tangent = tangent_serial;
+      ++estimate_factorizations;
+    }
+    // rhs = M r_v − g K r_u
+    CATENA_PETSC(MatMult(mass.get(), rv.get(), rhs.get()));
+    CATENA_PETSC(MatMult(K.get(), ru.get(), scratch.get()));
+    CATENA_PETSC(VecAXPY(rhs.get(), -g, scratch.get()));
+    CATENA_PETSC(KSPSolve(estimate_ksp.get(), rhs.get(), xv.get()));
+    ++estimate_solves;
+    const MumpsStatus mumps = mumps_status(estimate_ksp.get());
+    if (mumps.infog1 < 0 || mumps.null_pivots > 0) return 1e10;  // reject: h will shrink
+    CATENA_PETSC(VecWAXPY(xu.get(), g, xv.get(), ru.get()));
+    return weighted_error_norm(tol, xu.get(), q0.get(), q1.get());
+  }
+};
+
+IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptions& options)
+    : impl_(std::make_unique<Impl>(system, options)) {
+  Impl& m = *impl_;
+  for (VecHandle* v : {&m.q0, &m.v0, &m.a0, &m.q_prev, &m.v_prev, &m.a_prev, &m.q1, &m.v1,
+                       &m.a1, &m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv})
+    *v = system.create_vector();
+  m.Kst = vectors(system, m.s);
+  m.Klast = vectors(system, m.s);
+  m.U = vectors(system, m.s);
+  m.V = vectors(system, m.s);
+  m.F = vectors(system, m.s);
+  m.mass = system.create_matrix();
+  system.jacobian({m.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, m.mass.get());
+  // K, C and E take the mass matrix's full pattern (so MatAXPY can keep it).
+  for (MatHandle* A : {&m.K, &m.C, &m.E})
+    CATENA_PETSC(MatDuplicate(m.mass.get(), MAT_DO_NOT_COPY_VALUES, A->out()));
+  if (options.full_newton)
+    for (int i = 0; i < m.s; ++i) {
+      m.Ks.push_back(system.create_matrix());
+      m.Cs.push_back(system.create_matrix());
+    }
+  m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
+  m.x = m.block->create_vector();
+  m.r = m.block->create_vector();
+  NewtonSettings settings;
+  settings.max_iterations = options.max_newton_iterations;
+  settings.full_newton = options.full_newton;
+  m.newton = std::make_unique<ReusableNewton>(
+      system.comm(), m.block->matrix(), m.r.get(), "irk_", JacobianSymmetry::general, settings,
+      [&m](Vec xk, Vec rk) { m.residual(xk, rk); },
+      [&m](Vec xk, bool refresh, Mat J) { m.build(xk, refresh, J); });
+  if (has_embedded_estimate())
+    m.estimate_ksp = create_direct_ksp(system.comm(), "irk_estimate_", JacobianSymmetry::general);
+}
+
+IrkIntegrator::~IrkIntegrator() = default;
+
+std::string IrkIntegrator::name() const { return impl_->T.name; }
+int IrkIntegrator::order() const { return impl_->T.order; }
+bool IrkIntegrator::has_embedded_estimate() const { return impl_->T.e_embedded.has_value(); }
+int IrkIntegrator::estimate_order() const {
+  return has_embedded_estimate() ? impl_->T.embedded_order + 1 : 0;
+}
+const ButcherTableau& IrkIntegrator::tableau() const { return impl_->T; }
+
+void IrkIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
+  Impl& m = *impl_;
+  m.t0 = m.t_prev = t;
+  CATENA_PETSC(VecCopy(q, m.q0.get()));
+  CATENA_PETSC(VecCopy(v, m.v0.get()));
+  if (a)
+    CATENA_PETSC(VecCopy(a, m.a0.get()));
+  else
+    consistent_acceleration(m.system, m.mass.get(), t, m.q0.get(), m.v0.get(), m.a0.get());
+  m.system.force({m.q0.get(), m.v0.get(), {}, t}, m.scratch.get(), &m.scale0);
+  for (auto [from, to] : {std::pair{&m.q0, &m.q_prev}, {&m.v0, &m.v_prev}, {&m.a0, &m.a_prev}})
+    CATENA_PETSC(VecCopy(from->get(), to->get()));
+  m.h_last = 0.0;  // no step behind this state: dense output is the state itself
+  m.pending_valid = false;
+}
+
+StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
+  Impl& m = *impl_;
+  m.h = h;
+  if (h != m.h_matrix) {
+    m.newton->invalidate_matrix();
+    m.h_matrix = h;
+  }
+  m.predict();
+  const double atol =
+      m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s));
+  const NewtonResult result = m.newton->solve(m.x.get(), atol);
+  StepOutcome out;
+  out.converged = result.converged;
+  out.newton_iterations = result.iterations;
+  out.residual_norm = result.residual_norm;
+  m.counters.newton_iterations += result.iterations;
+  if (!result.converged) {
+    ++m.counters.newton_failures;
+    out.failure = result.failure;
+    PetscReal hi = 0.0, lo = 0.0;
+    PetscInt ihi = -1, ilo = -1;
+    CATENA_PETSC(VecMax(m.r.get(), &ihi, &hi));
+    CATENA_PETSC(VecMin(m.r.get(), &ilo, &lo));
+    out.worst_dof = (std::abs(lo) > std::abs(hi) ? ilo : ihi) / m.s;
+    m.pending_valid = false;
+    return out;
+  }
+  // The last residual was evaluated at the converged stages: Kst, U, V belong to them.
+  std::vector<double> w(m.s);
+  for (int j = 0; j < m.s; ++j) w[j] = h * h * m.bA(j);
+  combine(m.q1.get(), m.q0.get(), w, m.Kst);
+  CATENA_PETSC(VecAXPY(m.q1.get(), h, m.v0.get()));
+  for (int j = 0; j < m.s; ++j) w[j] = h * m.T.b(j);
+  combine(m.v1.get(), m.v0.get(), w, m.Kst);
+  if (m.stiffly_accurate) {
+    CATENA_PETSC(VecCopy(m.Kst[m.s - 1].get(), m.a1.get()));
+  } else if (m.s >= 2) {
+    std::vector<double> l;
+    m.basis(1.0, l, nullptr, nullptr);
+    CATENA_PETSC(VecSet(m.scratch.get(), 0.0));
+    combine(m.a1.get(), m.scratch.get(), l, m.Kst);
+  } else {
+    CATENA_PETSC(VecCopy(m.Kst[0].get(), m.a1.get()));
+  }
+  m.pending_valid = true;
+  if (tol && has_embedded_estimate()) out.error = m.embedded_error(*tol);
+  return out;
+}
+
+void IrkIntegrator::accept() {
+  Impl& m = *impl_;
+  if (!m.pending_valid) throw std::logic_error("IrkIntegrator::accept without a converged step");
+  std::swap(m.q_prev, m.q0);
+  std::swap(m.v_prev, m.v0);
+  std::swap(m.a_prev, m.a0);
+  std::swap(m.q0, m.q1);
+  std::swap(m.v0, m.v1);
+  std::swap(m.a0, m.a1);
+  std::swap(m.Klast, m.Kst);
+  m.h_last = m.h;
+  m.t_prev = m.t0;
+  m.t0 += m.h;
+  m.klast_end = m.t0;
+  m.scale0 = m.stage_scale;
+  m.pending_valid = false;
+  ++m.counters.steps_accepted;
+}
+
+void IrkIntegrator::interpolate(double t, Vec q, Vec v) {
+  Impl& m = *impl_;
+  const double h = m.h_last;
+  if (h <= 0.0) {  // no step taken since set_state
+    if (q) CATENA_PETSC(VecCopy(m.q0.get(), q));
+    if (v) CATENA_PETSC(VecCopy(m.v0.get(), v));
+    return;
+  }
+  const double theta = (t - m.t_prev) / h;
+  if (!m.polynomial_dense) {
+    if (q) hermite_interpolate(theta, h, m.q_prev.get(), m.v_prev.get(), m.q0.get(), m.v0.get(), q);
+    if (v) hermite_interpolate(theta, h, m.v_prev.get(), m.a_prev.get(), m.v0.get(), m.a0.get(), v);
+    return;
+  }
+  std::vector<double> l, w, W;
+  m.basis(theta, l, &w, &W);
+  if (v) {
+    for (double& x : w) x *= h;
+    combine(v, m.v_prev.get(), w, m.Klast);
+  }
+  if (q) {
+    for (double& x : W) x *= h * h;
+    combine(q, m.q_prev.get(), W, m.Klast);
+    CATENA_PETSC(VecAXPY(q, theta * h, m.v_prev.get()));
+  }
+}
+
+double IrkIntegrator::time() const { return impl_->t0; }
+double IrkIntegrator::previous_time() const { return impl_->t_prev; }
+Vec IrkIntegrator::q() const { return impl_->q0.get(); }
+Vec IrkIntegrator::v() const { return impl_->v0.get(); }
+Vec IrkIntegrator::a() const { return impl_->a0.get(); }
+Vec IrkIntegrator::pending_q() const { return impl_->q1.get(); }
+Vec IrkIntegrator::pending_v() const { return impl_->v1.get(); }
+
+const IntegratorCounters& IrkIntegrator::counters() const {
+  Impl& m = *impl_;
+  const NewtonCounters& n = m.newton->counters();
+  // The stage Newton's work plus the estimate's filter solves.
+  IntegratorCounters& c = m.counters;
+  c.factorizations = n.factorizations + m.estimate_factorizations;
+  c.linear_solves = n.linear_solves + m.estimate_solves;
+  return c;
+}
+
+}  // namespace catena::solvers

@@ -1,0 +1,148 @@
+#include "catena/solvers/reusable_newton.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "catena/solvers/mumps_status.hpp"
+
+namespace catena::solvers {
+
+ReusableNewton::ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& prefix,
+                               JacobianSymmetry symmetry, const NewtonSettings& settings,
+                               Residual residual, MatrixBuilder builder)
+    : settings_(settings),
+      residual_fn_(std::move(residual)),
+      builder_(std::move(builder)),
+      residual_(r) {
+  CATENA_PETSC(SNESCreate(comm, snes_.out()));
+  CATENA_PETSC(SNESSetFunction(snes_.get(), r, form_function, this));
+  CATENA_PETSC(SNESSetJacobian(snes_.get(), J, J, form_jacobian, this));
+  configure_direct_newton(snes_.get(), prefix, symmetry);
+  CATENA_PETSC(SNESSetConvergenceTest(snes_.get(), converged, this, nullptr));
+  // Our convergence test owns the iteration limit.
+  CATENA_PETSC(SNESSetTolerances(snes_.get(), PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT,
+                                 settings.max_iterations + 1, 1000000));
+}
+
+ReusableNewton::~ReusableNewton() = default;
+
+KSP ReusableNewton::ksp() const {
+  KSP ksp = nullptr;
+  CATENA_PETSC(SNESGetKSP(snes_.get(), &ksp));
+  return ksp;
+}
+
+PetscErrorCode ReusableNewton::form_function(SNES, Vec x, Vec r, void* ctx) {
+  auto* self = static_cast<ReusableNewton*>(ctx);
+  return self->guard_.run([&] {
+    self->residual_fn_(x, r);
+    ++self->counters_.residual_evaluations;
+  });
+}
+
+PetscErrorCode ReusableNewton::form_jacobian(SNES, Vec x, Mat J, Mat, void* ctx) {
+  auto* self = static_cast<ReusableNewton*>(ctx);
+  return self->guard_.run([&] {
+    const bool refresh = !self->tangent_valid_ || self->settings_.full_newton;
+    self->builder_(x, refresh, J);
+    if (refresh) {
+      self->tangent_valid_ = true;
+      self->tangent_fresh_ = true;
+      ++self->counters_.tangent_evaluations;
+    }
+    self->matrix_valid_ = true;
+    ++self->counters_.factorizations;  // a changed matrix is refactored by the PC
+  });
+}
+
+PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm,
+                                         PetscReal snorm, PetscReal fnorm,
+                                         SNESConvergedReason* reason, void* ctx) {
+  auto* self = static_cast<ReusableNewton*>(ctx);
+  const NewtonSettings& s = self->settings_;
+  *reason = SNES_CONVERGED_ITERATING;
+  std::ostringstream why;
+  if (!std::isfinite(fnorm)) {
+    why << "the residual is not finite at iteration " << it;
+    *reason = SNES_DIVERGED_FNORM_NAN;
+  } else if (fnorm <= self->atol_) {
+    *reason = SNES_CONVERGED_FNORM_ABS;
+  } else if (it > 0 && snorm <= kNewtonStepTolerance * xnorm) {
+    *reason = SNES_CONVERGED_SNORM_RELATIVE;
+  } else if (it > 0) {
+    const double theta = self->previous_norm_ > 0.0 ? fnorm / self->previous_norm_ : 0.0;
+    self->max_contraction_ = std::max(self->max_contraction_, theta);
+    const bool fresh = self->tangent_fresh_ || s.full_newton;
+    if (theta > s.refresh_contraction && !fresh) {
+      // The reused tangent no longer contracts well: re-evaluate it now.
+      self->tangent_valid_ = false;
+      if (SNESSetLagJacobian(snes, -2) != 0) return PETSC_ERR_LIB;
+    } else if (theta > s.divergence_contraction) {
+      why << "Newton does not contract (|F| ratio " << theta << " at iteration " << it
+          << ", fresh Jacobian)";
+      *reason = SNES_DIVERGED_DTOL;
+    }
+    if (*reason == SNES_CONVERGED_ITERATING && it >= s.max_iterations) {
+      why << "no convergence in " << s.max_iterations << " Newton iterations (|F| = " << fnorm
+          << " N, tolerance " << self->atol_ << " N)";
+      *reason = SNES_DIVERGED_MAX_IT;
+    }
+  }
+  self->previous_norm_ = fnorm;
+  if (*reason < 0) self->failure_ = why.str();
+  return 0;
+}
+
+NewtonResult ReusableNewton::solve(Vec x, double atol) {
+  atol_ = atol;
+  previous_norm_ = -1.0;
+  max_contraction_ = 0.0;
+  tangent_fresh_ = false;
+  failure_.clear();
+  const bool rebuild = !matrix_valid_ || settings_.full_newton;
+  CATENA_PETSC(SNESSetLagJacobian(snes_.get(), settings_.full_newton ? 1 : (rebuild ? -2 : -1)));
+  const PetscErrorCode ierr = SNESSolve(snes_.get(), nullptr, x);
+  guard_.rethrow_if_any();
+  CATENA_PETSC(ierr);
+
+  NewtonResult result;
+  SNESConvergedReason reason;
+  PetscInt its = 0;
+  CATENA_PETSC(SNESGetConvergedReason(snes_.get(), &reason));
+  CATENA_PETSC(SNESGetIterationNumber(snes_.get(), &its));
+  PetscReal norm = 0.0;
+  CATENA_PETSC(SNESGetFunctionNorm(snes_.get(), &norm));
+  PetscInt linear = 0;
+  CATENA_PETSC(SNESGetLinearSolveIterations(snes_.get(), &linear));
+  counters_.iterations += its;
+  counters_.linear_solves += its;
+  result.iterations = static_cast<int>(its);
+  result.residual_norm = norm;
+  result.max_contraction = max_contraction_;
+  result.converged = reason > 0;
+  if (its > 0) {
+    const MumpsStatus mumps = mumps_status(ksp());
+    if (mumps.infog1 < 0 || mumps.null_pivots > 0) {
+      std::ostringstream os;
+      os << "the Newton matrix could not be factored (MUMPS INFOG(1) = " << mumps.infog1
+         << ", null pivots " << mumps.null_pivots << ")";
+      result.converged = false;
+      failure_ = os.str();
+      invalidate_tangent();
+    }
+  }
+  if (!result.converged) {
+    if (failure_.empty()) {
+      std::ostringstream os;
+      os << "SNES stopped with reason " << static_cast<int>(reason) << " after " << its
+         << " iterations (|F| = " << norm << " N)";
+      failure_ = os.str();
+    }
+    result.failure = failure_;
+    // A failed solve says the tangent is poor for this step: start the retry afresh.
+    invalidate_tangent();
+  }
+  return result;
+}
+
+}  // namespace catena::solvers

@@ -1,0 +1,78 @@
+#include "dynamics_fixtures.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "catena/core/error.hpp"
+#include "model_builders.hpp"
+
+namespace catena::test {
+
+model::Model oscillator(double mass, double omega) {
+  model::Model m;
+  m.gravity = Vec3::Zero();
+  m.nodes.push_back({1, Vec3(0, 0, 0), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()});
+  m.point_masses.push_back({0, mass});
+  const double k = mass * omega * omega;
+  m.elastic_supports.push_back({0, Vec3(k, k, k), Vec3::Zero()});
+  return m;
+}
+
+double global_value(MPI_Comm comm, Vec x, PetscInt g) {
+  PetscInt lo = 0, hi = 0;
+  VecGetOwnershipRange(x, &lo, &hi);
+  double local = 0.0, value = 0.0;
+  if (g >= lo && g < hi) VecGetValues(x, 1, &g, &local);
+  MPI_Allreduce(&local, &value, 1, MPI_DOUBLE, MPI_SUM, comm);
+  return value;
+}
+
+void set_global_value(Vec x, PetscInt g, double value) {
+  PetscInt lo = 0, hi = 0;
+  VecGetOwnershipRange(x, &lo, &hi);
+  if (g >= lo && g < hi) VecSetValue(x, g, value, INSERT_VALUES);
+  VecAssemblyBegin(x);
+  VecAssemblyEnd(x);
+}
+
+void advance_fixed(solvers::TimeIntegrator& integrator, double dt, int n) {
+  for (int i = 0; i < n; ++i) {
+    const solvers::StepOutcome step = integrator.attempt(dt, nullptr);
+    if (!step.converged) throw NumericalError(integrator.name() + ": " + step.failure);
+    integrator.accept();
+  }
+}
+
+double TautString::first_frequency() const {
+  const double mu_tensioned = mu / (1.0 + T / EA);
+  return 1.0 / (2 * L) * std::sqrt(T / mu_tensioned) *
+         std::sqrt(1 + std::numbers::pi * std::numbers::pi * EI / (T * L * L));
+}
+
+model::Model TautString::model() const {
+  model::Model m;
+  m.gravity = Vec3::Zero();
+  const auto nodes =
+      add_line(m, {0, 0, 0}, {L, 0, 0}, n, model::CableProps{EA, EI, mu, 0.0, T / EA});
+  set_reference_frames(m);
+  pin(m, nodes.front());
+  pin(m, nodes.back());
+  return m;
+}
+
+void TautString::pluck(const assembly::SecondOrderSystem& system, Vec q, double amplitude) const {
+  const auto& dofs = system.dof_map();
+  PetscInt lo = 0, hi = 0;
+  VecGetOwnershipRange(q, &lo, &hi);
+  const double k = std::numbers::pi / L;
+  for (int i = 0; i <= n; ++i) {
+    const double x = L * i / n;
+    const PetscInt gz = dofs.global_dof(i, 2), gs = dofs.global_dof(i, 5);
+    if (gz >= lo && gz < hi) VecSetValue(q, gz, amplitude * std::sin(k * x), INSERT_VALUES);
+    if (gs >= lo && gs < hi) VecSetValue(q, gs, amplitude * k * std::cos(k * x), INSERT_VALUES);
+  }
+  VecAssemblyBegin(q);
+  VecAssemblyEnd(q);
+}
+
+}  // namespace catena::test

@@ -1,0 +1,34 @@
+#pragma once
+// Models and helpers shared by the time-integration tests.
+#include <petscvec.h>
+
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/model/model.hpp"
+#include "catena/solvers/time_integrator.hpp"
+
+namespace catena::test {
+
+// A point mass on an isotropic elastic support, no gravity: x'' = −ω² x per axis.
+model::Model oscillator(double mass, double omega);
+
+// Collective. The value of global DOF g (−1: 0.0) on every rank.
+double global_value(MPI_Comm comm, Vec x, PetscInt g);
+// Collective. Sets global DOF g of x (the owner writes).
+void set_global_value(Vec x, PetscInt g, double value);
+
+// Collective. n fixed steps of size dt; throws NumericalError if Newton fails.
+void advance_fixed(solvers::TimeIntegrator& integrator, double dt, int n);
+
+// A pinned–pinned pre-tensioned wire of n cable elements along x (no gravity), with its
+// first mode z = A sin(πx/L) (and slopes) set into q.
+struct TautString {
+  double L = 60.0, T = 20000.0, EA = 1.8e7, EI = 195.0, mu = 1.35;
+  int n = 60;
+  // f₁ of the tensioned Euler–Bernoulli beam (../shared/reference/analytic.md), μ per
+  // tensioned length.
+  double first_frequency() const;
+  model::Model model() const;
+  void pluck(const assembly::SecondOrderSystem& system, Vec q, double amplitude) const;
+};
+
+}  // namespace catena::test
