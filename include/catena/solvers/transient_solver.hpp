@@ -1,0 +1,76 @@
+#pragma once
+// The step-control driver of every dynamic analysis: advances a TimeIntegrator from t0 to
+// t_end with fixed or adaptive steps, samples the state at a fixed output interval by the
+// integrator's dense output, and stops cleanly when asked (SIGTERM) or when the step
+// falls below its minimum.
+//
+// Adaptive steps (Hairer, Nørsett & Wanner I, II.4; Hairer & Wanner II, IV.8):
+//   err ≤ 1 accepts;  h_new = h · min(growth, max(shrink, 0.9 · err^(−1/k)))
+// with k the order of the local error estimate in h: the integrator's embedded estimate
+// (HHT: 3, Radau IIA: s + 1), or step doubling for any method — one step of h against two
+// of h/2, err = ‖q_{h/2,h/2} − q_h‖ / (2^p − 1), k = p + 1, and the two half steps are
+// kept. A step change within [1, 1.2]·h is not made, so the factorisation is reused
+// (RADAU5's rule). A Newton failure halves h. Fixed steps: h = dt (the last step is cut
+// to land on t_end); a Newton failure halves h for that step and dt resumes afterwards.
+// Below dt_min the run stops with a NumericalError naming the time, step, residual and
+// the worst DOF (node and component).
+#include <petscvec.h>
+
+#include <string>
+
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/solvers/time_integrator.hpp"
+
+namespace catena::solvers {
+
+enum class ErrorEstimate { automatic, embedded, step_doubling };
+
+struct StepControl {
+  double dt = 1e-3;      // s: the fixed step, or the first adaptive step
+  bool adaptive = false;
+  double rtol = 1e-4, atol = 1e-6;  // weighted local error (time_integrator.hpp)
+  double dt_min = 1e-10;  // s
+  double dt_max = 0.0;    // s, 0: no limit
+  ErrorEstimate estimate = ErrorEstimate::automatic;
+  double growth = 5.0, shrink = 0.2, safety = 0.9;
+};
+
+struct TransientOptions {
+  double t_end = 0.0;            // s
+  double sample_interval = 0.0;  // s, 0: sample every accepted step
+  StepControl step;
+};
+
+// One accepted step, for statistics output.
+struct StepRecord {
+  double time = 0.0;  // end of the step
+  double dt = 0.0;
+  int newton_iterations = 0;  // summed over the step's attempts that were kept
+  double error = -1.0;        // weighted local error estimate, −1 if none
+  int rejected = 0;           // attempts rejected before this step was accepted
+};
+
+class TransientObserver {
+ public:
+  virtual ~TransientObserver() = default;
+  // Collective. The state at an output time.
+  virtual void sample(double t, Vec q, Vec v) = 0;
+  // Collective. After every accepted step (identical on every rank).
+  virtual void step(const StepRecord&) {}
+  // Not collective: this rank's request to stop (e.g. a signal arrived). The driver
+  // combines the ranks' answers so that all stop at the same step.
+  virtual bool stop_requested() { return false; }
+};
+
+struct TransientReport {
+  double t_reached = 0.0;
+  bool interrupted = false;  // stopped by a stop request before t_end
+  long steps_accepted = 0, steps_rejected = 0, samples = 0;
+  double smallest_dt = 0.0, largest_dt = 0.0;
+};
+
+// Collective. Runs integrator (whose state is set) to options.t_end.
+TransientReport run_transient(assembly::SecondOrderSystem& system, TimeIntegrator& integrator,
+                              const TransientOptions& options, TransientObserver& observer);
+
+}  // namespace catena::solvers

@@ -1,0 +1,167 @@
+// The step-control driver: adaptive steps meet their tolerance (embedded estimates and
+// step doubling), output samples land on the fixed output times with dense-output
+// accuracy, a stop request ends the run between steps, and an unreachable tolerance ends
+// with an error naming time, step and the minimum.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "catena/core/error.hpp"
+#include "catena/solvers/hht_integrator.hpp"
+#include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/transient_solver.hpp"
+#include "dynamics_fixtures.hpp"
+#include "petsc_test_session.hpp"
+
+namespace solvers = catena::solvers;
+
+namespace {
+
+constexpr double kMass = 2.0, kOmega = 2.0 * std::numbers::pi, kX0 = 0.1;
+
+// Records samples of the x DOF and steps; optionally asks to stop after n steps.
+class Recorder : public solvers::TransientObserver {
+ public:
+  Recorder(MPI_Comm comm, PetscInt g) : comm_(comm), g_(g) {}
+  void sample(double t, Vec q, Vec) override {
+    times.push_back(t);
+    x.push_back(catena::test::global_value(comm_, q, g_));
+  }
+  void step(const solvers::StepRecord& r) override { steps.push_back(r); }
+  bool stop_requested() override { return stop_after > 0 && static_cast<int>(steps.size()) >= stop_after; }
+  std::vector<double> times, x;
+  std::vector<solvers::StepRecord> steps;
+  int stop_after = 0;
+
+ private:
+  MPI_Comm comm_;
+  PetscInt g_;
+};
+
+struct OscillatorRun {
+  solvers::TransientReport report;
+  double worst_sample_error = 0.0;
+  Recorder recorder{MPI_COMM_WORLD, 0};
+};
+
+template <class Integrator, class Options>
+OscillatorRun run_oscillator(const Options& integrator_options, const solvers::TransientOptions& options,
+                   int stop_after = 0) {
+  const catena::model::Model m = catena::test::oscillator(kMass, kOmega);
+  catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  const PetscInt g = system.dof_map().global_dof(0, 0);
+  catena::test::set_global_value(q.get(), g, kX0);
+  Integrator integrator(system, integrator_options);
+  integrator.set_state(0.0, q.get(), v.get(), nullptr);
+  OscillatorRun run;
+  run.recorder = Recorder(MPI_COMM_WORLD, g);
+  run.recorder.stop_after = stop_after;
+  run.report = solvers::run_transient(system, integrator, options, run.recorder);
+  for (size_t i = 0; i < run.recorder.times.size(); ++i)
+    run.worst_sample_error =
+        std::max(run.worst_sample_error,
+                 std::abs(run.recorder.x[i] - kX0 * std::cos(kOmega * run.recorder.times[i])));
+  return run;
+}
+
+solvers::TransientOptions adaptive(double rtol, double atol, solvers::ErrorEstimate e) {
+  solvers::TransientOptions o;
+  o.t_end = 2.0;
+  o.sample_interval = 0.01;
+  o.step.adaptive = true;
+  o.step.dt = 1e-3;
+  o.step.rtol = rtol;
+  o.step.atol = atol;
+  o.step.estimate = e;
+  return o;
+}
+
+}  // namespace
+
+TEST(Transient, AdaptiveErrorFollowsTheTolerance) {
+  catena::test::ensure_petsc();
+  struct Case {
+    const char* name;
+    solvers::ErrorEstimate estimate;
+    int which;  // 0 HHT, 1 Radau IIA 3, 2 Gauss 2
+  };
+  for (const Case& c : {Case{"hht embedded", solvers::ErrorEstimate::embedded, 0},
+                        Case{"radau_iia_3 embedded", solvers::ErrorEstimate::embedded, 1},
+                        Case{"gauss_2 step doubling", solvers::ErrorEstimate::step_doubling, 2}}) {
+    std::vector<double> errors;
+    std::vector<long> steps;
+    for (double tol : {1e-5, 1e-7}) {
+      const solvers::TransientOptions o = adaptive(0.0, tol, c.estimate);
+      OscillatorRun run;
+      if (c.which == 0) {
+        solvers::HhtOptions h;
+        h.alpha = -0.05;
+        run = run_oscillator<solvers::HhtIntegrator>(h, o);
+      } else {
+        solvers::IrkOptions i;
+        i.family = c.which == 1 ? solvers::TableauFamily::radau_iia : solvers::TableauFamily::gauss;
+        i.stages = c.which == 1 ? 3 : 2;
+        i.atol = 1e-12;
+        run = run_oscillator<solvers::IrkIntegrator>(i, o);
+      }
+      EXPECT_FALSE(run.report.interrupted);
+      EXPECT_NEAR(run.report.t_reached, 2.0, 1e-12);
+      // Samples at exactly 0, 0.01, ..., 2.0.
+      ASSERT_EQ(run.recorder.times.size(), 201u);
+      for (size_t k = 0; k < run.recorder.times.size(); ++k)
+        EXPECT_NEAR(run.recorder.times[k], 0.01 * static_cast<double>(k), 1e-12);
+      errors.push_back(run.worst_sample_error);
+      steps.push_back(run.report.steps_accepted);
+      std::printf("  %s, atol %.0e: %ld steps (%ld rejected), worst sampled error %.2e m\n",
+                  c.name, tol, run.report.steps_accepted, run.report.steps_rejected,
+                  run.worst_sample_error);
+    }
+    // A 100× tighter tolerance buys accuracy and costs steps; the global error stays within
+    // the sum of the local tolerances (steps × atol, with a factor 5 for propagation).
+    EXPECT_LT(errors[1], errors[0] / 10);
+    EXPECT_GT(steps[1], steps[0]);
+    EXPECT_LT(errors[1], 5.0 * static_cast<double>(steps[1]) * 1e-7);
+  }
+}
+
+TEST(Transient, StopRequestEndsTheRunBetweenSteps) {
+  catena::test::ensure_petsc();
+  solvers::TransientOptions o;
+  o.t_end = 1.0;
+  o.step.dt = 1e-2;
+  const OscillatorRun run = run_oscillator<solvers::HhtIntegrator>(solvers::HhtOptions{}, o, 7);
+  EXPECT_TRUE(run.report.interrupted);
+  EXPECT_EQ(run.report.steps_accepted, 7);
+  EXPECT_NEAR(run.report.t_reached, 0.07, 1e-12);
+}
+
+TEST(Transient, UnreachableToleranceStopsAtTheMinimumStep) {
+  catena::test::ensure_petsc();
+  solvers::TransientOptions o = adaptive(0.0, 1e-30, solvers::ErrorEstimate::embedded);
+  o.step.dt_min = 1e-6;
+  try {
+    run_oscillator<solvers::HhtIntegrator>(solvers::HhtOptions{}, o);
+    FAIL() << "expected a NumericalError";
+  } catch (const catena::NumericalError& e) {
+    const std::string what = e.what();
+    std::printf("  message: %s\n", what.c_str());
+    EXPECT_NE(what.find("below its minimum at t = "), std::string::npos);
+    EXPECT_NE(what.find("dt_min = 1e-06"), std::string::npos);
+    EXPECT_NE(what.find("error estimate"), std::string::npos);
+  }
+}
+
+TEST(Transient, FixedStepsLandOnTheEndTime) {
+  catena::test::ensure_petsc();
+  solvers::TransientOptions o;
+  o.t_end = 0.105;
+  o.step.dt = 0.01;
+  const OscillatorRun run = run_oscillator<solvers::HhtIntegrator>(solvers::HhtOptions{}, o);
+  EXPECT_EQ(run.report.steps_accepted, 11);
+  EXPECT_NEAR(run.report.t_reached, 0.105, 1e-15);
+  EXPECT_EQ(run.recorder.times.size(), 12u);  // every step, plus the start
+}
