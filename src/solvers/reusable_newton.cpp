@@ -77,11 +77,14 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
       // The reused tangent no longer contracts well: re-evaluate it now.
       self->tangent_valid_ = false;
       if (SNESSetLagJacobian(snes, -2) != 0) return PETSC_ERR_LIB;
-    } else if (theta > s.divergence_contraction) {
-      why << "Newton does not contract (|F| ratio " << theta << " at iteration " << it
-          << ", fresh Jacobian)";
+    } else if (theta > s.divergence_contraction && self->previous_theta_ > s.divergence_contraction) {
+      // Two poor iterations in a row with a fresh tangent (one is tolerated: full Newton's
+      // residual may grow once before it converges).
+      why << "Newton does not contract (|F| ratios " << self->previous_theta_ << ", " << theta
+          << " at iterations " << it - 1 << ", " << it << ", fresh Jacobian)";
       *reason = SNES_DIVERGED_DTOL;
     }
+    self->previous_theta_ = fresh ? theta : 0.0;
     if (*reason == SNES_CONVERGED_ITERATING && it >= s.max_iterations) {
       why << "no convergence in " << s.max_iterations << " Newton iterations (|F| = " << fnorm
           << " N, tolerance " << self->atol_ << " N)";
@@ -96,6 +99,7 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
 NewtonResult ReusableNewton::solve(Vec x, double atol) {
   atol_ = atol;
   previous_norm_ = -1.0;
+  previous_theta_ = 0.0;
   max_contraction_ = 0.0;
   tangent_fresh_ = false;
   failure_.clear();

@@ -11,8 +11,8 @@
 // The owner's Jacobian callback is told which one to redo. In one solve, when the
 // contraction ‖F_{k+1}‖/‖F_k‖ exceeds `refresh_contraction` with a tangent from an earlier
 // solve, the tangent is refreshed at the next iteration; with a fresh tangent, a
-// contraction above `divergence_contraction` or the iteration limit fails the solve (the
-// caller cuts the step). `full_newton` re-evaluates the tangent at every iterate.
+// contraction above `divergence_contraction` at two consecutive iterations, or the
+// iteration limit, fails the solve (the caller cuts the step). `full_newton` re-evaluates the tangent at every iterate.
 //
 // Convergence: ‖F‖₂ ≤ atol (set per solve), or a Newton update below kNewtonStepTolerance
 // relative to the iterate (round-off). Failures are reported, not thrown.
@@ -94,7 +94,7 @@ class ReusableNewton {
   NewtonCounters counters_;
   bool tangent_valid_ = false, matrix_valid_ = false;
   bool tangent_fresh_ = false;  // tangent evaluated during the current solve
-  double atol_ = 0.0, previous_norm_ = 0.0, max_contraction_ = 0.0;
+  double atol_ = 0.0, previous_norm_ = 0.0, previous_theta_ = 0.0, max_contraction_ = 0.0;
   std::string failure_;
 };
 

@@ -1,0 +1,50 @@
+#include "catena/solvers/integrator_factory.hpp"
+
+#include "catena/core/error.hpp"
+#include "catena/solvers/hht_integrator.hpp"
+#include "catena/solvers/irk_integrator.hpp"
+
+namespace catena::solvers {
+
+std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& system,
+                                                const model::IntegratorOptions& o) {
+  if (o.type == "hht") {
+    HhtOptions h;
+    h.alpha = o.alpha;
+    h.rtol = o.newton_rtol;
+    h.atol = o.newton_atol;
+    h.max_newton_iterations = o.max_newton_iterations;
+    h.full_newton = o.newton == "full";
+    return std::make_unique<HhtIntegrator>(system, h);
+  }
+  if (o.type == "petsc")
+    throw InputError({"", 0, "integrator.type"},
+                     "integrator type 'petsc' is not available in this build");
+  IrkOptions i;
+  i.family = parse_tableau_family(o.type);
+  i.stages = o.stages;
+  i.rtol = o.newton_rtol;
+  i.atol = o.newton_atol;
+  i.max_newton_iterations = o.max_newton_iterations;
+  i.full_newton = o.newton == "full";
+  return std::make_unique<IrkIntegrator>(system, i);
+}
+
+StepControl make_step_control(const model::IntegratorOptions& o) {
+  StepControl c;
+  c.dt = o.dt;
+  c.adaptive = o.adaptive;
+  c.rtol = o.rtol;
+  c.atol = o.atol;
+  c.dt_min = o.dt_min;
+  c.dt_max = o.dt_max;
+  if (o.error_estimate == "embedded")
+    c.estimate = ErrorEstimate::embedded;
+  else if (o.error_estimate == "step_doubling")
+    c.estimate = ErrorEstimate::step_doubling;
+  else
+    c.estimate = ErrorEstimate::automatic;
+  return c;
+}
+
+}  // namespace catena::solvers
