@@ -10,22 +10,11 @@
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/solvers/static_solver.hpp"
 #include "commands.hpp"
+#include "run_info.hpp"
 #include "scene_loading.hpp"
 
 namespace catena::app {
 namespace {
-
-// PETSc options in force, without the app's own flags (PETSc also stores those, having
-// seen them on the command line).
-std::string petsc_options_text() {
-  for (const char* own : {"-o", "--output", "--set", "-h", "--help"})
-    PetscOptionsClearValue(nullptr, own);
-  char* text = nullptr;
-  if (PetscOptionsGetAll(nullptr, &text) != 0 || !text) return "";
-  std::string s(text);
-  PetscFree(text);
-  return s;
-}
 
 io::StaticResult collect_result(assembly::SecondOrderSystem& system, Vec q,
                                 const solvers::StaticReport& report) {
@@ -93,6 +82,10 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                 m.nodes.size(), m.elements.size(), mpi_size(comm));
     std::fflush(stdout);
   }
+  if (m.analysis == model::AnalysisType::dynamic) {
+    run_dynamic(comm, cl, m);
+    return;
+  }
   const double start = MPI_Wtime();
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
@@ -103,14 +96,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
 
   const io::StaticResult result = collect_result(system, q.get(), report);
   print_summary(comm, m, result, report, system.dof_map().n_global(), seconds);
-
-  io::RunInfo info;
-  info.code_version = std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")";
-  info.command_line = cl.joined;
-  info.petsc_options = petsc_options_text();
-  info.n_ranks = mpi_size(comm);
-  info.n_dofs = static_cast<int>(system.dof_map().n_global());
-  io::write_static_result(comm, m.output.file, m, result, info);
+  io::write_static_result(comm, m.output.file, m, result, run_info(cl, system));
   if (rank == 0) std::printf("output: %s\n", m.output.file.c_str());
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <mpi.h>
 
+#include "catena/model/model.hpp"
 #include "cli.hpp"
 
 namespace catena::app {
@@ -9,5 +10,14 @@ namespace catena::app {
 void command_check(MPI_Comm comm, const CommandLine& cl);
 // Collective. `catena run`: solve and write the output file.
 void command_run(MPI_Comm comm, const CommandLine& cl);
+// Collective. The dynamic analysis of command_run.
+void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
+
+// Thrown by a dynamic run stopped by SIGTERM/SIGINT after its checkpoint and output were
+// written; main() exits with 128 + signal, as a shell reports a killed program.
+struct RunInterrupted {
+  int signal = 0;
+  double time = 0.0;  // s, simulated time reached
+};
 
 }  // namespace catena::app

@@ -1,11 +1,12 @@
-// catena — parallel static analysis of cable and beam structures (dynamics to follow).
+// catena — parallel static and dynamic analysis of cable and beam structures.
 //
 //   catena check meshes/default.yaml
 //   mpirun -n 2 catena run meshes/default.yaml -o default.h5
 //   mpirun -n 3 catena run meshes/default.yaml --set lines[0].elements=600 -log_view
 //
 // Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
-// (no equilibrium found, singular structure), 1 anything else.
+// (no equilibrium found, singular structure, step size below its minimum), 128 + signal
+// after SIGTERM/SIGINT (checkpoint and output written), 1 anything else.
 #include <cstdio>
 #include <exception>
 
@@ -35,6 +36,11 @@ int main(int argc, char** argv) {
     } catch (const catena::NumericalError& e) {
       if (rank == 0) std::fprintf(stderr, "catena: numerical failure: %s\n", e.what());
       status = 3;
+    } catch (const catena::app::RunInterrupted& e) {
+      if (rank == 0)
+        std::fprintf(stderr, "catena: interrupted by signal %d at t = %g s; output and "
+                     "checkpoint written\n", e.signal, e.time);
+      status = 128 + e.signal;
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "catena: internal error: %s\n", e.what());

@@ -9,13 +9,13 @@ namespace {
 constexpr std::int64_t max_load_steps_cap = 1'000'000;
 constexpr std::int64_t max_newton_iterations_cap = 10'000;
 
-void read_analysis_type(const Field& type) {
-  // Only statics exists so far; dynamics (HHT, IRK) will add types here.
-  static const std::vector<std::string> accepted{"static"};
+AnalysisType read_analysis_type(const Field& type) {
+  static const std::vector<std::string> accepted{"static", "dynamic"};
   const std::string name = type.text_or("static");
-  if (name != "static")
-    type.fail("unknown analysis type '" + name + "';" + did_you_mean(name, accepted) +
-              " accepted: static");
+  if (name == "static") return AnalysisType::static_equilibrium;
+  if (name == "dynamic") return AnalysisType::dynamic;
+  type.fail("unknown analysis type '" + name + "';" + did_you_mean(name, accepted) +
+            " accepted: static, dynamic");
 }
 
 void read_load_steps(const Field& steps, StaticOptions& options) {
@@ -51,20 +51,27 @@ void read_newton(const Field& newton, StaticOptions& options) {
 
 }  // namespace
 
-void read_analysis(const Field& analysis, StaticOptions& options) {
-  if (!analysis.present()) return;
-  analysis.expect_map("analysis settings {type, load_steps, newton}");
-  analysis.check_keys({"type", "load_steps", "newton"});
-  read_analysis_type(analysis.child("type"));
+AnalysisType read_analysis(const Field& analysis, StaticOptions& options) {
+  if (!analysis.present()) return AnalysisType::static_equilibrium;
+  analysis.expect_map("analysis settings {type, duration, initial, load_steps, newton}");
+  analysis.check_keys({"type", "duration", "initial", "load_steps", "newton"});
+  const AnalysisType type = read_analysis_type(analysis.child("type"));
   read_load_steps(analysis.child("load_steps"), options);
   read_newton(analysis.child("newton"), options);
+  return type;
 }
 
 void read_output(const Field& output, OutputOptions& options) {
   if (!output.present()) return;
-  output.expect_map("output settings {file}");
-  output.check_keys({"file"});
+  output.expect_map("output settings {file, interval, flush_wall_seconds, checkpoint_wall_seconds}");
+  output.check_keys({"file", "interval", "flush_wall_seconds", "checkpoint_wall_seconds"});
   options.file = output.child("file").text_or(options.file);
+  options.interval = output.child("interval").real_or(options.interval, RealRange::non_negative("s"));
+  options.flush_wall_seconds =
+      output.child("flush_wall_seconds").real_or(options.flush_wall_seconds, RealRange::positive("s"));
+  options.checkpoint_wall_seconds = output.child("checkpoint_wall_seconds")
+                                        .real_or(options.checkpoint_wall_seconds,
+                                                 RealRange::non_negative("s"));
 }
 
 }  // namespace catena::model::detail

@@ -6,8 +6,9 @@
 
 namespace catena::model::detail {
 
-// Not collective. Reads `analysis` into `options` (absent keys keep their defaults).
-void read_analysis(const Field& analysis, StaticOptions& options);
+// Not collective. Reads `analysis`'s type and static settings into `options` (absent keys
+// keep their defaults); the dynamic keys are read by read_dynamics (dynamics_reader.hpp).
+AnalysisType read_analysis(const Field& analysis, StaticOptions& options);
 
 // Not collective. Reads `output` into `options`.
 void read_output(const Field& output, OutputOptions& options);

@@ -17,6 +17,7 @@
 #include "catena/model/node_dofs.hpp"
 #include "element_reader.hpp"
 #include "free_body_check.hpp"
+#include "dynamics_reader.hpp"
 #include "line_generator.hpp"
 #include "nodal_frames.hpp"
 #include "node_reader.hpp"
@@ -32,7 +33,7 @@ using detail::Field;
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{"name",  "gravity",  "sections", "nodes",
                                              "lines", "elements", "supports", "elastic_supports",
-                                             "loads", "masses",   "analysis", "output"};
+                                             "loads", "masses",   "analysis", "integrator", "output"};
   return keys;
 }
 
@@ -87,8 +88,9 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
-  detail::read_analysis(scene.child("analysis"), model.static_options);
+  model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);
   detail::read_output(scene.child("output"), model.output);
+  detail::read_dynamics(scene, model);
   detail::check_no_free_body(build);
 }
 

@@ -1,5 +1,6 @@
 #include "catena/solvers/block_matrix.hpp"
 
+#include <array>
 #include <memory>
 #include <stdexcept>
 
@@ -16,7 +17,8 @@ BlockCoefficients::BlockCoefficients(int blocks)
 
 namespace {
 
-// Owned rows of an MPIAIJ matrix, restored on scope exit.
+// Owned rows of an MPIAIJ matrix, restored on scope exit. MPIAIJ allows one active row
+// at a time: copy what is needed (CopiedRow) before viewing the next.
 class RowView {
  public:
   RowView(Mat A, PetscInt row) : A_(A), row_(row) {
@@ -32,6 +34,16 @@ class RowView {
  private:
   Mat A_;
   PetscInt row_;
+};
+
+struct CopiedRow {
+  std::vector<PetscInt> cols;
+  std::vector<PetscScalar> values;
+  void read(Mat A, PetscInt row) {
+    const RowView view(A, row);
+    cols.assign(view.cols, view.cols + view.n);
+    values.assign(view.values, view.values + view.n);
+  }
 };
 
 }  // namespace
@@ -83,6 +95,7 @@ void BlockMatrix::assemble_rows(const std::vector<Mat>& K_rows, const std::vecto
   };
   std::vector<PetscInt> cols;
   std::vector<PetscScalar> values;
+  std::array<CopiedRow, 4> rows;  // K, C, M, pattern
   for (PetscInt g = first_; g < first_ + n_owned_; ++g) {
     for (int i = 0; i < s; ++i) {
       const bool use_K = row_uses(coefficients.k, i), use_C = row_uses(coefficients.c, i),
@@ -91,15 +104,17 @@ void BlockMatrix::assemble_rows(const std::vector<Mat>& K_rows, const std::vecto
       if ((use_K && !Ki) || (use_C && !Ci) || (use_M && !M))
         throw std::invalid_argument("BlockMatrix: a matrix with nonzero coefficients is missing");
       Mat shape = Ki ? Ki : (Ci ? Ci : M);
-      const RowView pattern_row(shape, g);
-      std::unique_ptr<RowView> kr, cr, mr;
-      if (use_K) kr = std::make_unique<RowView>(Ki, g);
-      if (use_C) cr = std::make_unique<RowView>(Ci, g);
-      if (use_M) mr = std::make_unique<RowView>(M, g);
-      for (const RowView* r : {kr.get(), cr.get(), mr.get()})
-        if (r && r->n != pattern_row.n)
+      CopiedRow& pattern_row = rows[3];
+      pattern_row.read(shape, g);
+      if (use_K) rows[0].read(Ki, g);
+      if (use_C) rows[1].read(Ci, g);
+      if (use_M) rows[2].read(M, g);
+      for (int r = 0; r < 3; ++r)
+        if (((r == 0 && use_K) || (r == 1 && use_C) || (r == 2 && use_M)) &&
+            rows[static_cast<size_t>(r)].cols != pattern_row.cols)
           throw std::logic_error("BlockMatrix: K, C and M must share one sparsity pattern");
-      const PetscInt n = pattern_row.n;
+      const CopiedRow *kr = &rows[0], *cr = &rows[1], *mr = &rows[2];
+      const auto n = static_cast<PetscInt>(pattern_row.cols.size());
       cols.resize(static_cast<size_t>(n * s));
       values.resize(static_cast<size_t>(n * s));
       for (PetscInt k = 0; k < n; ++k) {

@@ -1,0 +1,33 @@
+#include "initial_state.hpp"
+
+#include "catena/assembly/petsc_call.hpp"
+
+namespace catena::app {
+
+void apply_initial_conditions(const assembly::SecondOrderSystem& system, Vec q, Vec v) {
+  const model::InitialConditions& ic = system.model().dynamic_options.initial;
+  const assembly::DofMap& dofs = system.dof_map();
+  PetscInt lo = 0, hi = 0;
+  CATENA_PETSC(VecGetOwnershipRange(q, &lo, &hi));
+  auto add = [&](Vec x, PetscInt g, double value) {
+    if (g >= lo && g < hi && value != 0.0) CATENA_PETSC(VecSetValue(x, g, value, ADD_VALUES));
+  };
+  for (const model::InitialNodeOffset& o : ic.offsets) {
+    const int n_dofs = dofs.node_dofs(o.node);
+    for (int d = 0; d < 3; ++d) {
+      add(q, dofs.global_dof(o.node, d), o.displacement[d]);
+      if (n_dofs >= 6) add(q, dofs.global_dof(o.node, 3 + d), o.slope[d]);
+    }
+  }
+  CATENA_PETSC(VecAssemblyBegin(q));
+  CATENA_PETSC(VecAssemblyEnd(q));
+  CATENA_PETSC(VecSet(v, 0.0));
+  if (ic.velocity != Vec3::Zero()) {
+    for (int node : dofs.owned_nodes())
+      for (int d = 0; d < 3; ++d) add(v, dofs.global_dof(node, d), ic.velocity[d]);
+  }
+  CATENA_PETSC(VecAssemblyBegin(v));
+  CATENA_PETSC(VecAssemblyEnd(v));
+}
+
+}  // namespace catena::app

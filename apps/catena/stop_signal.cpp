@@ -1,0 +1,34 @@
+#include "stop_signal.hpp"
+
+#include <csignal>
+#include <cstdlib>
+
+namespace catena::app {
+namespace {
+
+volatile std::sig_atomic_t received = 0;
+using Handler = void (*)(int);
+Handler previous_term = SIG_DFL, previous_int = SIG_DFL;
+
+extern "C" void on_stop_signal(int signal) {
+  if (received != 0) std::_Exit(128 + signal);  // asked twice: stop now
+  received = signal;
+}
+
+}  // namespace
+
+StopSignal::StopSignal() {
+  received = 0;
+  previous_term = std::signal(SIGTERM, on_stop_signal);
+  previous_int = std::signal(SIGINT, on_stop_signal);
+}
+
+StopSignal::~StopSignal() {
+  std::signal(SIGTERM, previous_term);
+  std::signal(SIGINT, previous_int);
+}
+
+bool StopSignal::requested() { return received != 0; }
+int StopSignal::signal_number() { return received; }
+
+}  // namespace catena::app

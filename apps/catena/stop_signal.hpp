@@ -1,0 +1,19 @@
+#pragma once
+// SIGTERM and SIGINT (what batch schedulers and Ctrl-C send) during a dynamic run: the
+// handler only sets a flag; the step-control driver polls it between steps, all ranks stop
+// at the same step, and the run ends with a checkpoint and a complete, readable output
+// file whose status says "interrupted". A second signal exits at once.
+namespace catena::app {
+
+// Installs the handlers for the lifetime of the object and restores the previous ones.
+class StopSignal {
+ public:
+  StopSignal();
+  ~StopSignal();
+  StopSignal(const StopSignal&) = delete;
+  StopSignal& operator=(const StopSignal&) = delete;
+  static bool requested();
+  static int signal_number();  // the signal received (0: none)
+};
+
+}  // namespace catena::app

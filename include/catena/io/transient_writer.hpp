@@ -1,0 +1,61 @@
+#pragma once
+// Time-series HDF5 output of a dynamic run, written in parallel (collective MPI-IO) while
+// the run goes on. Layout (docs/output.md): /mesh (node ids, reference positions, element
+// nodes), /time, /samples/{positions, velocities, slopes} (n_samples × n_nodes × 3),
+// /samples/axial_force (n_samples × n_elements), /steps/* (one row per accepted step) and
+// root attributes (scene text, run facts, `status`).
+//
+// The file is written in place (not atomically) so that a long run's results up to the
+// last flush() are readable after a crash: flush() writes the buffered step rows and
+// H5Fflush()es, so a reader sees a consistent file up to that point. close() records
+// `status` ("complete", "interrupted" or "failed: <why>") and the run statistics. A file
+// whose `status` is still "running" ended without close(): data up to the last flush.
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "catena/io/static_result.hpp"
+#include "catena/model/model.hpp"
+
+namespace catena::io {
+
+struct StepRecord {
+  double time = 0.0, dt = 0.0;
+  int newton_iterations = 0;
+  double error = -1.0;
+  int rejected = 0;
+};
+
+class TransientWriter {
+ public:
+  // Collective. Creates `path` (truncating it) and writes the mesh and run facts.
+  // owned_nodes/owned_elements: this rank's rows, ascending; every node/element is owned
+  // by exactly one rank.
+  TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
+                  const RunInfo& info, std::vector<int> owned_nodes,
+                  std::vector<int> owned_elements);
+  ~TransientWriter();
+  TransientWriter(const TransientWriter&) = delete;
+  TransientWriter& operator=(const TransientWriter&) = delete;
+
+  // Collective. One sample: this rank's owned rows (3 values per node, 1 per element).
+  void append_sample(double t, const std::vector<double>& positions,
+                     const std::vector<double>& velocities, const std::vector<double>& slopes,
+                     const std::vector<double>& axial_force);
+  // Not collective (identical on every rank): buffered until flush().
+  void append_step(const StepRecord& record);
+  // Collective. Writes buffered rows and flushes the file.
+  void flush();
+  // Collective. Flushes, records status and statistics, closes the file.
+  void close(const std::string& status,
+             const std::vector<std::pair<std::string, double>>& statistics);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace catena::io

@@ -1,0 +1,250 @@
+#include "catena/io/transient_writer.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "catena/core/error.hpp"
+#include "hdf5_attributes.hpp"
+#include "hdf5_error.hpp"
+#include "hdf5_handles.hpp"
+#include "hdf5_parallel_write.hpp"
+#include "row_redistribution.hpp"
+
+namespace catena::io {
+namespace {
+
+// An extendible dataset: rows appended along the first dimension.
+class Series {
+ public:
+  Series() = default;
+  // Collective. shape: the per-row shape (empty: scalar rows).
+  Series(hid_t file, const std::string& file_path, const char* name, std::vector<hsize_t> shape,
+         hid_t type, const char* unit)
+      : name_(name), path_(file_path), shape_(std::move(shape)), type_(type) {
+    std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
+    hsize_t row = 1;
+    for (hsize_t n : shape_) {
+      dims.push_back(n);
+      max.push_back(n);
+      chunk.push_back(std::max<hsize_t>(n, 1));
+      row *= std::max<hsize_t>(n, 1);
+    }
+    // About 64 KiB chunks along time (at least one row), so appends touch few chunks.
+    chunk[0] = std::max<hsize_t>(1, (64 * 1024 / 8) / row);
+    const DataspaceHandle space(checked_hdf5_id(
+        H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), "H5Screate_simple",
+        path_, name_));
+    const PropertyListHandle create(
+        checked_hdf5_id(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate", path_, name_));
+    check_hdf5_status(H5Pset_chunk(create.get(), static_cast<int>(chunk.size()), chunk.data()),
+                      "H5Pset_chunk", path_, name_);
+    const PropertyListHandle links(
+        checked_hdf5_id(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path_, name_));
+    check_hdf5_status(H5Pset_create_intermediate_group(links.get(), 1),
+                      "H5Pset_create_intermediate_group", path_, name_);
+    dataset_ = DatasetHandle(checked_hdf5_id(
+        H5Dcreate2(file, name, type, space.get(), links.get(), create.get(), H5P_DEFAULT),
+        "H5Dcreate2", path_, name_));
+    if (unit) write_string_attribute({dataset_.get(), path_}, "unit", unit);
+  }
+
+  // Collective. Appends n_rows rows; this rank writes rows [first, first + count) of them
+  // (a block along the second dimension for node/element-distributed data: `block`).
+  void append(hid_t transfer, hsize_t n_rows, const RowBlock& block, const void* data) {
+    const hsize_t old = rows_;
+    rows_ += n_rows;
+    std::vector<hsize_t> dims{rows_};
+    for (hsize_t n : shape_) dims.push_back(n);
+    check_hdf5_status(H5Dset_extent(dataset_.get(), dims.data()), "H5Dset_extent", path_, name_);
+    const DataspaceHandle file_space(
+        checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
+    std::vector<hsize_t> start(dims.size(), 0), count(dims);
+    start[0] = old;
+    count[0] = n_rows;
+    if (!shape_.empty()) {
+      start[1] = static_cast<hsize_t>(block.begin);
+      count[1] = static_cast<hsize_t>(block.count);
+    } else if (block.count == 0) {
+      count[0] = 0;
+    }
+    hsize_t n_values = 1;
+    for (hsize_t c : count) n_values *= c;
+    const hsize_t memory_size = std::max<hsize_t>(n_values, 1);  // 1: a dummy when empty
+    const DataspaceHandle memory(checked_hdf5_id(H5Screate_simple(1, &memory_size, nullptr),
+                                                 "H5Screate_simple", path_, name_));
+    if (n_values > 0) {
+      check_hdf5_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(),
+                                            nullptr, count.data(), nullptr),
+                        "H5Sselect_hyperslab", path_, name_);
+    } else {
+      check_hdf5_status(H5Sselect_none(file_space.get()), "H5Sselect_none", path_, name_);
+      check_hdf5_status(H5Sselect_none(memory.get()), "H5Sselect_none", path_, name_);
+    }
+    check_hdf5_status(
+        H5Dwrite(dataset_.get(), type_ == H5T_STD_I32LE ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE,
+                 memory.get(), file_space.get(), transfer, data),
+        "H5Dwrite", path_, name_);
+  }
+  hsize_t rows() const { return rows_; }
+  void reset() { dataset_ = DatasetHandle(); }
+
+ private:
+  std::string name_, path_;
+  std::vector<hsize_t> shape_;
+  hid_t type_ = H5T_IEEE_F64LE;
+  hsize_t rows_ = 0;
+  DatasetHandle dataset_;
+};
+
+}  // namespace
+
+struct TransientWriter::Impl {
+  MPI_Comm comm;
+  std::string path;
+  int rank = 0;
+  ParallelHdf5File file;
+  RowRedistribution nodes, elements;
+  Series time, positions, velocities, slopes, axial;
+  Series step_time, step_dt, step_iterations, step_error, step_rejected;
+  std::vector<StepRecord> pending_steps;
+  bool closed = false;
+
+  Impl(MPI_Comm c, const std::string& p, const model::Model& m, const std::vector<int>& own_nodes,
+       const std::vector<int>& own_elements)
+      : comm(c),
+        path(p),
+        file(c, p),
+        nodes(c, static_cast<std::int64_t>(m.nodes.size()), own_nodes, "owned_nodes"),
+        elements(c, static_cast<std::int64_t>(m.elements.size()), own_elements, "owned_elements") {
+    MPI_Comm_rank(c, &rank);
+  }
+};
+
+TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
+                                 const RunInfo& info, std::vector<int> owned_nodes,
+                                 std::vector<int> owned_elements)
+    : impl_(std::make_unique<Impl>(comm, path, model, owned_nodes, owned_elements)) {
+  Impl& s = *impl_;
+  const hid_t f = s.file.id();
+  const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
+  const auto n_elements = static_cast<hsize_t>(model.elements.size());
+  // Mesh: every rank holds the model and writes its balanced block.
+  const RowBlock& nb = s.nodes.block();
+  const RowBlock& eb = s.elements.block();
+  std::vector<std::int64_t> ids;
+  std::vector<double> reference;
+  for (std::int64_t k = 0; k < nb.count; ++k) {
+    const model::Node& node = model.nodes[static_cast<size_t>(nb.begin + k)];
+    ids.push_back(node.id);
+    reference.insert(reference.end(), {node.position.x(), node.position.y(), node.position.z()});
+  }
+  create_group(s.file, "/mesh");
+  write_block_dataset<std::int64_t>(s.file, {"/mesh/node_ids", static_cast<std::int64_t>(n_nodes), 1},
+                                    nb, ids);
+  write_block_dataset<double>(
+      s.file, {"/mesh/node_positions", static_cast<std::int64_t>(n_nodes), 3, "m"}, nb, reference);
+  std::vector<std::int64_t> element_ids, element_nodes;
+  for (std::int64_t k = 0; k < eb.count; ++k) {
+    const model::ElementDesc& e = model.elements[static_cast<size_t>(eb.begin + k)];
+    element_ids.push_back(e.id);
+    element_nodes.push_back(e.nodes.front());
+    element_nodes.push_back(e.nodes.back());
+  }
+  write_block_dataset<std::int64_t>(
+      s.file, {"/mesh/element_ids", static_cast<std::int64_t>(n_elements), 1}, eb, element_ids);
+  write_block_dataset<std::int64_t>(
+      s.file, {"/mesh/element_nodes", static_cast<std::int64_t>(n_elements), 2}, eb, element_nodes);
+
+  const std::string& p = s.path;
+  s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, "s");
+  s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
+  s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
+  s.slopes = Series(f, p, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, "1");
+  s.axial = Series(f, p, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, "N");
+  s.step_time = Series(f, p, "/steps/time", {}, H5T_IEEE_F64LE, "s");
+  s.step_dt = Series(f, p, "/steps/dt", {}, H5T_IEEE_F64LE, "s");
+  s.step_iterations = Series(f, p, "/steps/newton_iterations", {}, H5T_STD_I32LE, nullptr);
+  s.step_error = Series(f, p, "/steps/error", {}, H5T_IEEE_F64LE, "1");
+  s.step_rejected = Series(f, p, "/steps/rejected", {}, H5T_STD_I32LE, nullptr);
+
+  const AttributeTarget root{f, p};
+  write_string_attribute(root, "scene", model.source_text);
+  write_string_attribute(root, "scene_file", model.source_file);
+  write_string_attribute(root, "code_version", info.code_version);
+  write_string_attribute(root, "command_line", info.command_line);
+  write_string_attribute(root, "petsc_options", info.petsc_options);
+  write_int64_attribute(root, "n_ranks", info.n_ranks);
+  write_int64_attribute(root, "n_dofs", info.n_dofs);
+  write_string_attribute(root, "analysis", "dynamic");
+  write_string_attribute(root, "status", "running");
+  flush();
+}
+
+TransientWriter::~TransientWriter() = default;  // handles close locally (see header)
+
+void TransientWriter::append_sample(double t, const std::vector<double>& positions,
+                                    const std::vector<double>& velocities,
+                                    const std::vector<double>& slopes,
+                                    const std::vector<double>& axial_force) {
+  Impl& s = *impl_;
+  const hid_t x = s.file.collective_transfer();
+  const RowBlock root_row{0, s.rank == 0 ? 1 : 0};
+  s.time.append(x, 1, root_row, &t);
+  const std::vector<double> p = s.nodes.to_block(positions, 3);
+  s.positions.append(x, 1, s.nodes.block(), p.data());
+  const std::vector<double> v = s.nodes.to_block(velocities, 3);
+  s.velocities.append(x, 1, s.nodes.block(), v.data());
+  const std::vector<double> d = s.nodes.to_block(slopes, 3);
+  s.slopes.append(x, 1, s.nodes.block(), d.data());
+  const std::vector<double> n = s.elements.to_block(axial_force, 1);
+  s.axial.append(x, 1, s.elements.block(), n.data());
+}
+
+void TransientWriter::append_step(const StepRecord& record) {
+  impl_->pending_steps.push_back(record);
+}
+
+void TransientWriter::flush() {
+  Impl& s = *impl_;
+  const hid_t x = s.file.collective_transfer();
+  const auto n = static_cast<hsize_t>(s.pending_steps.size());
+  if (n > 0) {
+    std::vector<double> t, dt, error;
+    std::vector<std::int32_t> iterations, rejected;
+    for (const StepRecord& r : s.pending_steps) {
+      t.push_back(r.time);
+      dt.push_back(r.dt);
+      error.push_back(r.error);
+      iterations.push_back(r.newton_iterations);
+      rejected.push_back(r.rejected);
+    }
+    const RowBlock rows{0, s.rank == 0 ? static_cast<std::int64_t>(n) : 0};
+    s.step_time.append(x, n, rows, t.data());
+    s.step_dt.append(x, n, rows, dt.data());
+    s.step_iterations.append(x, n, rows, iterations.data());
+    s.step_error.append(x, n, rows, error.data());
+    s.step_rejected.append(x, n, rows, rejected.data());
+    s.pending_steps.clear();
+  }
+  check_hdf5_status(H5Fflush(s.file.id(), H5F_SCOPE_GLOBAL), "H5Fflush", s.path, "/");
+}
+
+void TransientWriter::close(const std::string& status,
+                            const std::vector<std::pair<std::string, double>>& statistics) {
+  Impl& s = *impl_;
+  if (s.closed) return;
+  flush();
+  const AttributeTarget root{s.file.id(), s.path};
+  check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
+  write_string_attribute(root, "status", status);
+  for (const auto& [name, value] : statistics) write_double_attribute(root, name.c_str(), value);
+  for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial, &s.step_time,
+                         &s.step_dt, &s.step_iterations, &s.step_error, &s.step_rejected})
+    series->reset();
+  s.file.close();
+  s.closed = true;
+}
+
+}  // namespace catena::io

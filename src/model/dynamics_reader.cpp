@@ -1,0 +1,198 @@
+#include "dynamics_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "did_you_mean.hpp"
+#include "number_format.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+// Stage counts per tableau family, as make_tableau accepts them
+// (include/catena/solvers/butcher_tableau.hpp; the model layer cannot call the solvers).
+struct Family {
+  const char* name;
+  int min_stages, max_stages;
+};
+constexpr Family kFamilies[] = {{"gauss", 1, 5},        {"radau_iia", 1, 5},
+                                {"lobatto_iiia", 2, 5}, {"lobatto_iiic", 2, 5},
+                                {"sdirk", 3, 3}};
+
+const Family* irk_family(const std::string& type) {
+  for (const Family& f : kFamilies)
+    if (type == f.name) return &f;
+  return nullptr;
+}
+
+void fail_if_present(const Field& f, const std::string& why) {
+  if (f.present()) f.fail(why);
+}
+
+void read_integrator(const Field& in, IntegratorOptions& o) {
+  if (!in.present()) return;
+  in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
+  in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
+                 "error_estimate", "newton", "newton_rtol", "newton_atol",
+                 "max_newton_iterations"});
+  static const std::vector<std::string> types{"hht",          "gauss",        "radau",
+                                              "radau_iia",    "lobatto_iiia", "lobatto_iiic",
+                                              "sdirk",        "petsc"};
+  const Field type = in.child("type");
+  o.type = type.text_or(o.type);
+  if (o.type == "radau") o.type = "radau_iia";
+  if (std::find(types.begin(), types.end(), o.type) == types.end())
+    type.fail("unknown integrator type '" + o.type + "';" + did_you_mean(o.type, types) +
+              " accepted: hht, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, sdirk, "
+              "petsc");
+  const Family* family = irk_family(o.type);
+  const Field stages = in.child("stages");
+  if (family) {
+    o.stages = static_cast<int>(stages.integer_or(
+        o.type == "sdirk" ? 3 : o.stages, IntRange::between(family->min_stages, family->max_stages)));
+  } else {
+    fail_if_present(stages, "'stages' applies to the implicit Runge-Kutta types (gauss, radau, "
+                            "lobatto_iiia, lobatto_iiic, sdirk), not to " + o.type);
+  }
+  const Field alpha = in.child("alpha");
+  if (o.type == "hht")
+    o.alpha = alpha.real_or(o.alpha, RealRange::between(-1.0 / 3.0, true, 0.0, true, ""));
+  else
+    fail_if_present(alpha, "'alpha' applies to integrator type hht only");
+  o.dt = in.child("dt").real_or(o.dt, RealRange::positive("s"));
+  o.adaptive = in.child("adaptive").boolean_or(o.adaptive);
+  const char* only_adaptive = " only applies with adaptive: true";
+  for (const char* key : {"rtol", "atol", "dt_min", "dt_max", "error_estimate"})
+    if (!o.adaptive) fail_if_present(in.child(key), std::string("'") + key + "'" + only_adaptive);
+  o.rtol = in.child("rtol").real_or(o.rtol, RealRange::between(0.0, false, 1.0, false, ""));
+  o.atol = in.child("atol").real_or(o.atol, RealRange::positive("m"));
+  const Field dt_min = in.child("dt_min"), dt_max = in.child("dt_max");
+  o.dt_min = dt_min.real_or(o.dt_min, RealRange::positive("s"));
+  o.dt_max = dt_max.real_or(o.dt_max, RealRange::non_negative("s"));
+  if (o.adaptive && o.dt_min >= o.dt)
+    (dt_min.present() ? dt_min : in.child("dt"))
+        .fail("dt_min = " + format_number(o.dt_min) + " s must be below the first step dt = " +
+              format_number(o.dt) + " s");
+  if (o.dt_max > 0.0 && o.dt_max < o.dt)
+    dt_max.fail("dt_max = " + format_number(o.dt_max) + " s is below the first step dt = " +
+                format_number(o.dt) + " s; expected 0 (no limit) or >= dt");
+  const Field estimate = in.child("error_estimate");
+  o.error_estimate = estimate.text_or(o.error_estimate);
+  static const std::vector<std::string> estimates{"auto", "embedded", "step_doubling"};
+  if (std::find(estimates.begin(), estimates.end(), o.error_estimate) == estimates.end())
+    estimate.fail("unknown error estimate '" + o.error_estimate + "';" +
+                  did_you_mean(o.error_estimate, estimates) +
+                  " accepted: auto, embedded, step_doubling");
+  const bool has_embedded = o.type == "hht" || (o.type == "radau_iia" && o.stages % 2 == 1);
+  if (o.error_estimate == "embedded" && !has_embedded)
+    estimate.fail(o.type + (family ? " with " + std::to_string(o.stages) + " stages" : "") +
+                  " has no embedded error estimate (hht and radau with 1, 3 or 5 stages have); "
+                  "use step_doubling or auto");
+  const Field newton = in.child("newton");
+  if (family) {
+    o.newton = newton.text_or(o.newton);
+    if (o.newton != "simplified" && o.newton != "full")
+      newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
+  } else if (o.type == "petsc") {
+    fail_if_present(newton, "'newton' applies to hht and the implicit Runge-Kutta types");
+  } else {
+    o.newton = newton.text_or(o.newton);
+    if (o.newton != "simplified" && o.newton != "full")
+      newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
+  }
+  o.newton_rtol = in.child("newton_rtol")
+                      .real_or(o.newton_rtol, RealRange::between(0.0, false, 1e-3, true, ""));
+  o.newton_atol = in.child("newton_atol").real_or(o.newton_atol, RealRange::positive("N"));
+  o.max_newton_iterations = static_cast<int>(
+      in.child("max_newton_iterations").integer_or(o.max_newton_iterations, IntRange::between(1, 1000)));
+}
+
+// Nodes of the line named `name` from its `from` to its `to` node (empty if none).
+std::vector<int> line_nodes(const Model& model, const std::string& name) {
+  std::vector<int> nodes;
+  for (const ElementDesc& e : model.elements) {
+    if (e.set != name) continue;
+    if (nodes.empty()) nodes.push_back(e.nodes.front());
+    nodes.push_back(e.nodes.back());
+  }
+  return nodes;
+}
+
+std::vector<std::string> line_names(const Model& model) {
+  std::vector<std::string> names;
+  for (const ElementDesc& e : model.elements)
+    if (!e.set.empty() && (names.empty() || names.back() != e.set)) names.push_back(e.set);
+  return names;
+}
+
+void read_displacement(const Field& item, const Model& model,
+                       std::map<int, InitialNodeOffset>& offsets) {
+  item.expect_map("an initial displacement {line, shape, half_waves, amplitude}");
+  item.check_keys({"line", "shape", "half_waves", "amplitude"});
+  const Field line = item.child("line");
+  const std::string name = line.text();
+  const std::vector<int> nodes = line_nodes(model, name);
+  if (nodes.size() < 2) {
+    const std::vector<std::string> names = line_names(model);
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    line.fail("no line named '" + name + "';" + did_you_mean(name, names) +
+              " lines: " + (list.empty() ? "(none)" : list));
+  }
+  const Field shape = item.child("shape");
+  const std::string shape_name = shape.text_or("sine");
+  if (shape_name != "sine") shape.fail("unknown shape '" + shape_name + "'; accepted: sine");
+  const int n = static_cast<int>(item.child("half_waves").integer_or(1, IntRange::between(1, 1000)));
+  const Vec3 amplitude = item.child("amplitude").vec3(RealRange::any("m"));
+  const Vec3 a = model.nodes[nodes.front()].position, b = model.nodes[nodes.back()].position;
+  const double length = (b - a).norm();
+  const double k = n * std::numbers::pi / length;
+  for (int node : nodes) {
+    const double s = (model.nodes[node].position - a).norm();
+    InitialNodeOffset& o = offsets[node];
+    o.node = node;
+    o.displacement += amplitude * std::sin(k * s);
+    o.slope += amplitude * (k * std::cos(k * s));
+  }
+}
+
+void read_initial(const Field& initial, Model& model) {
+  InitialConditions& ic = model.dynamic_options.initial;
+  if (!initial.present()) return;
+  initial.expect_map("initial conditions {from, velocity, displacement}");
+  initial.check_keys({"from", "velocity", "displacement"});
+  const Field from = initial.child("from");
+  const std::string source = from.text_or("static");
+  if (source != "static" && source != "reference")
+    from.fail("unknown initial state '" + source + "'; accepted: static (the equilibrium under "
+              "the scene's loads), reference (the mesh, unstressed)");
+  ic.from_static = source == "static";
+  ic.velocity = initial.child("velocity").vec3_or(ic.velocity, RealRange::any("m/s"));
+  std::map<int, InitialNodeOffset> offsets;
+  for (const Field& item : initial.child("displacement").items())
+    read_displacement(item, model, offsets);
+  for (auto& [node, offset] : offsets) ic.offsets.push_back(offset);
+}
+
+}  // namespace
+
+void read_dynamics(const Field& scene, Model& model) {
+  const Field analysis = scene.child("analysis");
+  const Field output = scene.child("output");
+  if (model.analysis != AnalysisType::dynamic) {
+    const std::string why = " applies to analysis.type: dynamic only";
+    fail_if_present(analysis.child("duration"), "'duration'" + why);
+    fail_if_present(analysis.child("initial"), "'initial'" + why);
+    fail_if_present(scene.child("integrator"), "integrator settings apply to analysis.type: dynamic");
+    for (const char* key : {"interval", "flush_wall_seconds", "checkpoint_wall_seconds"})
+      fail_if_present(output.child(key), std::string("'") + key + "'" + why);
+    return;
+  }
+  model.dynamic_options.duration = analysis.child("duration").real(RealRange::positive("s"));
+  read_initial(analysis.child("initial"), model);
+  read_integrator(scene.child("integrator"), model.dynamic_options.integrator);
+}
+
+}  // namespace catena::model::detail
