@@ -66,10 +66,7 @@ double error(const std::array<double, 2>& a) {
   return std::hypot(a[0] - reference()[0], a[1] - reference()[1]);
 }
 
-struct Method {
-  solvers::TableauFamily family;
-  int stages;
-};
+using Method = catena::test::TableauChoice;
 
 class PendulumOrder : public testing::TestWithParam<Method> {};
 
@@ -77,8 +74,7 @@ TEST_P(PendulumOrder, ConvergesAtTheTableauOrder) {
   catena::test::ensure_petsc();
   const Method method = GetParam();
   const int p = solvers::make_tableau(method.family, method.stages).order;
-  const std::string name =
-      std::string(solvers::tableau_family_name(method.family)) + "_" + std::to_string(method.stages);
+  const std::string name = catena::test::tableau_label(method);
   // The asymptotic range starts near h = 2e-3 s (n = 128): h·ω of the fastest axial mode
   // (≈150 rad/s) must be well below one. The pair n = 128, 256 is judged.
   const double coarse = error(irk_tip(method.family, method.stages, 128));
@@ -98,20 +94,9 @@ TEST_P(PendulumOrder, ConvergesAtTheTableauOrder) {
   EXPECT_NEAR(order, p, 0.3);
 }
 
-std::vector<Method> methods() {
-  std::vector<Method> all;
-  for (int s = 1; s <= 5; ++s) all.push_back({solvers::TableauFamily::gauss, s});
-  for (int s = 1; s <= 5; ++s) all.push_back({solvers::TableauFamily::radau_iia, s});
-  for (int s = 2; s <= 5; ++s) all.push_back({solvers::TableauFamily::lobatto_iiia, s});
-  for (int s = 2; s <= 5; ++s) all.push_back({solvers::TableauFamily::lobatto_iiic, s});
-  all.push_back({solvers::TableauFamily::sdirk, 3});
-  return all;
-}
-
-INSTANTIATE_TEST_SUITE_P(Catena, PendulumOrder, testing::ValuesIn(methods()),
+INSTANTIATE_TEST_SUITE_P(Catena, PendulumOrder, testing::ValuesIn(catena::test::every_tableau()),
                          [](const testing::TestParamInfo<Method>& param) {
-                           return std::string(solvers::tableau_family_name(param.param.family)) +
-                                  "_" + std::to_string(param.param.stages);
+                           return catena::test::tableau_label(param.param);
                          });
 
 }  // namespace

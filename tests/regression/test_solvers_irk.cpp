@@ -24,24 +24,10 @@ constexpr double kMass = 2.0;
 constexpr double kOmega = 2.0 * std::numbers::pi;  // period 1 s
 constexpr double kX0 = 0.1;                          // m
 
-struct Method {
-  solvers::TableauFamily family;
-  int stages;
-};
-
-std::vector<Method> every_method() {
-  std::vector<Method> all;
-  for (int s = 1; s <= 5; ++s) all.push_back({solvers::TableauFamily::gauss, s});
-  for (int s = 1; s <= 5; ++s) all.push_back({solvers::TableauFamily::radau_iia, s});
-  for (int s = 2; s <= 5; ++s) all.push_back({solvers::TableauFamily::lobatto_iiia, s});
-  for (int s = 2; s <= 5; ++s) all.push_back({solvers::TableauFamily::lobatto_iiic, s});
-  all.push_back({solvers::TableauFamily::sdirk, 3});
-  return all;
-}
+using Method = catena::test::TableauChoice;
 
 std::string method_name(const testing::TestParamInfo<Method>& info) {
-  return std::string(solvers::tableau_family_name(info.param.family)) + "_" +
-         std::to_string(info.param.stages);
+  return catena::test::tableau_label(info.param);
 }
 
 solvers::IrkOptions options_for(const Method& m) {
@@ -83,7 +69,7 @@ TEST_P(EveryMethod, ObservedOrderOnTheOscillator) {
     if (coarse < 1e-3 && fine > 1e-12) {
       const double order = std::log2(coarse / fine);
       std::printf("  %s: n = %d, %d: errors %.3e %.3e, observed order %.2f (theory %d)\n",
-                  method_name({method, 0}).c_str(), n, 2 * n, coarse, fine, order, p);
+                  catena::test::tableau_label(method).c_str(), n, 2 * n, coarse, fine, order, p);
       EXPECT_NEAR(order, p, 0.3);
       return;
     }
@@ -134,11 +120,11 @@ TEST_P(EveryMethod, TautStringFirstFrequency) {
   }
   const double period = (crossings.back() - crossings.front()) / 2.0;
   std::printf("  %s: f1 = %.6f Hz (closed form %.6f, difference %.2e)\n",
-              method_name({method, 0}).c_str(), 1 / period, f1, (1 / period - f1) / f1);
+              catena::test::tableau_label(method).c_str(), 1 / period, f1, (1 / period - f1) / f1);
   EXPECT_NEAR(1 / period, f1, 1e-3 * f1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catena, EveryMethod, testing::ValuesIn(every_method()), method_name);
+INSTANTIATE_TEST_SUITE_P(Catena, EveryMethod, testing::ValuesIn(catena::test::every_tableau()), method_name);
 
 }  // namespace
 

@@ -8,6 +8,22 @@
 
 namespace catena::test {
 
+std::vector<TableauChoice> every_tableau() {
+  using solvers::TableauFamily;
+  std::vector<TableauChoice> all;
+  for (int s = 1; s <= 5; ++s) all.push_back({TableauFamily::gauss, s});
+  for (int s = 1; s <= 5; ++s) all.push_back({TableauFamily::radau_iia, s});
+  for (int s = 2; s <= 5; ++s) all.push_back({TableauFamily::lobatto_iiia, s});
+  for (int s = 2; s <= 5; ++s) all.push_back({TableauFamily::lobatto_iiic, s});
+  all.push_back({TableauFamily::sdirk, 3});
+  return all;
+}
+
+std::string tableau_label(const TableauChoice& choice) {
+  return std::string(solvers::tableau_family_name(choice.family)) + "_" +
+         std::to_string(choice.stages);
+}
+
 model::Model oscillator(double mass, double omega) {
   model::Model m;
   m.gravity = Vec3::Zero();

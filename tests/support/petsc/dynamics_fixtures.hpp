@@ -4,9 +4,18 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/model/model.hpp"
+#include "catena/solvers/butcher_tableau.hpp"
 #include "catena/solvers/time_integrator.hpp"
 
 namespace catena::test {
+
+// Every tableau Catena offers (family, stage count), for parametrised tests.
+struct TableauChoice {
+  solvers::TableauFamily family;
+  int stages;
+};
+std::vector<TableauChoice> every_tableau();
+std::string tableau_label(const TableauChoice& choice);  // "radau_iia_3"
 
 // A point mass on an isotropic elastic support, no gravity: x'' = −ω² x per axis.
 model::Model oscillator(double mass, double omega);
