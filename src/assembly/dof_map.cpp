@@ -8,7 +8,7 @@
 namespace catena::assembly {
 
 DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
-    : partition_(&partition) {
+    : partition_(&partition), rank_(rank) {
   const int n_nodes = static_cast<int>(model.nodes.size());
   const std::vector<int> counts = model::all_node_dofs(model);
   node_offset_.assign(n_nodes + 1, 0);
@@ -21,6 +21,11 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
   global_.assign(node_offset_.back(), -1);
   std::vector<std::vector<int>> nodes_of_rank(partition.n_parts);
   for (int n = 0; n < n_nodes; ++n) nodes_of_rank[partition.node_owner[n]].push_back(n);
+  const int n_constraints = static_cast<int>(model.constraints.size());
+  constraint_owner_.resize(n_constraints);
+  multiplier_.assign(3 * n_constraints, -1);
+  for (int c = 0; c < n_constraints; ++c)
+    constraint_owner_[c] = partition.node_owner[model.constraints[c].node_a];
   PetscInt next = 0;
   for (int r = 0; r < partition.n_parts; ++r) {
     if (r == rank) first_owned_ = next;
@@ -29,6 +34,14 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
         if (!(fixed_mask[n] >> k & 1u)) {
           global_[node_offset_[n] + k] = next++;
           global_node_.push_back(n);
+          global_constraint_.push_back(-1);
+        }
+    for (int c = 0; c < n_constraints; ++c)
+      if (constraint_owner_[c] == r)
+        for (int k = 0; k < 3; ++k) {
+          multiplier_[3 * c + k] = next++;
+          global_node_.push_back(model.constraints[c].node_a);
+          global_constraint_.push_back(c);
         }
     if (r == rank) n_owned_ = next - first_owned_;
   }
@@ -47,6 +60,10 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
     if (partition.element_owner[e] == rank)
       for (int n : model.elements[e].nodes)
         if (partition.node_owner[n] != rank) touched.push_back(n);
+  for (const model::Constraint& c : model.constraints)
+    if (partition.node_owner[c.node_a] == rank && c.node_b >= 0 &&
+        partition.node_owner[c.node_b] != rank)
+      touched.push_back(c.node_b);
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (int n : touched)
@@ -65,6 +82,9 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
 int DofMap::node_of_global(PetscInt global) const { return global_node_.at(global); }
 
 int DofMap::component_of_global(PetscInt global) const {
+  if (const int c = constraint_of_global(global); c >= 0)
+    for (int k = 0; k < 3; ++k)
+      if (multiplier_dof(c, k) == global) return k;
   const int n = node_of_global(global);
   for (int k = 0; k < node_dofs(n); ++k)
     if (global_dof(n, k) == global) return k;

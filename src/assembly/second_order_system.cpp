@@ -48,6 +48,34 @@ class LocalArray {
 using LocalArrayRead = LocalArray<false>;
 using LocalArrayWrite = LocalArray<true>;
 
+// PETSc log events, so -log_view splits a run's time into residual and tangent
+// assemblies beside PETSc's own MatLUFactorNum / MatSolve (the benchmarks' breakdown).
+struct LogEvents {
+  PetscLogEvent force = 0, tangent = 0;
+  LogEvents() {
+    PetscClassId id = 0;
+    PetscClassIdRegister("Catena", &id);
+    PetscLogEventRegister("CatForce", id, &force);
+    PetscLogEventRegister("CatTangent", id, &tangent);
+  }
+};
+const LogEvents& log_events() {
+  static const LogEvents events;  // registered after PetscInitialize, on first use
+  return events;
+}
+
+// Begins a log event for the lifetime of the object.
+class LoggedEvent {
+ public:
+  explicit LoggedEvent(PetscLogEvent e) : e_(e) { PetscLogEventBegin(e_, 0, 0, 0, 0); }
+  ~LoggedEvent() { PetscLogEventEnd(e_, 0, 0, 0, 0); }
+  LoggedEvent(const LoggedEvent&) = delete;
+  LoggedEvent& operator=(const LoggedEvent&) = delete;
+
+ private:
+  PetscLogEvent e_;
+};
+
 }  // namespace
 
 SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
@@ -99,9 +127,106 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     moving_paths_.push_back(std::move(path));
   }
 
+  for (int c = 0; c < static_cast<int>(model.constraints.size()); ++c) {
+    if (dofs_.constraint_owner(c) != rank) continue;
+    const model::Constraint& con = model.constraints[static_cast<size_t>(c)];
+    LocalConstraint lc;
+    lc.index = c;
+    for (int k = 0; k < 3; ++k) {
+      lc.lam_local[k] = dofs_.multiplier_local(c, k);
+      lc.lam_global[k] = dofs_.multiplier_dof(c, k);
+      lc.a_local[k] = dofs_.local_dof(con.node_a, k);
+      lc.a_global[k] = dofs_.global_dof(con.node_a, k);
+      lc.b_local[k] = con.node_b >= 0 ? dofs_.local_dof(con.node_b, k) : -1;
+      lc.b_global[k] = con.node_b >= 0 ? dofs_.global_dof(con.node_b, k) : -1;
+    }
+    constraints_.push_back(lc);
+  }
+
   q_work_ = create_vector();
   v_work_ = create_vector();
   f_work_ = create_vector();
+}
+
+namespace {
+// u(t) of a prescribed motion and its second derivative.
+Vec3 prescribed_displacement(const model::Constraint& c, double t) {
+  return c.velocity * t + c.amplitude * std::sin(2.0 * M_PI * c.frequency * t);
+}
+Vec3 prescribed_acceleration(const model::Constraint& c, double t) {
+  const double w = 2.0 * M_PI * c.frequency;
+  return -w * w * std::sin(w * t) * c.amplitude;
+}
+}  // namespace
+
+void SecondOrderSystem::add_constraint_forces(double t, const double* q, double* f) const {
+  const model::Model& m = *model_;
+  for (const LocalConstraint& lc : constraints_) {
+    const model::Constraint& con = m.constraints[static_cast<size_t>(lc.index)];
+    auto position = [&](int node, const PetscInt* local, int k) {
+      return local[k] >= 0 ? q[local[k]] : node_reference_[12 * static_cast<size_t>(node) + k];
+    };
+    Vec3 target = Vec3::Zero();  // g = r_A − target
+    if (con.type == model::ConstraintType::coincident)
+      for (int k = 0; k < 3; ++k) target[k] = position(con.node_b, lc.b_local, k);
+    else
+      target = m.nodes[static_cast<size_t>(con.node_a)].position +
+               (con.type == model::ConstraintType::prescribed ? prescribed_displacement(con, t)
+                                                              : Vec3::Zero());
+    for (int k = 0; k < 3; ++k) {
+      const double lambda = q[lc.lam_local[k]];
+      if (lc.a_local[k] >= 0) f[lc.a_local[k]] += lambda;
+      if (lc.b_local[k] >= 0) f[lc.b_local[k]] -= lambda;
+      f[lc.lam_local[k]] += position(con.node_a, lc.a_local, k) - target[k];
+    }
+  }
+}
+
+void SecondOrderSystem::add_constraint_entries(double c_lambda, double c_g, Mat J) const {
+  for (const LocalConstraint& lc : constraints_)
+    for (int k = 0; k < 3; ++k) {
+      const PetscInt lam = lc.lam_global[k];
+      CATENA_PETSC(MatSetValue(J, lam, lam, 0.0, ADD_VALUES));
+      for (auto [col, sign] : {std::pair{lc.a_global[k], 1.0}, {lc.b_global[k], -1.0}}) {
+        if (col < 0) continue;
+        CATENA_PETSC(MatSetValue(J, col, lam, sign * c_lambda, ADD_VALUES));
+        CATENA_PETSC(MatSetValue(J, lam, col, sign * c_g, ADD_VALUES));
+      }
+    }
+}
+
+std::string SecondOrderSystem::describe_dof(PetscInt global) const {
+  static const char* names[12] = {"x",    "y",    "z",    "rx_x", "rx_y", "rx_z",
+                                  "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"};
+  if (global < 0 || global >= dofs_.n_global()) return "unknown DOF";
+  const int node = dofs_.node_of_global(global);
+  const int comp = dofs_.component_of_global(global);
+  const std::string id = std::to_string(model_->nodes[static_cast<size_t>(node)].id);
+  if (const int c = dofs_.constraint_of_global(global); c >= 0)
+    return "constraint " + std::to_string(c + 1) + " (multiplier " + names[comp] + ", node " +
+           id + ")";
+  return "node " + id + " (" + (comp >= 0 ? names[comp] : "?") + ")";
+}
+
+void SecondOrderSystem::algebraic_mask(Vec mask) const {
+  CATENA_PETSC(VecSet(mask, 0.0));
+  for (const LocalConstraint& lc : constraints_)
+    for (int k = 0; k < 3; ++k) CATENA_PETSC(VecSetValue(mask, lc.lam_global[k], 1.0, INSERT_VALUES));
+  CATENA_PETSC(VecAssemblyBegin(mask));
+  CATENA_PETSC(VecAssemblyEnd(mask));
+}
+
+void SecondOrderSystem::constraint_acceleration(double t, Vec out) const {
+  CATENA_PETSC(VecSet(out, 0.0));
+  for (const LocalConstraint& lc : constraints_) {
+    const model::Constraint& con = model_->constraints[static_cast<size_t>(lc.index)];
+    if (con.type != model::ConstraintType::prescribed) continue;
+    const Vec3 acc = prescribed_acceleration(con, t);
+    for (int k = 0; k < 3; ++k)
+      CATENA_PETSC(VecSetValue(out, lc.lam_global[k], acc[k], INSERT_VALUES));
+  }
+  CATENA_PETSC(VecAssemblyBegin(out));
+  CATENA_PETSC(VecAssemblyEnd(out));
 }
 
 void SecondOrderSystem::add_moving_loads(double t, double* f_local) const {
@@ -150,6 +275,25 @@ void SecondOrderSystem::preallocation(std::vector<PetscInt>& d_nnz,
   const PetscInt lo = dofs_.first_owned(), hi = lo + dofs_.n_owned();
   d_nnz.assign(dofs_.n_owned(), 0);
   o_nnz.assign(dofs_.n_owned(), 0);
+  auto count = [&](PetscInt row, PetscInt col) {
+    if (row < 0 || col < 0) return;
+    (col >= lo && col < hi ? d_nnz : o_nnz)[row - lo] += 1;
+  };
+  // Constraints: a multiplier column in the position rows of nodes A and B, and a
+  // multiplier row with A's and B's positions and the (zero) diagonal.
+  for (int c = 0; c < dofs_.n_constraints(); ++c) {
+    const model::Constraint& con = m.constraints[static_cast<size_t>(c)];
+    for (int k = 0; k < 3; ++k) {
+      const PetscInt lam = dofs_.multiplier_dof(c, k);
+      for (int node : {con.node_a, con.node_b}) {
+        if (node < 0) continue;
+        const PetscInt row = dofs_.global_dof(node, k);
+        if (row >= lo && row < hi) count(row, lam);
+        if (lam >= lo && lam < hi) count(lam, row);
+      }
+      if (lam >= lo && lam < hi) count(lam, lam);
+    }
+  }
   for (int n : dofs_.owned_nodes()) {
     // (coupled node, number of its DOFs an element couples) pairs; the node's own
     // position block is always present (one-node kernels live there).
@@ -174,8 +318,8 @@ void SecondOrderSystem::preallocation(std::vector<PetscInt>& d_nnz,
           (col >= lo && col < hi ? n_diag : n_off) += 1;
         }
       }
-      d_nnz[row - lo] = n_diag;
-      o_nnz[row - lo] = n_off;
+      d_nnz[row - lo] += n_diag;
+      o_nnz[row - lo] += n_off;
     }
   }
 }
@@ -203,6 +347,8 @@ void SecondOrderSystem::reference_state(Vec q) const {
       const PetscInt g = dofs_.global_dof(n, k);
       if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[12 * n + k];
     }
+  for (const LocalConstraint& lc : constraints_)
+    for (int k = 0; k < 3; ++k) a[lc.lam_local[k]] = 0.0;
   CATENA_PETSC(VecRestoreArray(q, &a));
 }
 
@@ -242,6 +388,7 @@ void SecondOrderSystem::visit_element_forces(const EvalPoint& p, Fn&& fn) {
 }
 
 void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
+  const LoggedEvent logged(log_events().force);
   double squares = 0.0;
   {
     LocalArrayWrite out(f_work_.get());
@@ -255,6 +402,10 @@ void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
         for (double x : f_el) squares += x * x;
     });
     if (!moving_paths_.empty()) add_moving_loads(p.t, dst);
+    if (!constraints_.empty()) {
+      const LocalArrayRead q(q_work_.get());  // scattered by visit_element_forces
+      add_constraint_forces(p.t, q.data(), dst);
+    }
   }
   CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecGhostUpdateEnd(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
@@ -277,6 +428,7 @@ double SecondOrderSystem::element_force_norm(const EvalPoint& p) {
 }
 
 void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J) {
+  const LoggedEvent logged(log_events().tangent);
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
   CATENA_PETSC(MatZeroEntries(J));
@@ -307,11 +459,13 @@ void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients&
                                 block.data(), ADD_VALUES));
     }
   }
+  add_constraint_entries(c.c_lambda, c.c_g, J);
   CATENA_PETSC(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   CATENA_PETSC(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
 }
 
 void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) {
+  const LoggedEvent logged(log_events().tangent);
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
   for (Mat A : {K_out, C_out})
@@ -336,6 +490,8 @@ void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) 
       if (C_out) CATENA_PETSC(MatSetValues(C_out, N, idx, N, idx, C.data(), ADD_VALUES));
     }
   }
+  if (K_out) add_constraint_entries(0.0, 1.0, K_out);
+  if (C_out) add_constraint_entries(0.0, 0.0, C_out);
   for (Mat A : {K_out, C_out})
     if (A) {
       CATENA_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));

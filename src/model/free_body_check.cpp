@@ -43,11 +43,16 @@ void check_no_free_body(const SceneBuild& build) {
     for (std::size_t k = 1; k < element.nodes.size(); ++k)
       parts.unite(static_cast<std::size_t>(element.nodes[0]),
                   static_cast<std::size_t>(element.nodes[k]));
+  for (const Constraint& c : model.constraints)
+    if (c.node_b >= 0)
+      parts.unite(static_cast<std::size_t>(c.node_a), static_cast<std::size_t>(c.node_b));
 
   std::vector<bool> held(n, false);  // per part representative
   for (const Support& s : model.supports) held[parts.find(static_cast<std::size_t>(s.node))] = true;
   for (const ElasticSupport& s : model.elastic_supports)
     held[parts.find(static_cast<std::size_t>(s.node))] = true;
+  for (const Constraint& c : model.constraints)
+    if (c.node_b < 0) held[parts.find(static_cast<std::size_t>(c.node_a))] = true;
 
   // Report the part of the first unsupported node, listing its nodes in scene order.
   std::size_t first_free = n;

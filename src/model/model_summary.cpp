@@ -146,6 +146,15 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("free DOFs", std::to_string(dofs.total - dofs.fixed));
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
+  if (!model.constraints.empty()) {
+    int by_type[3] = {0, 0, 0};
+    for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
+    t.row("constraints", std::to_string(model.constraints.size()) + " (coincident " +
+                             std::to_string(by_type[0]) + ", pinned " + std::to_string(by_type[1]) +
+                             ", prescribed " + std::to_string(by_type[2]) + "): " +
+                             std::to_string(3 * model.constraints.size()) +
+                             " Lagrange multipliers");
+  }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");
   t.row("point masses",
@@ -157,7 +166,21 @@ std::string describe(const Model& model, int n_ranks_running) {
       t.row(name.empty() ? "(no set)" : name, sets.at(name).text(), 4);
   }
   const StaticOptions& s = model.static_options;
-  t.row("analysis", "static; load steps initial " + format_number(s.initial_load_step) + ", min " +
+  if (model.analysis == AnalysisType::dynamic) {
+    const IntegratorOptions& i = model.dynamic_options.integrator;
+    t.row("dynamics", "duration " + format_number(model.dynamic_options.duration) + " s, " +
+                          i.type + (i.type == "hht" ? " alpha " + format_number(i.alpha)
+                                    : i.type == "petsc" ? std::string()
+                                                        : " " + std::to_string(i.stages) +
+                                                              " stages") +
+                          ", dt " + format_number(i.dt) + " s" +
+                          (i.adaptive ? " (adaptive, rtol " + format_number(i.rtol) + ")" : ""));
+    t.row("initial state", model.dynamic_options.initial.from_static
+                               ? "static equilibrium (below)"
+                               : "reference configuration");
+  }
+  t.row("analysis", std::string(model.analysis == AnalysisType::dynamic ? "initial " : "") +
+                        "static; load steps initial " + format_number(s.initial_load_step) + ", min " +
                         format_number(s.min_load_step) + ", at most " +
                         std::to_string(s.max_load_steps) + "; Newton rtol " +
                         format_number(s.rtol) + ", atol " + format_number(s.atol) + " N, at most " +

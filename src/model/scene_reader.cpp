@@ -15,6 +15,7 @@
 #include "attachment_reader.hpp"
 #include "catena/core/error.hpp"
 #include "catena/model/node_dofs.hpp"
+#include "constraint_reader.hpp"
 #include "element_reader.hpp"
 #include "free_body_check.hpp"
 #include "dynamics_reader.hpp"
@@ -31,9 +32,10 @@ namespace {
 using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
-  static const std::vector<std::string> keys{"name",  "gravity",  "sections", "nodes",
-                                             "lines", "elements", "supports", "elastic_supports",
-                                             "loads", "masses",   "analysis", "integrator", "output"};
+  static const std::vector<std::string> keys{
+      "name",         "gravity",  "sections",         "nodes", "lines",
+      "elements",     "supports", "elastic_supports", "loads", "masses",
+      "constraints",  "analysis", "integrator", "output"};
   return keys;
 }
 
@@ -86,6 +88,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::assign_nodal_frames(build);
   detail::read_supports(scene.child("supports"), all_node_dofs(model), build);
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
+  detail::read_constraints(scene.child("constraints"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);

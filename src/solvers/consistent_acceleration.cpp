@@ -7,23 +7,56 @@
 
 namespace catena::solvers {
 
-void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q,
-                             Vec v, Vec a) {
-  VecHandle rhs = system.create_vector();
-  system.force({q, v, {}, t}, rhs.get());
-  CATENA_PETSC(VecScale(rhs.get(), -1.0));
-  KspHandle ksp = create_direct_ksp(system.comm(), "mass_", JacobianSymmetry::symmetric);
-  CATENA_PETSC(KSPSetOperators(ksp.get(), mass, mass));
-  CATENA_PETSC(KSPSolve(ksp.get(), rhs.get(), a));
-  const MumpsStatus mumps = mumps_status(ksp.get());
-  KSPConvergedReason reason;
-  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
-  if (mumps.null_pivots > 0 || mumps.infog1 < 0 || reason < 0)
+AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat mass)
+    : system_(system), algebraic_(system, mass) {
+  rhs_ = system.create_vector();
+  Mat A = mass;
+  if (algebraic_.active()) {
+    target_ = system.create_vector();
+    saddle_ = system.create_matrix();
+    system.jacobian({rhs_.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
+    A = saddle_.get();
+  }
+  ksp_ = create_direct_ksp(
+      system.comm(), "mass_",
+      algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
+  CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
+  CATENA_PETSC(KSPSetUp(ksp_.get()));
+  const MumpsStatus mumps = mumps_status(ksp_.get());
+  if (mumps.null_pivots > 0 || mumps.infog1 < 0)
     throw NumericalError(
-        "the mass matrix is singular (" + std::to_string(mumps.null_pivots) +
+        std::string(algebraic_.active() ? "the constrained mass matrix [M G'; G 0]"
+                                        : "the mass matrix") +
+        " is singular (" + std::to_string(mumps.null_pivots) +
         " null pivots, MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
         "): every free DOF needs mass; massless nodes (e.g. joined only by massless bars "
-        "or springs) need a point mass");
+        "or springs) need a point mass" +
+        (algebraic_.active() ? "; constraints must not repeat each other or a support" : ""));
+}
+
+void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
+  // f without the constraint forces (λ = 0): they are unknowns here.
+  algebraic_.zero_algebraic(q);
+  system_.force({q, v, {}, t}, rhs_.get());
+  CATENA_PETSC(VecScale(rhs_.get(), -1.0));
+  if (algebraic_.active()) {
+    system_.constraint_acceleration(t, target_.get());
+    algebraic_.take_algebraic(rhs_.get(), target_.get());
+  }
+  CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), a));
+  KSPConvergedReason reason;
+  CATENA_PETSC(KSPGetConvergedReason(ksp_.get(), &reason));
+  const MumpsStatus mumps = mumps_status(ksp_.get());
+  if (reason < 0 || mumps.infog1 < 0)
+    throw NumericalError("the acceleration solve failed (KSP reason " + std::to_string(reason) +
+                         ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) + ")");
+  algebraic_.take_algebraic(q, a);
+  algebraic_.zero_algebraic(a);
+}
+
+void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q,
+                             Vec v, Vec a) {
+  AccelerationSolver(system, mass).solve(t, q, v, a);
 }
 
 }  // namespace catena::solvers

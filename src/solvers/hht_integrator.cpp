@@ -5,6 +5,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/algebraic_part.hpp"
 #include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/hermite_interpolation.hpp"
 #include "catena/solvers/reusable_newton.hpp"
@@ -23,6 +24,8 @@ struct HhtIntegrator::Impl {
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
   VecHandle q1, v1, a1, f1, residual, error;
   MatHandle mass, K, C, jacobian;
+  MatHandle coupling;  // Gᵀ (constraints only)
+  std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
   IntegratorCounters counters;
   bool pending_valid = false;
@@ -30,7 +33,7 @@ struct HhtIntegrator::Impl {
   Impl(assembly::SecondOrderSystem& s, const HhtOptions& o)
       : system(s), options(o), beta(0.25 * (1 - o.alpha) * (1 - o.alpha)), gamma(0.5 - o.alpha) {}
 
-  // q1, v1 from a1 (Newmark).
+  // q1, v1 from a1 (Newmark); the multiplier slots of a1 hold λ1 itself.
   void kinematics(Vec a) {
     CATENA_PETSC(VecCopy(q0.get(), q1.get()));
     CATENA_PETSC(VecAXPY(q1.get(), h, v0.get()));
@@ -39,15 +42,23 @@ struct HhtIntegrator::Impl {
     CATENA_PETSC(VecCopy(v0.get(), v1.get()));
     CATENA_PETSC(VecAXPY(v1.get(), h * (1 - gamma), a0.get()));
     CATENA_PETSC(VecAXPY(v1.get(), h * gamma, a));
+    algebraic->take_algebraic(q1.get(), a);
+    algebraic->zero_algebraic(v1.get());
   }
 
-  // R(a1) = M a1 + (1 + α) f(t1, q1, v1) − α f0.
+  // R(a1) = M a1 + (1 + α)(f + Gᵀλ)(t1, q1, v1) − α (f + Gᵀλ)0 in the nodal rows and
+  // (m̄/βh²) g(q1, t1) in the constraint rows (Negrut et al.: the constraint holds at the
+  // step end, not α-weighted).
   void residual_at(Vec a, Vec r) {
     kinematics(a);
     system.force({q1.get(), v1.get(), {}, t0 + h}, f1.get(), &scale1);
     CATENA_PETSC(MatMult(mass.get(), a, r));
     CATENA_PETSC(VecAXPY(r, 1.0 + options.alpha, f1.get()));
     CATENA_PETSC(VecAXPY(r, -options.alpha, f0.get()));
+    if (algebraic->active()) {
+      algebraic->take_algebraic(r, f1.get());
+      algebraic->scale_rows(r, algebraic->mass_scale() / (beta * h * h));
+    }
   }
 
   // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
@@ -61,6 +72,12 @@ struct HhtIntegrator::Impl {
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
     CATENA_PETSC(MatAXPY(J, s * gamma * h, C.get(), SAME_NONZERO_PATTERN));
     CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
+    if (algebraic->active()) {
+      // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
+      // scaled to m̄ G like the residual's.
+      CATENA_PETSC(MatAXPY(J, s, coupling.get(), SAME_NONZERO_PATTERN));
+      algebraic->scale_rows(J, algebraic->mass_scale() / (s * beta * h * h));
+    }
   }
 };
 
@@ -74,11 +91,15 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q_prev, &s.v_prev, &s.a_prev, &s.q1,
                        &s.v1, &s.a1, &s.f1, &s.residual, &s.error})
     *v = system.create_vector();
-  for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian}) *m = system.create_matrix();
+  for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
+    *m = system.create_matrix();
   // The mass matrix is constant (ANCF): assemble it once.
   system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
   // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
   CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
+  s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
+  if (s.algebraic->active())  // Gᵀ is constant: the constraints are linear in q
+    system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
@@ -104,7 +125,7 @@ void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   CATENA_PETSC(VecCopy(v, s.v0.get()));
   if (a)
     CATENA_PETSC(VecCopy(a, s.a0.get()));
-  else
+  else  // also gives λ0 with constraints
     consistent_acceleration(s.system, s.mass.get(), t, s.q0.get(), s.v0.get(), s.a0.get());
   s.system.force({s.q0.get(), s.v0.get(), {}, t}, s.f0.get(), &s.scale0);
   for (auto [from, to] : {std::pair{&s.q0, &s.q_prev}, {&s.v0, &s.v_prev}, {&s.a0, &s.a_prev}})
@@ -121,8 +142,10 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.h_matrix = h;
   }
   CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
+  s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
+  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get());
   const NewtonResult result =
-      s.newton->solve(s.a1.get(), s.options.atol + s.options.rtol * s.scale0);
+      s.newton->solve(s.a1.get(), s.options.atol + s.options.rtol * s.scale0 + floor);
   StepOutcome out;
   out.converged = result.converged;
   out.newton_iterations = result.iterations;
@@ -141,6 +164,7 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   }
   // The last residual evaluation was at the converged a1: q1, v1, f1 belong to it.
   s.kinematics(s.a1.get());
+  s.algebraic->zero_algebraic(s.a1.get());  // λ1 now lives in q1
   s.pending_valid = true;
   if (tol) {
     CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.a0.get(), s.a1.get()));

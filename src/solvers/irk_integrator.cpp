@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+#include "catena/solvers/algebraic_part.hpp"
 #include "catena/solvers/block_matrix.hpp"
 #include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/direct_newton.hpp"
@@ -49,6 +51,14 @@ struct IrkIntegrator::Impl {
   std::vector<VecHandle> Kst, Klast, U, V, F;
   MatHandle mass, K, C;
   std::vector<MatHandle> Ks, Cs;  // full Newton: per-stage tangents
+  // Constraints: the multiplier slots of stage i's unknown hold Λ_i; `mass_coupling` is
+  // M + Gᵀ, the block-diagonal part of the stage matrix (coefficient δ_ij).
+  std::unique_ptr<AlgebraicPart> algebraic;
+  MatHandle mass_coupling;
+  // Tableaus other than Radau IIA: the step-end multipliers from the acceleration-level
+  // equations at (q1, v1), as their stage multipliers converge at low order or not at all
+  // (Gauss: the error grows like 1/h; docs/integrators.md).
+  std::unique_ptr<AccelerationSolver> end_multipliers;
   std::unique_ptr<BlockMatrix> block;
   VecHandle x, r;
   std::unique_ptr<ReusableNewton> newton;
@@ -107,7 +117,15 @@ struct IrkIntegrator::Impl {
       CATENA_PETSC(VecAXPY(U[i].get(), T.c(i) * h, v0.get()));
       for (int j = 0; j < s; ++j) w[j] = h * T.A(i, j);
       combine(V[i].get(), v0.get(), w, Kst);
+      algebraic->take_algebraic(U[i].get(), Kst[i].get());
+      algebraic->zero_algebraic(V[i].get());
     }
+  }
+
+  // Constraint rows g(U_i) are scaled by m̄/h² (the stage matrix then holds m̄ Ā_ij G).
+  double constraint_row_scale() const { return algebraic->mass_scale() / (h * h); }
+  Mat block_diagonal_part() const {
+    return algebraic->active() ? mass_coupling.get() : mass.get();
   }
 
   std::vector<Vec> raw(const std::vector<VecHandle>& v) const {
@@ -125,6 +143,7 @@ struct IrkIntegrator::Impl {
       system.force({U[i].get(), V[i].get(), {}, t0 + T.c(i) * h}, F[i].get(), &norm);
       stage_scale = std::max(stage_scale, norm);
       CATENA_PETSC(MatMultAdd(mass.get(), Kst[i].get(), F[i].get(), F[i].get()));
+      algebraic->scale_rows(F[i].get(), constraint_row_scale());
     }
     counters.residual_evaluations += s;
     block->join(raw(F), rk);
@@ -159,11 +178,12 @@ struct IrkIntegrator::Impl {
         c_rows.push_back(Cs[i].get());
       }
       counters.jacobian_evaluations += s;
-      block->assemble_rows(k_rows, c_rows, mass.get(), coefficients());
-      return;
+      block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
+    } else {
+      if (refresh) evaluate_start_tangent();
+      block->assemble(K.get(), C.get(), block_diagonal_part(), coefficients());
     }
-    if (refresh) evaluate_start_tangent();
-    block->assemble(K.get(), C.get(), mass.get(), coefficients());
+    algebraic->scale_rows(block->matrix(), constraint_row_scale(), s);
   }
 
   void predict() {
@@ -176,7 +196,10 @@ struct IrkIntegrator::Impl {
         CATENA_PETSC(VecMAXPY(Kst[i].get(), s, l.data(), parts.data()));
       }
     } else {
-      for (int i = 0; i < s; ++i) CATENA_PETSC(VecCopy(a0.get(), Kst[i].get()));
+      for (int i = 0; i < s; ++i) {
+        CATENA_PETSC(VecCopy(a0.get(), Kst[i].get()));
+        algebraic->take_algebraic(Kst[i].get(), q0.get());  // constant λ
+      }
     }
     block->join(raw(Kst), x.get());
   }
@@ -240,6 +263,19 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
       m.Ks.push_back(system.create_matrix());
       m.Cs.push_back(system.create_matrix());
     }
+  m.algebraic = std::make_unique<AlgebraicPart>(system, m.mass.get());
+  if (m.algebraic->active()) {
+    if (m.T.A.row(0).isZero())
+      throw InputError({"", 0, "integrator.type"},
+                       m.T.name + " has an explicit first stage, which leaves its Lagrange "
+                                  "multipliers undetermined (singular stage matrix); with "
+                                  "constraints use gauss, radau, lobatto_iiic or sdirk");
+    if (m.T.family != TableauFamily::radau_iia)
+      m.end_multipliers = std::make_unique<AccelerationSolver>(system, m.mass.get());
+    m.mass_coupling = system.create_matrix();
+    system.jacobian({m.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
+                    m.mass_coupling.get());
+  }
   m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
   m.x = m.block->create_vector();
   m.r = m.block->create_vector();
@@ -258,7 +294,11 @@ IrkIntegrator::~IrkIntegrator() = default;
 
 std::string IrkIntegrator::name() const { return impl_->T.name; }
 int IrkIntegrator::order() const { return impl_->T.order; }
-bool IrkIntegrator::has_embedded_estimate() const { return impl_->T.e_embedded.has_value(); }
+// With constraints the Radau IIA estimate's filter (M − γhC − γ²h²K)⁻¹ would need the
+// index-3 treatment of RADAU5; step doubling serves there instead (docs/integrators.md).
+bool IrkIntegrator::has_embedded_estimate() const {
+  return impl_->T.e_embedded.has_value() && !impl_->algebraic->active();
+}
 int IrkIntegrator::estimate_order() const {
   return has_embedded_estimate() ? impl_->T.embedded_order + 1 : 0;
 }
@@ -289,7 +329,8 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
   }
   m.predict();
   const double atol =
-      m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s));
+      m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s)) +
+      m.algebraic->residual_floor(h * h, m.q0.get()) * std::sqrt(static_cast<double>(m.s));
   const NewtonResult result = m.newton->solve(m.x.get(), atol);
   StepOutcome out;
   out.converged = result.converged;
@@ -323,6 +364,14 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
     combine(m.a1.get(), m.scratch.get(), l, m.Kst);
   } else {
     CATENA_PETSC(VecCopy(m.Kst[0].get(), m.a1.get()));
+  }
+  // a1's multiplier slots hold λ1 (the last stage's, or the stage polynomial's value).
+  m.algebraic->take_algebraic(m.q1.get(), m.a1.get());
+  m.algebraic->zero_algebraic(m.v1.get());
+  m.algebraic->zero_algebraic(m.a1.get());
+  if (m.end_multipliers) {
+    m.end_multipliers->solve(m.t0 + h, m.q1.get(), m.v1.get(), m.a1.get());
+    m.counters.residual_evaluations += 1;
   }
   m.pending_valid = true;
   if (tol && has_embedded_estimate()) out.error = m.embedded_error(*tol);
@@ -372,7 +421,13 @@ void IrkIntegrator::interpolate(double t, Vec q, Vec v) {
     for (double& x : W) x *= h * h;
     combine(q, m.q_prev.get(), W, m.Klast);
     CATENA_PETSC(VecAXPY(q, theta * h, m.v_prev.get()));
+    if (m.algebraic->active()) {  // λ by the stage polynomial through Λ_1 … Λ_s
+      CATENA_PETSC(VecSet(m.scratch.get(), 0.0));
+      combine(m.xu.get(), m.scratch.get(), l, m.Klast);
+      m.algebraic->take_algebraic(q, m.xu.get());
+    }
   }
+  if (v) m.algebraic->zero_algebraic(v);
 }
 
 double IrkIntegrator::time() const { return impl_->t0; }

@@ -39,10 +39,14 @@ struct StaticSolver::Impl {
   // number of negative eigenvalues (INFOG(12), exact in parallel with ICNTL(13) = 1) and
   // of null pivots (INFOG(28)).
   MumpsStatus tangent_status(Vec q) {
-    system.jacobian({q, nullptr, path}, {1.0, 0.0, 0.0}, jacobian.get());
+    system.jacobian({q, nullptr, path}, assembly::kStaticJacobian, jacobian.get());
     CATENA_PETSC(KSPSetOperators(stability_ksp.get(), jacobian.get(), jacobian.get()));
     CATENA_PETSC(KSPSetUp(stability_ksp.get()));
-    return mumps_status(stability_ksp.get());
+    MumpsStatus status = mumps_status(stability_ksp.get());
+    // [K Gᵀ; G 0] has exactly one negative eigenvalue per multiplier when K is positive
+    // definite on the constraints' null space: only the excess means instability.
+    status.negative_pivots -= 3 * static_cast<long>(system.model().constraints.size());
+    return status;
   }
 
   void set_path(double tau) {
@@ -60,8 +64,7 @@ struct StaticSolver::Impl {
     auto* self = static_cast<Impl*>(ctx);
     ++self->n_jacobians;
     return self->guard.run([&] {
-      self->system.jacobian({q, nullptr, self->path},
-                            {1.0, 0.0, 0.0}, J);
+      self->system.jacobian({q, nullptr, self->path}, assembly::kStaticJacobian, J);
     });
   }
 };
@@ -100,14 +103,9 @@ std::string largest_residual_location(const assembly::SecondOrderSystem& system,
   if (VecDuplicate(f, abs_f.out()) || VecCopy(f, abs_f.get()) || VecAbs(abs_f.get()) ||
       VecMax(abs_f.get(), &where, &value) || where < 0)
     return "unknown";
-  static const char* names[12] = {"x",    "y",    "z",    "rx_x", "rx_y", "rx_z",
-                                  "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"};
-  const auto& dofs = system.dof_map();
-  const int node = dofs.node_of_global(where);
-  const int comp = dofs.component_of_global(where);
   std::ostringstream os;
-  os << "node id " << system.model().nodes[node].id << " (" << (comp >= 0 ? names[comp] : "?")
-     << "), |f| = " << value << " N";
+  os << system.describe_dof(where) << ", |f| = " << value
+     << (system.dof_map().constraint_of_global(where) >= 0 ? " m" : " N");
   return os.str();
 }
 

@@ -12,9 +12,6 @@
 namespace catena::solvers {
 namespace {
 
-const char* const kComponent[12] = {"x",    "y",    "z",    "r_x,x", "r_x,y", "r_x,z",
-                                    "r_y,x", "r_y,y", "r_y,z", "r_z,x", "r_z,y", "r_z,z"};
-
 // Samples taken during a step-doubling pair, released only when the pair is accepted.
 struct PendingSample {
   double t;
@@ -39,6 +36,11 @@ class Driver {
     tol_.rtol = c.rtol;
     tol_.atol = c.atol;
     tol_.reference = reference_.get();
+    if (system.has_constraints()) {
+      algebraic_ = system.create_vector();
+      system.algebraic_mask(algebraic_.get());
+      tol_.algebraic = algebraic_.get();
+    }
     for (VecHandle* v : {&q_save_, &v_save_, &a_save_, &q_big_, &diff_, &q_sample_, &v_sample_})
       *v = system.create_vector();
     t_start_ = integrator.time();
@@ -227,12 +229,7 @@ class Driver {
     if (!f.failure.empty()) os << "; last attempt: " << f.failure;
     else if (f.error > 0) os << "; last error estimate " << f.error << " (accepted: <= 1)";
     os << "; residual |R| = " << f.residual_norm << " N";
-    if (f.worst_dof >= 0) {
-      const auto& dofs = system_.dof_map();
-      const int node = dofs.node_of_global(f.worst_dof);
-      os << "; largest residual at node " << system_.model().nodes[node].id << " ("
-         << kComponent[dofs.component_of_global(f.worst_dof)] << ")";
-    }
+    if (f.worst_dof >= 0) os << "; largest residual at " << system_.describe_dof(f.worst_dof);
     throw NumericalError(os.str());
   }
 
@@ -243,7 +240,7 @@ class Driver {
   bool doubling_ = false;
   int k_ = 1;
   ErrorTolerance tol_;
-  VecHandle reference_, q_save_, v_save_, a_save_, q_big_, diff_, q_sample_, v_sample_;
+  VecHandle reference_, algebraic_, q_save_, v_save_, a_save_, q_big_, diff_, q_sample_, v_sample_;
   double t_save_ = 0.0, t_start_ = 0.0;
   long next_sample_ = 0, committed_sample_ = 0;
   std::vector<PendingSample> pending_;

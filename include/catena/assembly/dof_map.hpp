@@ -8,8 +8,13 @@
 // identically on every rank from the replicated model (O(global nodes) memory per rank,
 // O(local) work per evaluation).
 //
+// Lagrange multipliers (model::Constraint, three per constraint) are unknowns too: a
+// constraint belongs to the rank owning its node A, and its multipliers are numbered after
+// that rank's nodal DOFs (so every rank's block stays contiguous).
+//
 // Local (ghosted) indices address PETSc's ghosted local form: [owned dofs | ghost dofs],
-// ghosts being the free DOFs of non-owned nodes touched by this rank's elements.
+// ghosts being the free DOFs of non-owned nodes touched by this rank's elements or
+// constraints.
 #include <petscsys.h>
 
 #include <vector>
@@ -40,9 +45,21 @@ class DofMap {
   int node_owner(int node) const { return partition_->node_owner[node]; }
   const Partition& partition() const { return *partition_; }
 
-  // Node holding a global DOF (for messages: "largest residual at node 17").
+  int n_constraints() const { return static_cast<int>(constraint_owner_.size()); }
+  int constraint_owner(int c) const { return constraint_owner_[c]; }
+  // Global index of multiplier k (0..2) of constraint c.
+  PetscInt multiplier_dof(int c, int k) const { return multiplier_[3 * c + k]; }
+  // Index of that multiplier in the ghosted local form (owned: the owner rank only), or −1.
+  PetscInt multiplier_local(int c, int k) const {
+    return constraint_owner_[c] == rank_ ? multiplier_[3 * c + k] - first_owned_ : -1;
+  }
+  // Constraint a global DOF is a multiplier of, or −1 for a nodal DOF.
+  int constraint_of_global(PetscInt global) const { return global_constraint_.at(global); }
+
+  // Node holding a global DOF (for messages: "largest residual at node 17"); for a
+  // multiplier, the constraint's node A.
   int node_of_global(PetscInt global) const;
-  // Nodal DOF index (0..11) of a global DOF.
+  // Nodal DOF index (0..11) of a global DOF; for a multiplier, its axis (0..2).
   int component_of_global(PetscInt global) const;
 
  private:
@@ -53,6 +70,10 @@ class DofMap {
   std::vector<PetscInt> ghosts_;
   std::vector<int> owned_nodes_;
   std::vector<int> global_node_;    // per global DOF: its node
+  std::vector<int> global_constraint_;  // per global DOF: its constraint or −1
+  std::vector<int> constraint_owner_;   // per constraint: owning rank
+  std::vector<PetscInt> multiplier_;    // 3 per constraint: global index
+  int rank_ = 0;
   PetscInt n_global_ = 0, n_owned_ = 0, first_owned_ = 0;
 };
 

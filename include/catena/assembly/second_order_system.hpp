@@ -1,20 +1,23 @@
 #pragma once
 // The distributed second-order system every solver and integrator sees:
 //
-//   R(t, q, v, a) = M a + f(t, q, v; λ) ,   f = f_int + f_damp − λ f_ext(t)
-//   J = c_K ∂f/∂q + c_C ∂f/∂v + c_M M
+//   R(t, q, v, a, λ) = M a + f(t, q, v; λ_path) + Gᵀλ ,   f = f_int + f_damp − λ_path f_ext(t)
+//   g(q, t) = 0                                           (model::Constraint, G = ∂g/∂q)
+//   J = c_K ∂f/∂q + c_C ∂f/∂v + c_M M + c_λ Gᵀ + c_g G
 // f_ext(t) holds dead loads (gravity, nodal and distributed loads) and moving loads
 // (model::MovingLoad), which depend on t but not on q, so they add nothing to J.
 //
-// over the free DOFs (supports eliminated; their values are the reference values).
-// Solvers hand in global PETSc vectors and coefficients; they never see elements.
-// Ownership: each rank evaluates the kernels it owns (METIS partition) and adds into
-// PETSc objects; off-rank vector contributions travel through the ghosted local form,
-// off-rank matrix rows through PETSc's stash.
+// over the free DOFs (supports eliminated; their values are the reference values) and the
+// Lagrange multipliers of the constraints. One vector holds both: the multiplier slots of
+// q hold λ (those of v and a are unused and kept zero), and the multiplier rows of a
+// residual hold g(q, t), in metres. algebraic_mask() marks the multiplier slots, so
+// integrators can treat them as the algebraic part of the DAE (docs/integrators.md).
+// The constraints are linear in q (positions only), so G is constant.
 #include <mpi.h>
 #include <petscmat.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "catena/assembly/dof_map.hpp"
@@ -35,10 +38,14 @@ struct EvalPoint {
 };
 
 struct JacobianCoefficients {
-  double c_K = 1.0;  // ∂f/∂q
-  double c_C = 0.0;  // ∂f/∂v
-  double c_M = 0.0;  // M
+  double c_K = 1.0;       // ∂f/∂q
+  double c_C = 0.0;       // ∂f/∂v
+  double c_M = 0.0;       // M
+  double c_lambda = 0.0;  // Gᵀ (nodal rows, multiplier columns)
+  double c_g = 0.0;       // G (multiplier rows, nodal columns)
 };
+// Statics: J = ∂f/∂q + Gᵀ + G (symmetric).
+inline constexpr JacobianCoefficients kStaticJacobian{1.0, 0.0, 0.0, 1.0, 1.0};
 
 // Per supported node (owned by this rank): reaction of the supports on the node.
 struct Reactions {
@@ -66,18 +73,30 @@ class SecondOrderSystem {
   // Collective. q at the reference configuration (positions and nodal frames).
   void reference_state(Vec q) const;
 
-  // Collective. f(t, q, v; λ) into f (global vector). If element_norm is given, it also
+  // Collective. f(t, q, v; λ) + Gᵀλ into the nodal rows of f, g(q, t) into its multiplier
+  // rows (global vector). If element_norm is given, it also
   // receives element_force_norm(p) from the same pass (one extra reduction).
   void force(const EvalPoint& p, Vec f, double* element_norm = nullptr);
   // Collective. Norm of the unassembled element forces, sqrt(Σ_e |f_e|²): the scale of
   // the round-off in f, against which convergence tolerances are set.
   double element_force_norm(const EvalPoint& p);
-  // Collective. J = c_K K + c_C C + c_M M into J (zeroed first, assembled on return).
+  // Collective. J = c_K K + c_C C + c_M M + c_λ Gᵀ + c_g G into J (zeroed first,
+  // assembled on return). Every entry of the pattern is inserted, zero or not, so all
+  // matrices from this call share one nonzero pattern (MatAXPY SAME_NONZERO_PATTERN).
   void jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
-  // Collective. K = ∂f/∂q and C = ∂f/∂v at p in one element pass (matrices from
-  // create_matrix(); either may be null). For integrators that combine them with
-  // coefficients of their own (the IRK stage matrix).
+  // Collective. K = ∂f/∂q + G (G in the multiplier rows: ∂R/∂q of the whole residual)
+  // and C = ∂f/∂v at p in one element pass (matrices from create_matrix(); either may be
+  // null). For integrators that combine them with coefficients of their own; the
+  // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (constant).
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
+
+  // Constraints (Lagrange multipliers).
+  bool has_constraints() const { return !model_->constraints.empty(); }
+  // Collective. 1 in the multiplier slots, 0 in the nodal ones.
+  void algebraic_mask(Vec mask) const;
+  // Collective. ∂²u/∂t² of the prescribed motions at t in the multiplier slots (0 in the
+  // others): with G constant, the acceleration-level constraint is G a = that.
+  void constraint_acceleration(double t, Vec out) const;
 
   // Collective. Section results for this rank's model elements (ascending index).
   void section_results(const EvalPoint& p, std::vector<int>& elements,
@@ -91,6 +110,10 @@ class SecondOrderSystem {
   // True if the static load path needs its second phase (some cable's prestrain is below
   // the path's tensioning prestrain, see elements::LocalState).
   bool has_slack_prestrain() const;
+
+  // A global DOF in words, for messages: "node 17 (y)" or "constraint 2 (multiplier y,
+  // node 5)" (node ids as in the scene; constraints numbered from 1 in scene order).
+  std::string describe_dof(PetscInt global) const;
 
   // Number of kernels this rank evaluates (for load-balance reports).
   size_t n_local_kernels() const { return kernels_.size(); }
@@ -106,6 +129,20 @@ class SecondOrderSystem {
   void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
   // Adds −f_ext of the moving loads at time t into the ghosted local force array.
   void add_moving_loads(double t, double* f_local) const;
+  // Adds Gᵀλ and g(q, t) of this rank's constraints into the ghosted local force array.
+  void add_constraint_forces(double t, const double* q_local, double* f_local) const;
+  // Inserts c_λ Gᵀ + c_g G of this rank's constraints (and a zero multiplier diagonal).
+  void add_constraint_entries(double c_lambda, double c_g, Mat J) const;
+
+  // A constraint owned by this rank: indices of its multipliers and of the position DOFs
+  // of its nodes (B: −1 when absent), ghosted local and global.
+  struct LocalConstraint {
+    int index = 0;
+    PetscInt lam_local[3], lam_global[3];
+    PetscInt a_local[3], a_global[3];
+    PetscInt b_local[3], b_global[3];
+  };
+  std::vector<LocalConstraint> constraints_;
 
   // Per moving load: cumulative reference length at the start of each path element, and
   // the local kernel index of each path element (−1: another rank's).

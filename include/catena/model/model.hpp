@@ -88,6 +88,27 @@ struct ElasticSupport {
   Vec3 damping = Vec3::Zero();    // N·s/m
 };
 
+// A kinematic constraint on node positions, enforced by Lagrange multipliers λ (three per
+// constraint, one per global axis) rather than by eliminating DOFs, so it can join nodes
+// of different lines (a clamp), hold a node with its slopes free, or drive a node along a
+// prescribed path. g(q, t) = 0 with
+//   coincident:  g = r_A − r_B
+//   pinned:      g = r_A − X_A
+//   prescribed:  g = r_A − X_A − u(t),  u(t) = velocity·t + amplitude·sin(2π·frequency·t)
+// (X_A: reference position, so the reference configuration satisfies g(q_ref, 0) = 0).
+// λ is the force the constraint applies to node A, with the sign convention
+// M a + f + Gᵀλ = 0 (G = ∂g/∂q): the force on A is −λ (on B, +λ).
+enum class ConstraintType { coincident, pinned, prescribed };
+
+struct Constraint {
+  ConstraintType type = ConstraintType::pinned;
+  int node_a = 0;
+  int node_b = -1;                 // coincident only
+  Vec3 velocity = Vec3::Zero();    // m/s, prescribed only
+  Vec3 amplitude = Vec3::Zero();   // m, prescribed only
+  double frequency = 0.0;          // Hz, prescribed only
+};
+
 struct NodalLoad {
   int node = 0;
   Vec3 force = Vec3::Zero();  // N, dead load
@@ -189,6 +210,7 @@ struct Model {
   std::vector<ElasticSupport> elastic_supports;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;
+  std::vector<Constraint> constraints;
 
   std::vector<MovingLoad> moving_loads;
 

@@ -27,11 +27,14 @@ struct IntegratorCounters {
 // Weighted RMS norm of a local error in the displacement q − q_ref (q_ref: the reference
 // configuration), the usual mixed test of ODE codes (Hairer & Wanner I, II.4):
 //   ‖e‖ = sqrt( (1/N) Σ_i ( e_i / (atol + rtol·max(|d0_i|, |d1_i|)) )² ),  d = q − q_ref,
-// over all N free DOFs; a step is acceptable when ‖e‖ ≤ 1.
+// over all N free DOFs; a step is acceptable when ‖e‖ ≤ 1. Lagrange multipliers are not
+// part of the test (their local error is of lower order in index-3 form, and they are
+// forces, not lengths): entries where `algebraic` is nonzero are skipped.
 struct ErrorTolerance {
   double rtol = 1e-4;
   double atol = 1e-6;
   Vec reference = nullptr;  // q_ref (not owned)
+  Vec algebraic = nullptr;  // multiplier mask (not owned; null: no multipliers)
 };
 
 // Collective. The weighted RMS norm above of `error` for a step from q0 to q1.
