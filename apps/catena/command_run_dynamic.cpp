@@ -45,7 +45,10 @@ class OutputObserver : public solvers::TransientObserver {
     system_.section_results({q, v, {}, t}, elements, sections);
     std::vector<double> axial;
     for (const auto& s : sections) axial.push_back(s.axial_force);
-    writer_.append_sample(t, positions, velocities, slopes, axial);
+    std::vector<int> constraints;
+    std::vector<double> constraint_forces;
+    system_.owned_constraint_forces(q, constraints, constraint_forces);
+    writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces);
   }
 
   void step(const solvers::StepRecord& r) override {
@@ -120,8 +123,13 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     std::vector<elements::SectionResult> unused;
     system.section_results({q.get(), v.get(), {}, 0.0}, owned_elements, unused);
   }
+  std::vector<int> owned_constraints;
+  {
+    std::vector<double> unused;
+    system.owned_constraint_forces(q.get(), owned_constraints, unused);
+  }
   io::TransientWriter writer(comm, m.output.file, m, run_info(cl, system),
-                             system.dof_map().owned_nodes(), owned_elements);
+                             system.dof_map().owned_nodes(), owned_elements, owned_constraints);
   OutputObserver observer(system, writer, m.output);
   const StopSignal signals;
   solvers::TransientReport report;

@@ -208,6 +208,19 @@ std::string SecondOrderSystem::describe_dof(PetscInt global) const {
   return "node " + id + " (" + (comp >= 0 ? names[comp] : "?") + ")";
 }
 
+void SecondOrderSystem::owned_constraint_forces(Vec q, std::vector<int>& constraints,
+                                                std::vector<double>& forces) const {
+  constraints.clear();
+  forces.clear();
+  const PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &a));
+  for (const LocalConstraint& lc : constraints_) {
+    constraints.push_back(lc.index);
+    for (int k = 0; k < 3; ++k) forces.push_back(-a[lc.lam_local[k]]);
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &a));
+}
+
 void SecondOrderSystem::algebraic_mask(Vec mask) const {
   CATENA_PETSC(VecSet(mask, 0.0));
   for (const LocalConstraint& lc : constraints_)

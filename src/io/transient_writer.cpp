@@ -105,27 +105,33 @@ struct TransientWriter::Impl {
   std::string path;
   int rank = 0;
   ParallelHdf5File file;
-  RowRedistribution nodes, elements;
-  Series time, positions, velocities, slopes, axial;
+  RowRedistribution nodes, elements, constraints;
+  bool has_constraints = false;
+  Series time, positions, velocities, slopes, axial, constraint_forces;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
   std::vector<StepRecord> pending_steps;
   bool closed = false;
 
   Impl(MPI_Comm c, const std::string& p, const model::Model& m, const std::vector<int>& own_nodes,
-       const std::vector<int>& own_elements)
+       const std::vector<int>& own_elements, const std::vector<int>& own_constraints)
       : comm(c),
         path(p),
         file(c, p),
         nodes(c, static_cast<std::int64_t>(m.nodes.size()), own_nodes, "owned_nodes"),
-        elements(c, static_cast<std::int64_t>(m.elements.size()), own_elements, "owned_elements") {
+        elements(c, static_cast<std::int64_t>(m.elements.size()), own_elements, "owned_elements"),
+        constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
+                    "owned_constraints"),
+        has_constraints(!m.constraints.empty()) {
     MPI_Comm_rank(c, &rank);
   }
 };
 
 TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
                                  const RunInfo& info, std::vector<int> owned_nodes,
-                                 std::vector<int> owned_elements)
-    : impl_(std::make_unique<Impl>(comm, path, model, owned_nodes, owned_elements)) {
+                                 std::vector<int> owned_elements,
+                                 std::vector<int> owned_constraints)
+    : impl_(std::make_unique<Impl>(comm, path, model, owned_nodes, owned_elements,
+                                   owned_constraints)) {
   Impl& s = *impl_;
   const hid_t f = s.file.id();
   const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
@@ -157,7 +163,25 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   write_block_dataset<std::int64_t>(
       s.file, {"/mesh/element_nodes", static_cast<std::int64_t>(n_elements), 2}, eb, element_nodes);
 
+  if (s.has_constraints) {
+    const RowBlock& cb = s.constraints.block();
+    std::vector<std::int64_t> ends;
+    for (std::int64_t k = 0; k < cb.count; ++k) {
+      const model::Constraint& c = model.constraints[static_cast<size_t>(cb.begin + k)];
+      ends.push_back(c.node_a);
+      ends.push_back(c.node_b);
+    }
+    write_block_dataset<std::int64_t>(
+        s.file,
+        {"/mesh/constraint_nodes", static_cast<std::int64_t>(model.constraints.size()), 2},
+        cb, ends);
+  }
+
   const std::string& p = s.path;
+  if (s.has_constraints)
+    s.constraint_forces =
+        Series(f, p, "/samples/constraint_forces",
+               {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, "N");
   s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, "s");
   s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
   s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
@@ -187,7 +211,8 @@ TransientWriter::~TransientWriter() = default;  // handles close locally (see he
 void TransientWriter::append_sample(double t, const std::vector<double>& positions,
                                     const std::vector<double>& velocities,
                                     const std::vector<double>& slopes,
-                                    const std::vector<double>& axial_force) {
+                                    const std::vector<double>& axial_force,
+                                    const std::vector<double>& constraint_forces) {
   Impl& s = *impl_;
   const hid_t x = s.file.collective_transfer();
   const RowBlock root_row{0, s.rank == 0 ? 1 : 0};
@@ -200,6 +225,10 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
   s.slopes.append(x, 1, s.nodes.block(), d.data());
   const std::vector<double> n = s.elements.to_block(axial_force, 1);
   s.axial.append(x, 1, s.elements.block(), n.data());
+  if (s.has_constraints) {
+    const std::vector<double> c = s.constraints.to_block(constraint_forces, 3);
+    s.constraint_forces.append(x, 1, s.constraints.block(), c.data());
+  }
 }
 
 void TransientWriter::append_step(const StepRecord& record) {
@@ -240,7 +269,8 @@ void TransientWriter::close(const std::string& status,
   check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
   write_string_attribute(root, "status", status);
   for (const auto& [name, value] : statistics) write_double_attribute(root, name.c_str(), value);
-  for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial, &s.step_time,
+  for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial,
+                         &s.constraint_forces, &s.step_time,
                          &s.step_dt, &s.step_iterations, &s.step_error, &s.step_rejected})
     series->reset();
   s.file.close();

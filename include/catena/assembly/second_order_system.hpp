@@ -104,6 +104,10 @@ class SecondOrderSystem {
   // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
   // slopes (∂r/∂x, zero where a node has none), 3 each.
   void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes);
+  // Not collective. This rank's constraints (ascending index) and the force each applies
+  // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
+  void owned_constraint_forces(Vec q, std::vector<int>& constraints,
+                               std::vector<double>& forces) const;
   // Collective. Support reactions at owned supported nodes.
   Reactions reactions(const EvalPoint& p);
 

@@ -2,8 +2,10 @@
 // Time-series HDF5 output of a dynamic run, written in parallel (collective MPI-IO) while
 // the run goes on. Layout (docs/output.md): /mesh (node ids, reference positions, element
 // nodes), /time, /samples/{positions, velocities, slopes} (n_samples × n_nodes × 3),
-// /samples/axial_force (n_samples × n_elements), /steps/* (one row per accepted step) and
-// root attributes (scene text, run facts, `status`).
+// /samples/axial_force (n_samples × n_elements), with constraints /mesh/constraint_nodes
+// (n_constraints × 2 node indices, −1: none) and /samples/constraint_forces
+// (n_samples × n_constraints × 3: the force on node A), /steps/* (one row per accepted
+// step) and root attributes (scene text, run facts, `status`).
 //
 // The file is written in place (not atomically) so that a long run's results up to the
 // last flush() are readable after a crash: flush() writes the buffered step rows and
@@ -32,19 +34,21 @@ struct StepRecord {
 class TransientWriter {
  public:
   // Collective. Creates `path` (truncating it) and writes the mesh and run facts.
-  // owned_nodes/owned_elements: this rank's rows, ascending; every node/element is owned
-  // by exactly one rank.
+  // owned_nodes/owned_elements/owned_constraints: this rank's rows, ascending; every
+  // node/element/constraint is owned by exactly one rank.
   TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
                   const RunInfo& info, std::vector<int> owned_nodes,
-                  std::vector<int> owned_elements);
+                  std::vector<int> owned_elements, std::vector<int> owned_constraints = {});
   ~TransientWriter();
   TransientWriter(const TransientWriter&) = delete;
   TransientWriter& operator=(const TransientWriter&) = delete;
 
-  // Collective. One sample: this rank's owned rows (3 values per node, 1 per element).
+  // Collective. One sample: this rank's owned rows (3 values per node, 1 per element, 3
+  // per constraint).
   void append_sample(double t, const std::vector<double>& positions,
                      const std::vector<double>& velocities, const std::vector<double>& slopes,
-                     const std::vector<double>& axial_force);
+                     const std::vector<double>& axial_force,
+                     const std::vector<double>& constraint_forces = {});
   // Not collective (identical on every rank): buffered until flush().
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.
