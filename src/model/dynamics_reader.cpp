@@ -57,10 +57,12 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
                             "lobatto_iiia, lobatto_iiic, sdirk), not to " + o.type);
   }
   const Field alpha = in.child("alpha");
-  if (o.type == "hht")
+  // petsc: HHT's alpha mapped onto -ts_type alpha2 (ignored by the other TS types).
+  if (o.type == "hht" || o.type == "petsc")
     o.alpha = alpha.real_or(o.alpha, RealRange::between(-1.0 / 3.0, true, 0.0, true, ""));
   else
-    fail_if_present(alpha, "'alpha' applies to integrator type hht only");
+    fail_if_present(alpha, "'alpha' applies to integrator type hht only (and petsc, for "
+                           "-ts_type alpha2)");
   o.dt = in.child("dt").real_or(o.dt, RealRange::positive("s"));
   o.adaptive = in.child("adaptive").boolean_or(o.adaptive);
   const char* only_adaptive = " only applies with adaptive: true";

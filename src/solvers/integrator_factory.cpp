@@ -3,6 +3,7 @@
 #include "catena/core/error.hpp"
 #include "catena/solvers/hht_integrator.hpp"
 #include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/petsc_ts_integrator.hpp"
 
 namespace catena::solvers {
 
@@ -17,9 +18,21 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     h.full_newton = o.newton == "full";
     return std::make_unique<HhtIntegrator>(system, h);
   }
-  if (o.type == "petsc")
-    throw InputError({"", 0, "integrator.type"},
-                     "integrator type 'petsc' is not available in this build");
+  if (o.type == "petsc") {
+    if (system.has_constraints())
+      throw InputError({"", 0, "integrator.type"},
+                       "integrator type 'petsc' takes no Lagrange-multiplier constraints (the "
+                       "scene has " + std::to_string(system.model().constraints.size()) +
+                       "): PETSc's TS sees an ODE; use hht or an implicit Runge-Kutta type, or "
+                       "supports instead of pinned constraints");
+    // The TS method itself comes from the options database (-ts_type, ...).
+    PetscTsOptions p;
+    p.alpha = o.alpha;
+    p.rtol = o.newton_rtol;
+    p.atol = o.newton_atol;
+    p.max_newton_iterations = o.max_newton_iterations;
+    return std::make_unique<PetscTsIntegrator>(system, p);
+  }
   IrkOptions i;
   i.family = parse_tableau_family(o.type);
   i.stages = o.stages;
