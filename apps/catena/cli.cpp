@@ -8,7 +8,7 @@ std::string usage() {
   return R"(catena — parallel solver for cables, beams and overhead contact lines
 
 Usage:
-  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [PETSc options]
+  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [PETSc options]
   catena check SCENE.yaml [--set KEY=VALUE ...]
   catena --help
 
@@ -20,6 +20,8 @@ Options:
   -o, --output FILE     output file (default: the scene's output.file, else catena.h5)
   --set KEY=VALUE       override a scene value, e.g. --set lines[0].elements=400
                         --set sections.cw.EA=2e7 (validated like the file; repeatable)
+  --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
+                        OUT.h5 (same scene; analysis.duration may be raised)
   -h, --help            this text
 
 PETSc options (prefix -static_ for the static solver), e.g.:
@@ -78,6 +80,8 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.overrides.push_back(value("--set"));
     } else if (a.rfind("--set=", 0) == 0) {
       cl.overrides.push_back(a.substr(6));
+    } else if (a == "--restart") {
+      cl.restart = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
     } else if (!a.empty() && a[0] == '-') {

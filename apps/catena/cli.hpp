@@ -12,6 +12,7 @@ struct CommandLine {
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
+  bool restart = false;                // --restart: continue from OUT.h5.chk
   std::string joined;                  // the whole command line, for the output file
 };
 

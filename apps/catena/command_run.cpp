@@ -86,6 +86,10 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
     run_dynamic(comm, cl, m);
     return;
   }
+  if (cl.restart)
+    throw InputError({cl.scene, 0, "--restart"},
+                     "--restart continues a dynamic run from its checkpoint; this scene's "
+                     "analysis is static (analysis.type: static)");
   const double start = MPI_Wtime();
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();

@@ -1,18 +1,21 @@
 // `catena run` for analysis.type: dynamic — initial state (static equilibrium or the
 // reference, plus the scene's offsets and velocity), the integrator and step control the
 // scene asks for, time-series HDF5 output sampled at the output interval, wall-clock
-// flushes, and a clean stop on SIGTERM/SIGINT (output closed with status "interrupted").
-// Checkpoints and --restart are not implemented yet.
+// flushes, checkpoints (atomic, <output>.chk: on the wall clock, at SIGTERM/SIGINT and at
+// the end) and a clean stop on SIGTERM/SIGINT (output closed with status "interrupted").
+// --restart continues from the checkpoint, appending to the output file.
 #include <petscsys.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/checkpoint.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/solvers/integrator_factory.hpp"
 #include "catena/solvers/static_solver.hpp"
@@ -30,11 +33,35 @@ namespace {
 class OutputObserver : public solvers::TransientObserver {
  public:
   OutputObserver(assembly::SecondOrderSystem& system, io::TransientWriter& writer,
-                 const model::OutputOptions& output)
+                 const model::OutputOptions& output, const solvers::TimeIntegrator& integrator)
       : system_(system),
         writer_(writer),
         output_(output),
-        last_flush_(MPI_Wtime()) {}
+        integrator_(integrator),
+        last_flush_(MPI_Wtime()),
+        last_checkpoint_(last_flush_) {}
+
+  // Collective. Flushes the output, then writes the checkpoint of the integrator's
+  // current (accepted) state, recording how many output rows belong to it.
+  void checkpoint() {
+    writer_.flush();
+    io::CheckpointFacts facts;
+    facts.time = integrator_.time();
+    facts.last_dt = last_dt_;
+    facts.samples = writer_.samples_written();
+    facts.steps = writer_.steps_written();
+    facts.integrator = integrator_.name();
+    io::CheckpointShare share;
+    share.nodes = system_.dof_map().owned_nodes();
+    std::vector<double> unused;
+    system_.owned_node_rows(integrator_.q(), share.q, share.lambda);
+    system_.owned_node_rows(integrator_.v(), share.v, unused);
+    system_.owned_node_rows(integrator_.a(), share.a, unused);
+    std::vector<double> forces;
+    system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
+    io::write_checkpoint(system_.comm(), output_.file + ".chk", system_.model(), facts, share);
+  }
+  void set_last_dt(double dt) { last_dt_ = dt; }
 
   void sample(double t, Vec q, Vec v) override {
     std::vector<double> positions, slopes, velocities, unused;
@@ -53,9 +80,14 @@ class OutputObserver : public solvers::TransientObserver {
 
   void step(const solvers::StepRecord& r) override {
     writer_.append_step({r.time, r.dt, r.newton_iterations, r.error, r.rejected});
+    last_dt_ = r.dt;
     double now = MPI_Wtime();
     MPI_Bcast(&now, 1, MPI_DOUBLE, 0, system_.comm());
-    if (now - last_flush_ >= output_.flush_wall_seconds) {
+    if (output_.checkpoint_wall_seconds > 0.0 &&
+        now - last_checkpoint_ >= output_.checkpoint_wall_seconds) {
+      checkpoint();  // flushes too
+      last_checkpoint_ = last_flush_ = now;
+    } else if (now - last_flush_ >= output_.flush_wall_seconds) {
       writer_.flush();
       last_flush_ = now;
     }
@@ -68,7 +100,9 @@ class OutputObserver : public solvers::TransientObserver {
   assembly::SecondOrderSystem& system_;
   io::TransientWriter& writer_;
   const model::OutputOptions& output_;
-  double last_flush_;
+  const solvers::TimeIntegrator& integrator_;
+  double last_flush_, last_checkpoint_;
+  double last_dt_ = 0.0;
 };
 
 std::vector<std::pair<std::string, double>> statistics(const solvers::TransientReport& r,
@@ -94,22 +128,50 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
   const model::DynamicOptions& dyn = m.dynamic_options;
-  if (dyn.initial.from_static) {
-    solvers::StaticSolver statics(system, m.static_options);
-    const solvers::StaticReport report = statics.solve(q.get());
-    if (rank == 0)
-      std::printf("initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
-                  report.n_load_steps, report.n_newton_iterations, report.residual_norm);
-  }
-  apply_initial_conditions(system, q.get(), v.get());
-
   std::unique_ptr<solvers::TimeIntegrator> integrator =
       solvers::make_integrator(system, dyn.integrator);
-  integrator->set_state(0.0, q.get(), v.get(), nullptr);
   solvers::TransientOptions options;
   options.t_end = dyn.duration;
   options.sample_interval = m.output.interval;
   options.step = solvers::make_step_control(dyn.integrator);
+
+  std::optional<io::Checkpoint> resumed;
+  if (cl.restart) {
+    resumed = io::read_checkpoint(comm, m.output.file + ".chk", m, integrator->name());
+    if (resumed->facts.time >= dyn.duration * (1 - 1e-12))
+      throw InputError({m.source_file, 0, "analysis.duration"},
+                       "analysis.duration = " + std::to_string(dyn.duration) +
+                           " s is not beyond the checkpoint's t = " +
+                           std::to_string(resumed->facts.time) +
+                           " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
+                           std::to_string(2 * resumed->facts.time));
+    VecHandle a = system.create_vector();
+    const std::vector<double> no_multipliers(3 * m.constraints.size(), 0.0);
+    system.set_from_node_rows(q.get(), resumed->q, resumed->lambda);
+    system.set_from_node_rows(v.get(), resumed->v, no_multipliers);
+    system.set_from_node_rows(a.get(), resumed->a, no_multipliers);
+    integrator->set_state(resumed->facts.time, q.get(), v.get(), a.get());
+    options.resume = true;
+    options.sample_origin = 0.0;
+    if (options.step.adaptive && resumed->facts.last_dt > 0.0)
+      options.step.dt = resumed->facts.last_dt;
+    if (rank == 0)
+      std::printf("restart: from %s.chk at t = %g s (%lld samples, %lld steps kept)\n",
+                  m.output.file.c_str(), resumed->facts.time,
+                  static_cast<long long>(resumed->facts.samples),
+                  static_cast<long long>(resumed->facts.steps));
+  } else {
+    if (dyn.initial.from_static) {
+      solvers::StaticSolver statics(system, m.static_options);
+      const solvers::StaticReport report = statics.solve(q.get());
+      if (rank == 0)
+        std::printf(
+            "initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
+            report.n_load_steps, report.n_newton_iterations, report.residual_norm);
+    }
+    apply_initial_conditions(system, q.get(), v.get());
+    integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  }
   if (rank == 0) {
     std::printf("dynamics: %s, %s step %g s, %g s simulated, %lld free DOFs on %d ranks\n",
                 integrator->name().c_str(), options.step.adaptive ? "adaptive, first" : "fixed",
@@ -128,21 +190,32 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     std::vector<double> unused;
     system.owned_constraint_forces(q.get(), owned_constraints, unused);
   }
-  io::TransientWriter writer(comm, m.output.file, m, run_info(cl, system),
-                             system.dof_map().owned_nodes(), owned_elements, owned_constraints);
-  OutputObserver observer(system, writer, m.output);
+  std::unique_ptr<io::TransientWriter> writer;
+  if (resumed)
+    writer = std::make_unique<io::TransientWriter>(
+        comm, m.output.file, m, system.dof_map().owned_nodes(), owned_elements,
+        owned_constraints, io::ResumePoint{resumed->facts.samples, resumed->facts.steps});
+  else
+    writer = std::make_unique<io::TransientWriter>(comm, m.output.file, m, run_info(cl, system),
+                                                   system.dof_map().owned_nodes(),
+                                                   owned_elements, owned_constraints);
+  OutputObserver observer(system, *writer, m.output, *integrator);
+  if (resumed) observer.set_last_dt(resumed->facts.last_dt);
   const StopSignal signals;
   solvers::TransientReport report;
   try {
     report = solvers::run_transient(system, *integrator, options, observer);
   } catch (const NumericalError& e) {
-    writer.close(std::string("failed: ") + e.what(),
-                 statistics(report, integrator->counters(), MPI_Wtime() - start));
+    // The last checkpoint (if any) stays: it holds a good state to restart from.
+    writer->close(std::string("failed: ") + e.what(),
+                  statistics(report, integrator->counters(), MPI_Wtime() - start));
     throw;
   }
+  // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
+  observer.checkpoint();
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
-  writer.close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
+  writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
   if (rank == 0) {
     std::printf("%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
                 "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
@@ -151,7 +224,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 report.steps_accepted, report.steps_rejected, report.smallest_dt,
                 report.largest_dt, k.newton_iterations, k.factorizations,
                 k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
-    std::printf("output: %s (%ld samples)\n", m.output.file.c_str(), report.samples);
+    std::printf("output: %s (%ld samples), checkpoint %s.chk\n", m.output.file.c_str(),
+                report.samples, m.output.file.c_str());
   }
   if (report.interrupted) throw RunInterrupted{StopSignal::signal_number(), report.t_reached};
 }

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/hermite.hpp"
 #include "catena/model/node_dofs.hpp"
@@ -206,6 +207,40 @@ std::string SecondOrderSystem::describe_dof(PetscInt global) const {
     return "constraint " + std::to_string(c + 1) + " (multiplier " + names[comp] + ", node " +
            id + ")";
   return "node " + id + " (" + (comp >= 0 ? names[comp] : "?") + ")";
+}
+
+void SecondOrderSystem::owned_node_rows(Vec x, std::vector<double>& rows,
+                                        std::vector<double>& multipliers) const {
+  rows.clear();
+  multipliers.clear();
+  const PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(x, &a));
+  for (int n : dofs_.owned_nodes())
+    for (int k = 0; k < 12; ++k) {
+      const PetscInt g = k < dofs_.node_dofs(n) ? dofs_.global_dof(n, k) : -1;
+      rows.push_back(g >= 0 ? a[g - dofs_.first_owned()] : 0.0);
+    }
+  for (const LocalConstraint& lc : constraints_)
+    for (int k = 0; k < 3; ++k) multipliers.push_back(a[lc.lam_local[k]]);
+  CATENA_PETSC(VecRestoreArrayRead(x, &a));
+}
+
+void SecondOrderSystem::set_from_node_rows(Vec x, const std::vector<double>& rows,
+                                           const std::vector<double>& multipliers) const {
+  CATENA_ASSERT(rows.size() == 12 * model_->nodes.size() &&
+                    multipliers.size() == 3 * model_->constraints.size(),
+                "12 values per node, 3 per constraint");
+  PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArray(x, &a));
+  for (int n : dofs_.owned_nodes())
+    for (int k = 0; k < dofs_.node_dofs(n); ++k) {
+      const PetscInt g = dofs_.global_dof(n, k);
+      if (g >= 0) a[g - dofs_.first_owned()] = rows[12 * static_cast<size_t>(n) + k];
+    }
+  for (const LocalConstraint& lc : constraints_)
+    for (int k = 0; k < 3; ++k)
+      a[lc.lam_local[k]] = multipliers[3 * static_cast<size_t>(lc.index) + k];
+  CATENA_PETSC(VecRestoreArray(x, &a));
 }
 
 void SecondOrderSystem::owned_constraint_forces(Vec q, std::vector<int>& constraints,

@@ -1,5 +1,7 @@
 #include "collective_phase.hpp"
 
+#include "atomic_file.hpp"
+
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 
@@ -26,6 +28,17 @@ std::string current_exception_message() {
   } catch (...) {
     return "unknown exception";
   }
+}
+
+void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path) {
+  MPI_Comm node_comm = MPI_COMM_NULL;
+  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node_comm);
+  int node_rank = 0;
+  MPI_Comm_rank(node_comm, &node_rank);
+  MPI_Comm_free(&node_comm);
+  run_collective_phase(comm, [&] {
+    if (node_rank == 0) fsync_path(path);
+  });
 }
 
 }  // namespace catena::io

@@ -12,6 +12,8 @@
 // then enter: keep purely local checks (validation) in their own phase.
 #include <mpi.h>
 
+#include <filesystem>
+
 #include <exception>
 #include <optional>
 #include <string>
@@ -52,5 +54,9 @@ std::invoke_result_t<Phase> run_collective_phase(MPI_Comm comm, Phase&& phase) {
     return std::move(*result);
   }
 }
+
+// Collective. fsyncs `path` once per node: the page cache is per node, and each rank's
+// MPI-IO writes sit in its own node's cache, so one fsync per node makes the file durable.
+void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path);
 
 }  // namespace catena::io

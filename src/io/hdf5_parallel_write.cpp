@@ -68,6 +68,17 @@ ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path) : path_(std:
                     "H5Pset_dxpl_mpio", path_);
 }
 
+ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path, OpenExisting)
+    : path_(std::move(path)) {
+  const PropertyListHandle access = create_property_list(H5P_FILE_ACCESS, path_);
+  check_hdf5_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio", path_);
+  file_ = FileHandle(
+      checked_hdf5_id(H5Fopen(path_.c_str(), H5F_ACC_RDWR, access.get()), "H5Fopen", path_));
+  collective_transfer_ = create_property_list(H5P_DATASET_XFER, path_);
+  check_hdf5_status(H5Pset_dxpl_mpio(collective_transfer_.get(), H5FD_MPIO_COLLECTIVE),
+                    "H5Pset_dxpl_mpio", path_);
+}
+
 void ParallelHdf5File::close() { check_hdf5_status(file_.close(), "H5Fclose", path_); }
 
 GroupHandle create_group(const ParallelHdf5File& file, const char* name) {

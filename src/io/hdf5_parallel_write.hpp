@@ -18,6 +18,10 @@ class ParallelHdf5File {
  public:
   // Collective. Creates `path` (truncating an existing file) for parallel writing.
   ParallelHdf5File(MPI_Comm comm, std::string path);
+  // Collective. Opens the existing file `path` for parallel reading and writing (a
+  // restarted run appending to its output).
+  struct OpenExisting {};
+  ParallelHdf5File(MPI_Comm comm, std::string path, OpenExisting);
 
   hid_t id() const { return file_.get(); }
   const std::string& path() const { return path_; }

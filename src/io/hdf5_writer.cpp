@@ -328,18 +328,6 @@ void write_attributes(const ParallelHdf5File& file, const FileAttributes& attrib
   write_double_attribute(static_group, "residual_norm", attributes.residual_norm);
 }
 
-// Collective. The page cache is per node, and each rank's MPI-IO writes sit in its own
-// node's cache: one fsync per node makes the whole file durable.
-void fsync_once_per_node(MPI_Comm comm, const fs::path& path) {
-  MPI_Comm node_comm = MPI_COMM_NULL;
-  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node_comm);
-  const bool first_on_node = mpi_rank(node_comm) == 0;
-  MPI_Comm_free(&node_comm);
-  run_collective_phase(comm, [&] {
-    if (first_on_node) fsync_path(path);
-  });
-}
-
 // Collective. Steps 1–5 of the file comment.
 void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& model,
                       const StaticResult& result, const RunInfo& info) {

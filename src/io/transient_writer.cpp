@@ -50,6 +50,34 @@ class Series {
     if (unit) write_string_attribute({dataset_.get(), path_}, "unit", unit);
   }
 
+  // Collective. Opens the existing dataset `name` and cuts it to `rows` rows.
+  Series(hid_t file, const std::string& file_path, const char* name, std::vector<hsize_t> shape,
+         hid_t type, hsize_t rows)
+      : name_(name), path_(file_path), shape_(std::move(shape)), type_(type), rows_(rows) {
+    dataset_ = DatasetHandle(
+        checked_hdf5_id(H5Dopen2(file, name, H5P_DEFAULT), "H5Dopen2", path_, name_));
+    const DataspaceHandle space(
+        checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
+    std::vector<hsize_t> dims(shape_.size() + 1);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    if (rank != static_cast<int>(dims.size()))
+      throw Error(path_ + ": dataset " + name_ + " has " + std::to_string(rank) +
+                  " dimensions, expected " + std::to_string(dims.size()) +
+                  " (not this model's output?)");
+    H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+    for (size_t k = 0; k < shape_.size(); ++k)
+      if (dims[k + 1] != shape_[k])
+        throw Error(path_ + ": dataset " + name_ + " has " + std::to_string(dims[k + 1]) +
+                    " columns in dimension " + std::to_string(k + 1) + ", this model " +
+                    std::to_string(shape_[k]) + " (the output of another model?)");
+    if (dims[0] < rows)
+      throw Error(path_ + ": dataset " + name_ + " has " + std::to_string(dims[0]) +
+                  " rows, fewer than the checkpoint's " + std::to_string(rows) +
+                  " (the output is older than the checkpoint)");
+    dims[0] = rows;
+    check_hdf5_status(H5Dset_extent(dataset_.get(), dims.data()), "H5Dset_extent", path_, name_);
+  }
+
   // Collective. Appends n_rows rows; this rank writes rows [first, first + count) of them
   // (a block along the second dimension for node/element-distributed data: `block`).
   void append(hid_t transfer, hsize_t n_rows, const RowBlock& block, const void* data) {
@@ -113,10 +141,12 @@ struct TransientWriter::Impl {
   bool closed = false;
 
   Impl(MPI_Comm c, const std::string& p, const model::Model& m, const std::vector<int>& own_nodes,
-       const std::vector<int>& own_elements, const std::vector<int>& own_constraints)
+       const std::vector<int>& own_elements, const std::vector<int>& own_constraints,
+       bool existing = false)
       : comm(c),
         path(p),
-        file(c, p),
+        file(existing ? ParallelHdf5File(c, p, ParallelHdf5File::OpenExisting{})
+                      : ParallelHdf5File(c, p)),
         nodes(c, static_cast<std::int64_t>(m.nodes.size()), own_nodes, "owned_nodes"),
         elements(c, static_cast<std::int64_t>(m.elements.size()), own_elements, "owned_elements"),
         constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
@@ -206,7 +236,46 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   flush();
 }
 
-TransientWriter::~TransientWriter() = default;  // handles close locally (see header)
+TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
+                                 std::vector<int> owned_nodes, std::vector<int> owned_elements,
+                                 std::vector<int> owned_constraints, const ResumePoint& resume)
+    : impl_(std::make_unique<Impl>(comm, path, model, owned_nodes, owned_elements,
+                                   owned_constraints, true)) {
+  Impl& s = *impl_;
+  const hid_t f = s.file.id();
+  const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
+  const auto n_elements = static_cast<hsize_t>(model.elements.size());
+  const auto samples = static_cast<hsize_t>(resume.samples);
+  const auto steps = static_cast<hsize_t>(resume.steps);
+  const std::string& p = s.path;
+  if (s.has_constraints)
+    s.constraint_forces =
+        Series(f, p, "/samples/constraint_forces",
+               {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, samples);
+  s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, samples);
+  s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.slopes = Series(f, p, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.axial = Series(f, p, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, samples);
+  s.step_time = Series(f, p, "/steps/time", {}, H5T_IEEE_F64LE, steps);
+  s.step_dt = Series(f, p, "/steps/dt", {}, H5T_IEEE_F64LE, steps);
+  s.step_iterations = Series(f, p, "/steps/newton_iterations", {}, H5T_STD_I32LE, steps);
+  s.step_error = Series(f, p, "/steps/error", {}, H5T_IEEE_F64LE, steps);
+  s.step_rejected = Series(f, p, "/steps/rejected", {}, H5T_STD_I32LE, steps);
+  const AttributeTarget root{f, p};
+  check_hdf5_status(H5Adelete(f, "status"), "H5Adelete", p, "status");
+  write_string_attribute(root, "status", "running");
+  flush();
+}
+
+TransientWriter::~TransientWriter() = default;
+
+std::int64_t TransientWriter::samples_written() const {
+  return static_cast<std::int64_t>(impl_->time.rows());
+}
+std::int64_t TransientWriter::steps_written() const {
+  return static_cast<std::int64_t>(impl_->step_time.rows() + impl_->pending_steps.size());
+}  // handles close locally (see header)
 
 void TransientWriter::append_sample(double t, const std::vector<double>& positions,
                                     const std::vector<double>& velocities,
@@ -268,7 +337,12 @@ void TransientWriter::close(const std::string& status,
   const AttributeTarget root{s.file.id(), s.path};
   check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
   write_string_attribute(root, "status", status);
-  for (const auto& [name, value] : statistics) write_double_attribute(root, name.c_str(), value);
+  for (const auto& [name, value] : statistics) {
+    // A restarted run replaces its predecessor's statistics (they describe the last run).
+    if (H5Aexists(s.file.id(), name.c_str()) > 0)
+      check_hdf5_status(H5Adelete(s.file.id(), name.c_str()), "H5Adelete", s.path, name);
+    write_double_attribute(root, name.c_str(), value);
+  }
   for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial,
                          &s.constraint_forces, &s.step_time,
                          &s.step_dt, &s.step_iterations, &s.step_error, &s.step_rejected})

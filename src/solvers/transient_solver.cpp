@@ -44,6 +44,7 @@ class Driver {
     for (VecHandle* v : {&q_save_, &v_save_, &a_save_, &q_big_, &diff_, &q_sample_, &v_sample_})
       *v = system.create_vector();
     t_start_ = integrator.time();
+    origin_ = t_start_;
   }
 
   TransientReport run() {
@@ -51,7 +52,14 @@ class Driver {
     const double t_end = options_.t_end;
     double h = c.dt;
     next_sample_ = 0;
-    emit_samples_up_to(in_.time());
+    if (options_.resume) {
+      origin_ = options_.sample_origin;
+      if (options_.sample_interval > 0.0)
+        while (sample_time(next_sample_) <= in_.time() * (1 + 1e-13) + 1e-300) ++next_sample_;
+      committed_sample_ = next_sample_;
+    } else {
+      emit_samples_up_to(in_.time());
+    }
     int rejected = 0;
     while (in_.time() < t_end * (1 - 1e-14) - 1e-300) {
       if (stop_requested()) {
@@ -163,7 +171,7 @@ class Driver {
   }
 
   double sample_time(long k) const {
-    return t_start_ + static_cast<double>(k) * options_.sample_interval;
+    return origin_ + static_cast<double>(k) * options_.sample_interval;
   }
 
   // Samples up to t not yet taken (t_start's at the beginning) straight to the observer.
@@ -240,6 +248,7 @@ class Driver {
   bool doubling_ = false;
   int k_ = 1;
   ErrorTolerance tol_;
+  double origin_ = 0.0;  // sample grid: origin_ + k·interval
   VecHandle reference_, algebraic_, q_save_, v_save_, a_save_, q_big_, diff_, q_sample_, v_sample_;
   double t_save_ = 0.0, t_start_ = 0.0;
   long next_sample_ = 0, committed_sample_ = 0;

@@ -104,6 +104,15 @@ class SecondOrderSystem {
   // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
   // slopes (∂r/∂x, zero where a node has none), 3 each.
   void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes);
+  // Not collective. x's free DOFs of the owned nodes in the full nodal layout, 12 values
+  // per node of dof_map().owned_nodes() (fixed and absent components 0), and this rank's
+  // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
+  void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
+  // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
+  // from rows (12 per node, all nodes) and its owned multiplier slots from multipliers (3
+  // per constraint, all constraints).
+  void set_from_node_rows(Vec x, const std::vector<double>& rows,
+                          const std::vector<double>& multipliers) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
   // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
   void owned_constraint_forces(Vec q, std::vector<int>& constraints,

@@ -31,6 +31,13 @@ struct StepRecord {
   int rejected = 0;
 };
 
+// Where a restarted run continues an existing output file: the rows it had when the
+// checkpoint was taken (later rows, written before the run stopped, are cut off).
+struct ResumePoint {
+  std::int64_t samples = 0;
+  std::int64_t steps = 0;
+};
+
 class TransientWriter {
  public:
   // Collective. Creates `path` (truncating it) and writes the mesh and run facts.
@@ -39,7 +46,17 @@ class TransientWriter {
   TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
                   const RunInfo& info, std::vector<int> owned_nodes,
                   std::vector<int> owned_elements, std::vector<int> owned_constraints = {});
+  // Collective. Reopens `path`, written by an earlier run of the same model, and continues
+  // it at `resume` (status back to "running"). Throws catena::Error naming the file if it
+  // does not have the layout above, or fewer rows than `resume`.
+  TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
+                  std::vector<int> owned_nodes, std::vector<int> owned_elements,
+                  std::vector<int> owned_constraints, const ResumePoint& resume);
   ~TransientWriter();
+
+  // Rows written so far (samples; steps including those buffered until flush()).
+  std::int64_t samples_written() const;
+  std::int64_t steps_written() const;
   TransientWriter(const TransientWriter&) = delete;
   TransientWriter& operator=(const TransientWriter&) = delete;
 

@@ -39,6 +39,11 @@ struct TransientOptions {
   double t_end = 0.0;            // s
   double sample_interval = 0.0;  // s, 0: sample every accepted step
   StepControl step;
+  // A restarted run continues the sampling of the run it resumes: samples on the grid
+  // sample_origin + k·sample_interval strictly after the start (those at or before it
+  // were written before the checkpoint).
+  bool resume = false;
+  double sample_origin = 0.0;  // s
 };
 
 // One accepted step, for statistics output.

@@ -1,0 +1,57 @@
+#pragma once
+// Checkpoints of a dynamic run: the integrator's state at an accepted step, enough to
+// continue the run with `catena run SCENE --restart` after a crash, a SIGTERM or a queue
+// time limit, on any number of ranks.
+//
+// File `<output>.chk` (HDF5, docs/output.md): /q, /v, /a (n_nodes × 12: the nodal layout
+// [r, r_x, r_y, r_z] of assembly/dof_map.hpp, fixed and absent components 0), /lambda
+// (n_constraints × 3) and attributes time, last_dt, samples, steps (the output file's row
+// counts at the checkpoint), integrator, n_nodes, n_elements, n_constraints. Node-indexed
+// rather than DOF-indexed, so it does not depend on the partition.
+//
+// Written atomically: a temporary sibling is written in parallel, fsynced, and renamed over
+// the previous checkpoint by rank 0, so a crash during a checkpoint leaves the previous one.
+#include <mpi.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "catena/model/model.hpp"
+
+namespace catena::io {
+
+struct CheckpointFacts {
+  double time = 0.0;     // s, the state's time
+  double last_dt = 0.0;  // s, the last accepted step (an adaptive restart starts with it)
+  std::int64_t samples = 0, steps = 0;  // output rows written up to the checkpoint
+  std::string integrator;               // TimeIntegrator::name() of the run
+};
+
+// This rank's share: owned nodes (ascending) with 12 values each of q, v, a, and owned
+// constraints (ascending) with 3 multipliers each.
+struct CheckpointShare {
+  std::vector<int> nodes;
+  std::vector<double> q, v, a;
+  std::vector<int> constraints;
+  std::vector<double> lambda;
+};
+
+// Collective. Writes `path` atomically.
+void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
+                      const CheckpointFacts& facts, const CheckpointShare& share);
+
+// The whole checkpoint (every node), as read back on every rank.
+struct Checkpoint {
+  CheckpointFacts facts;
+  std::vector<double> q, v, a;  // 12 per node
+  std::vector<double> lambda;   // 3 per constraint
+};
+
+// Collective (every rank reads the file). Throws catena::InputError naming the file if it
+// is missing or unreadable, and if it was written for a model with other node, element or
+// constraint counts or by another integrator (`integrator`: this run's name).
+Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
+                           const std::string& integrator);
+
+}  // namespace catena::io

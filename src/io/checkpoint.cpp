@@ -1,0 +1,169 @@
+#include "catena/io/checkpoint.hpp"
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <optional>
+
+#include "atomic_file.hpp"
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "collective_phase.hpp"
+#include "hdf5_attributes.hpp"
+#include "hdf5_error.hpp"
+#include "hdf5_handles.hpp"
+#include "hdf5_parallel_write.hpp"
+#include "row_redistribution.hpp"
+
+namespace catena::io {
+namespace fs = std::filesystem;
+namespace {
+
+std::int64_t count_of(const model::Model& m, const char* what) {
+  const std::string w = what;
+  if (w == "n_nodes") return static_cast<std::int64_t>(m.nodes.size());
+  if (w == "n_elements") return static_cast<std::int64_t>(m.elements.size());
+  return static_cast<std::int64_t>(m.constraints.size());
+}
+
+// Serial reads of a checkpoint (every rank opens the file read-only).
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path) {
+    file_ = FileHandle(
+        checked_hdf5_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "H5Fopen", path));
+  }
+  double real(const char* name) const {
+    double value = 0.0;
+    read_attribute(name, H5T_NATIVE_DOUBLE, &value);
+    return value;
+  }
+  std::int64_t integer(const char* name) const {
+    std::int64_t value = 0;
+    read_attribute(name, H5T_NATIVE_INT64, &value);
+    return value;
+  }
+  std::string text(const char* name) const {
+    const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
+                                            path_, name));
+    const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, name));
+    char* value = nullptr;
+    check_hdf5_status(H5Aread(a.get(), type.get(), &value), "H5Aread", path_, name);
+    std::string out = value ? value : "";
+    H5free_memory(value);
+    return out;
+  }
+  std::vector<double> values(const char* name, std::size_t expected) const {
+    std::vector<double> out(expected);
+    const DatasetHandle d(
+        checked_hdf5_id(H5Dopen2(file_.get(), name, H5P_DEFAULT), "H5Dopen2", path_, name));
+    const DataspaceHandle space(checked_hdf5_id(H5Dget_space(d.get()), "H5Dget_space", path_, name));
+    if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != expected)
+      throw Error(path_ + ": dataset " + name + " has the wrong size (not this model's checkpoint)");
+    if (expected > 0)
+      check_hdf5_status(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                out.data()),
+                        "H5Dread", path_, name);
+    return out;
+  }
+
+ private:
+  void read_attribute(const char* name, hid_t type, void* value) const {
+    const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
+                                            path_, name));
+    check_hdf5_status(H5Aread(a.get(), type, value), "H5Aread", path_, name);
+  }
+  std::string path_;
+  FileHandle file_;
+};
+
+// Reads the checkpoint on this rank; throws catena::Error saying why it cannot be used.
+Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
+                             const std::string& integrator) {
+  auto fail = [&](const std::string& why) { throw Error(why); };
+  if (!fs::is_regular_file(path))
+    fail("no such file (a run writes <output>.chk at its checkpoints, at SIGTERM/SIGINT "
+         "and at the end)");
+  const Reader r(path);
+  if (r.text("format") != "catena-checkpoint-1") fail("not a Catena checkpoint");
+  for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
+    if (r.integer(count) != count_of(model, count))
+      fail(std::string(count) + " = " + std::to_string(r.integer(count)) +
+           " in the checkpoint, " + std::to_string(count_of(model, count)) +
+           " in this scene (a different model)");
+  Checkpoint c;
+  c.facts.integrator = r.text("integrator");
+  if (c.facts.integrator != integrator)
+    fail("written by integrator " + c.facts.integrator + ", this run uses " + integrator);
+  c.facts.time = r.real("time");
+  c.facts.last_dt = r.real("last_dt");
+  c.facts.samples = r.integer("samples");
+  c.facts.steps = r.integer("steps");
+  const std::size_t n = model.nodes.size();
+  c.q = r.values("/q", 12 * n);
+  c.v = r.values("/v", 12 * n);
+  c.a = r.values("/a", 12 * n);
+  c.lambda = r.values("/lambda", 3 * model.constraints.size());
+  return c;
+}
+
+}  // namespace
+
+void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
+                      const CheckpointFacts& facts, const CheckpointShare& share) {
+  const bool is_root = mpi_rank(comm) == 0;
+  long long root_pid = static_cast<long long>(::getpid());
+  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
+  const fs::path temporary_path = temporary_sibling(path, static_cast<pid_t>(root_pid));
+  std::optional<TemporaryFile> temporary;
+  if (is_root) temporary.emplace(temporary_path);
+  {
+    ParallelHdf5File file = run_collective_phase(
+        comm, [&] { return ParallelHdf5File(comm, temporary_path.string()); });
+    const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
+    const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
+    const RowRedistribution nodes(comm, n_nodes, share.nodes, "checkpoint nodes");
+    const RowRedistribution constraints(comm, n_constraints, share.constraints,
+                                        "checkpoint constraints");
+    for (auto [name, values] : {std::pair{"/q", &share.q}, {"/v", &share.v}, {"/a", &share.a}}) {
+      const std::vector<double> block = nodes.to_block(*values, 12);
+      write_block_dataset<double>(file, {name, n_nodes, 12}, nodes.block(), block);
+    }
+    const std::vector<double> lambda = constraints.to_block(share.lambda, 3);
+    write_block_dataset<double>(file, {"/lambda", n_constraints, 3, "N"}, constraints.block(),
+                                lambda);
+    run_collective_phase(comm, [&] {
+      const AttributeTarget root{file.id(), file.path()};
+      write_string_attribute(root, "format", "catena-checkpoint-1");
+      write_double_attribute(root, "time", facts.time);
+      write_double_attribute(root, "last_dt", facts.last_dt);
+      write_int64_attribute(root, "samples", facts.samples);
+      write_int64_attribute(root, "steps", facts.steps);
+      write_string_attribute(root, "integrator", facts.integrator);
+      for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
+        write_int64_attribute(root, count, count_of(model, count));
+    });
+    run_collective_phase(comm, [&] { file.close(); });
+  }
+  fsync_once_per_node(comm, temporary_path);
+  run_collective_phase(comm, [&] {
+    if (!is_root) return;
+    rename_into_place(temporary->path(), path);
+    temporary->release();
+    fsync_path(fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path("."));
+  });
+}
+
+Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
+                           const std::string& integrator) {
+  // Every rank reads; a failure on any rank becomes the same InputError on all of them.
+  try {
+    return run_collective_phase(comm, [&] { return read_on_this_rank(path, model, integrator); });
+  } catch (const Error& e) {
+    throw InputError(InputLocation{path, 0, ""},
+                     std::string("cannot restart from this checkpoint: ") + e.what());
+  }
+}
+
+}  // namespace catena::io
