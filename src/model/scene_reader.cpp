@@ -20,6 +20,7 @@
 #include "free_body_check.hpp"
 #include "dynamics_reader.hpp"
 #include "line_generator.hpp"
+#include "moving_load_reader.hpp"
 #include "nodal_frames.hpp"
 #include "node_reader.hpp"
 #include "overrides.hpp"
@@ -35,7 +36,7 @@ const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
       "name",         "gravity",  "sections",         "nodes", "lines",
       "elements",     "supports", "elastic_supports", "loads", "masses",
-      "constraints",  "analysis", "integrator", "output"};
+      "constraints",  "moving_loads", "analysis", "integrator", "output"};
   return keys;
 }
 
@@ -94,6 +95,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);
   detail::read_output(scene.child("output"), model.output);
   detail::read_dynamics(scene, model);
+  detail::read_moving_loads(scene.child("moving_loads"), build);
   detail::check_no_free_body(build);
 }
 

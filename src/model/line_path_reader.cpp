@@ -1,0 +1,114 @@
+#include "line_path_reader.hpp"
+
+#include <variant>
+
+#include "did_you_mean.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text.empty() ? "(none)" : text;
+}
+
+const char* kind_name(const ElementProps& props) {
+  static constexpr const char* names[] = {"cable", "beam", "bar", "spring"};
+  return names[props.index()];
+}
+
+// One line of a path: its name, where it was named, and its elements.
+struct PathLine {
+  std::string name;
+  Field where;
+  const std::vector<int>* elements;
+};
+
+// The line named at `reference`; errors if there is none or it is not a cable/beam line.
+PathLine resolve_line(const Field& reference, const LineTable& lines, const Model& model,
+                      const char* what) {
+  const std::string name = reference.text();
+  const auto it = lines.elements.find(name);
+  if (it == lines.elements.end())
+    reference.fail("no line named '" + name + "';" + did_you_mean(name, lines.names) +
+                   " expected the name of a line under 'lines'; lines: " + joined(lines.names));
+  // Every element of a line has the line's section, so the first one tells the kind.
+  const ElementProps& props = model.elements[it->second.front()].props;
+  if (!std::holds_alternative<CableProps>(props) && !std::holds_alternative<BeamProps>(props))
+    reference.fail("line '" + name + "' is made of " + kind_name(props) +
+                   " elements; " + std::string(what) +
+                   " run on cable or beam lines (their shape functions place the point "
+                   "between the nodes)");
+  return {name, reference, &it->second};
+}
+
+}  // namespace
+
+LineTable named_lines(const SceneBuild& build) {
+  LineTable table;
+  const std::vector<ElementDesc>& elements = build.model.elements;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const std::string& name = elements[e].set;
+    const int index = static_cast<int>(e);
+    if (name.empty() || !build.element_origin(index).path().starts_with("lines[")) continue;
+    const auto [it, inserted] = table.elements.try_emplace(name);
+    if (inserted) table.names.push_back(name);
+    it->second.push_back(index);
+  }
+  return table;
+}
+
+// The element path of `line`: one line name, or a list of names in path order whose ends
+// connect (the last node of each is the first node of the next).
+std::vector<int> read_path(const Field& line, const LineTable& lines, const Model& model,
+                           const char* what) {
+  const std::string expected = "a line name or a list of line names in path order";
+  if (!line.present()) line.fail("missing required key; expected " + expected);
+  if (line.node().IsNull()) line.fail("no value given; expected " + expected);
+  if (line.is_map()) line.fail("expected " + expected + ", got " + line.value_text());
+  std::vector<Field> references;
+  if (line.is_list()) {
+    references = line.items();
+    if (references.empty()) line.fail("the path is empty; expected " + expected);
+  } else {
+    references.push_back(line);
+  }
+
+  std::vector<PathLine> path;
+  std::vector<int> elements;
+  for (const Field& reference : references) {
+    const PathLine next = resolve_line(reference, lines, model, what);
+    for (const PathLine& earlier : path)
+      if (earlier.name == next.name)
+        reference.fail("line '" + next.name + "' appears twice in the path (first at " +
+                       earlier.where.path() + "); a path runs along each line once");
+    if (!path.empty()) {
+      const PathLine& previous = path.back();
+      const int end = model.elements[previous.elements->back()].nodes.back();
+      const int start = model.elements[next.elements->front()].nodes.front();
+      if (end != start)
+        reference.fail("lines '" + previous.name + "' and '" + next.name + "' do not connect: '" +
+                       previous.name + "' ends at node " + std::to_string(model.nodes[end].id) +
+                       " but '" + next.name + "' starts at node " +
+                       std::to_string(model.nodes[start].id) +
+                       "; expected consecutive lines of the path to share a node (the 'to' of "
+                       "one is the 'from' of the next)");
+    }
+    path.push_back(next);
+    elements.insert(elements.end(), next.elements->begin(), next.elements->end());
+  }
+  return elements;
+}
+
+// Reference (mesh) length of the path: the arc length the load travels along.
+double path_length(const std::vector<int>& elements, const Model& model) {
+  double length = 0.0;
+  for (int e : elements) {
+    const std::vector<int>& nodes = model.elements[e].nodes;
+    length += (model.nodes[nodes.back()].position - model.nodes[nodes.front()].position).norm();
+  }
+  return length;
+}
+
+}  // namespace catena::model::detail
