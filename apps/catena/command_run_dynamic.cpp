@@ -17,6 +17,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
 #include "catena/io/transient_writer.hpp"
+#include "catena/io/transient_xdmf.hpp"
 #include "catena/solvers/integrator_factory.hpp"
 #include "catena/solvers/static_solver.hpp"
 #include "catena/solvers/transient_solver.hpp"
@@ -104,6 +105,22 @@ class OutputObserver : public solvers::TransientObserver {
   double last_flush_, last_checkpoint_;
   double last_dt_ = 0.0;
 };
+
+// Not collective (rank 0). The ParaView description of the closed output (all its samples,
+// those of earlier runs a restart continued included). A failure here costs the picture,
+// not the results: it is reported, not thrown.
+void write_xdmf(int rank, const std::string& path, const model::Model& m) {
+  if (rank != 0) return;
+  try {
+    const std::vector<double> times = io::read_sample_times(path);
+    if (!times.empty())
+      io::write_transient_xdmf(path, io::transient_xdmf_path(path),
+                               static_cast<std::int64_t>(m.nodes.size()),
+                               static_cast<std::int64_t>(m.elements.size()), times);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "catena: warning: no XDMF for %s: %s\n", path.c_str(), e.what());
+  }
+}
 
 std::vector<std::pair<std::string, double>> statistics(const solvers::TransientReport& r,
                                                        const solvers::IntegratorCounters& k,
@@ -209,6 +226,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     // The last checkpoint (if any) stays: it holds a good state to restart from.
     writer->close(std::string("failed: ") + e.what(),
                   statistics(report, integrator->counters(), MPI_Wtime() - start));
+    write_xdmf(rank, m.output.file, m);
     throw;
   }
   // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
@@ -216,6 +234,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
   writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
+  write_xdmf(rank, m.output.file, m);
   if (rank == 0) {
     std::printf("%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
                 "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
@@ -224,8 +243,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 report.steps_accepted, report.steps_rejected, report.smallest_dt,
                 report.largest_dt, k.newton_iterations, k.factorizations,
                 k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
-    std::printf("output: %s (%ld samples), checkpoint %s.chk\n", m.output.file.c_str(),
-                report.samples, m.output.file.c_str());
+    std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s.chk\n",
+                m.output.file.c_str(), report.samples,
+                io::transient_xdmf_path(m.output.file).c_str(), m.output.file.c_str());
   }
   if (report.interrupted) throw RunInterrupted{StopSignal::signal_number(), report.t_reached};
 }

@@ -22,4 +22,8 @@ std::filesystem::path xdmf_path_for(const std::filesystem::path& hdf5_path);
 // Not collective. The XDMF document (UTF-8 XML text).
 std::string static_result_xdmf(const XdmfStaticGrid& grid);
 
+// Not collective. `text` with the five XML special characters replaced by entities, for
+// attribute values and element content.
+std::string xml_escaped(const std::string& text);
+
 }  // namespace catena::io

@@ -1,0 +1,42 @@
+#pragma once
+// The XDMF 3 description of a dynamic run's time-series HDF5 file (docs/output.md, "Time
+// series"), so that ParaView can play the run: a temporal collection with one polyline grid
+// per sample, whose geometry and fields are HyperSlab selections of sample k of the
+// /samples datasets. The XDMF only points into the HDF5 file, by its base name, so the
+// pair can be moved together.
+//
+// For the caller's rank 0, after the parallel HDF5 file is closed on every rank: these
+// functions open it with serial HDF5 (the default file access property list).
+//
+//   if (rank == 0) {
+//     const std::vector<double> times = catena::io::read_sample_times(path);
+//     if (!times.empty())
+//       catena::io::write_transient_xdmf(path, catena::io::transient_xdmf_path(path),
+//                                        n_nodes, n_elements, times);
+//   }
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace catena::io {
+
+// Not collective. `hdf5_path` with its extension replaced by ".xmf" (appended if none), the
+// same rule as for static results.
+std::string transient_xdmf_path(const std::string& hdf5_path);
+
+// Not collective. The sample times /time [s] of a closed time-series file.
+// Throws catena::Error naming the file and the failing HDF5 call.
+std::vector<double> read_sample_times(const std::string& hdf5_path);
+
+// Not collective. Writes `xdmf_path` atomically (a temporary sibling renamed into place, so
+// an existing file is replaced only by a complete one) describing the closed time-series
+// file `hdf5_path`: one grid per entry of `times` (the values of /time, in order; at least
+// one: a file without samples gets no XDMF, and the call throws).
+// `xdmf_path` must be in the same directory as `hdf5_path` and differ from it. The
+// datasets' shapes and types are checked against n_nodes, n_elements and times.size()
+// first, so the XDMF never selects outside them. Throws catena::Error naming the files.
+void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_path,
+                          std::int64_t n_nodes, std::int64_t n_elements,
+                          const std::vector<double>& times);
+
+}  // namespace catena::io

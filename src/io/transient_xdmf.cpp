@@ -1,0 +1,302 @@
+// write_transient_xdmf: the XDMF description of a time-series file. Dataset names:
+// transient_layout.hpp; what ParaView shows: docs/output.md ("Time series", ParaView).
+//
+// One Uniform grid per sample inside a temporal collection. Every grid repeats the HDF
+// references to the mesh datasets (one line each); the sampled datasets are HyperSlab
+// DataItems (XDMF's own way to select part of a dataset) choosing row k: start (k, 0, 0),
+// stride 1, count (1, n_nodes, 3). ParaView's "XDMF Reader" reads only that slab from the
+// file. ParaView's Xdmf3 readers (checked: 5.11) do not resolve HyperSlab items and show
+// the grid without points; Xdmf3 has a selection syntax of its own inside the HDF
+// reference, which the XDMF Reader in turn cannot read, so one file serves one of them:
+// the XDMF Reader, which docs/output.md names.
+#include "catena/io/transient_xdmf.hpp"
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "atomic_file.hpp"
+#include "catena/core/error.hpp"
+#include "hdf5_error.hpp"
+#include "hdf5_handles.hpp"
+#include "transient_layout.hpp"
+#include "xdmf_writer.hpp"
+
+namespace catena::io {
+namespace {
+
+namespace layout = transient_layout;
+namespace fs = std::filesystem;
+
+// The sizes the XDMF announces; every one is checked against the file before writing.
+struct SeriesShape {
+  std::int64_t n_samples = 0;
+  std::int64_t n_nodes = 0;
+  std::int64_t n_elements = 0;
+};
+
+// How a dataset is stored, in XDMF's terms (NumberType + Precision in bytes) and HDF5's.
+struct StoredNumber {
+  const char* xdmf_type;
+  int precision;
+  H5T_class_t hdf5_class;
+};
+constexpr StoredNumber float64{"Float", 8, H5T_FLOAT};
+constexpr StoredNumber int64{"Int", 8, H5T_INTEGER};
+
+std::string dimensions_text(const std::vector<std::int64_t>& dimensions) {
+  std::string text;
+  for (const std::int64_t n : dimensions) {
+    if (!text.empty()) text += ' ';
+    text += std::to_string(n);
+  }
+  return text;
+}
+
+// Shortest decimal text that reads back as the same double (the readers use strtod/atof).
+std::string time_text(double t) {
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, t);
+  CATENA_ASSERT(error == std::errc(), "32 characters hold any double");
+  return std::string(buffer, end);
+}
+
+// Writes the XML of the grids, all pointing into one HDF5 file.
+class TransientXdmfText {
+ public:
+  TransientXdmfText(const std::string& hdf5_file_name, const SeriesShape& shape)
+      : file_name_(xml_escaped(hdf5_file_name)), shape_(shape) {}
+
+  std::string document(const std::vector<double>& times) {
+    xml_ << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+         << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+         << "<!-- Catena time series (dynamic run): " << shape_.n_samples
+         << " samples; layout in Catena's docs/output.md. Open with ParaView's XDMF Reader. -->\n"
+         << "<Xdmf Version=\"3.0\">\n"
+         << "  <Domain>\n"
+         << "    <Grid Name=\"samples\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (std::size_t k = 0; k < times.size(); ++k)
+      sample_grid(static_cast<std::int64_t>(k), times[k]);
+    xml_ << "    </Grid>\n"
+         << "  </Domain>\n"
+         << "</Xdmf>\n";
+    return xml_.str();
+  }
+
+ private:
+  void sample_grid(std::int64_t k, double t) {
+    const std::int64_t n_nodes = shape_.n_nodes, n_elements = shape_.n_elements;
+    xml_ << "      <Grid Name=\"sample_" << k << "\" GridType=\"Uniform\">\n"
+         << "        <Time Value=\"" << time_text(t) << "\"/>\n"
+         << "        <Topology TopologyType=\"Polyline\" NodesPerElement=\""
+         << layout::nodes_per_element << "\" NumberOfElements=\"" << n_elements << "\">\n";
+    data_item(10, layout::element_nodes, {n_elements, layout::nodes_per_element}, int64);
+    xml_ << "        </Topology>\n"
+         << "        <Geometry GeometryType=\"XYZ\">\n";
+    // ParaView's XDMF Reader keys its geometry cache on the content of the first child node
+    // of the Geometry's first DataItem: here the comment. With no content there (an
+    // element) it logs an error at every time step; with the same content in every grid it
+    // could reuse sample 0's points at every time. "sample k" differs per grid.
+    sample_slab(10, layout::positions, {n_nodes, 3}, k, "sample " + std::to_string(k));
+    xml_ << "        </Geometry>\n";
+
+    begin_attribute("displacement", "Vector", "Node");
+    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
+         << dimensions_text({n_nodes, 3}) << "\">\n";
+    sample_slab(12, layout::positions, {n_nodes, 3}, k);
+    data_item(12, layout::node_positions, {n_nodes, 3}, float64);
+    xml_ << indent(10) << "</DataItem>\n";
+    end_attribute();
+    sampled_attribute("velocities", "Vector", "Node", layout::velocities, {n_nodes, 3}, k);
+    sampled_attribute("slopes", "Vector", "Node", layout::slopes, {n_nodes, 3}, k);
+    sampled_attribute("axial_force", "Scalar", "Cell", layout::axial_force, {n_elements}, k);
+    begin_attribute("node_ids", "Scalar", "Node");
+    data_item(10, layout::node_ids, {n_nodes}, int64);
+    end_attribute();
+    begin_attribute("element_ids", "Scalar", "Cell");
+    data_item(10, layout::element_ids, {n_elements}, int64);
+    end_attribute();
+    xml_ << "      </Grid>\n";
+  }
+
+  static std::string indent(int n_spaces) {
+    return std::string(static_cast<std::size_t>(n_spaces), ' ');
+  }
+
+  // A whole dataset: "<file>:<dataset>".
+  void data_item(int n_spaces, const char* dataset, const std::vector<std::int64_t>& dimensions,
+                 StoredNumber number) {
+    xml_ << indent(n_spaces) << "<DataItem Dimensions=\"" << dimensions_text(dimensions)
+         << "\" NumberType=\"" << number.xdmf_type << "\" Precision=\"" << number.precision
+         << "\" Format=\"HDF\">" << file_name_ << ':' << dataset << "</DataItem>\n";
+  }
+
+  // Row k of a float64 dataset of shape (n_samples, row_shape...). Its Dimensions are the
+  // selection's count, (1, row_shape...): readers take the values in order, so the leading
+  // 1 does not matter to them.
+  void sample_slab(int n_spaces, const char* dataset, const std::vector<std::int64_t>& row_shape,
+                   std::int64_t k, const std::string& comment = {}) {
+    std::vector<std::int64_t> count{1}, full{shape_.n_samples};
+    count.insert(count.end(), row_shape.begin(), row_shape.end());
+    full.insert(full.end(), row_shape.begin(), row_shape.end());
+    const std::int64_t rank = static_cast<std::int64_t>(full.size());
+    std::vector<std::int64_t> start(full.size(), 0), stride(full.size(), 1);
+    start[0] = k;
+
+    const std::string inner = indent(n_spaces + 2);
+    xml_ << indent(n_spaces) << "<DataItem ItemType=\"HyperSlab\" Dimensions=\""
+         << dimensions_text(count) << "\" NumberType=\"" << float64.xdmf_type << "\" Precision=\""
+         << float64.precision << "\">";
+    if (!comment.empty()) xml_ << "<!-- " << comment << " -->";
+    xml_ << '\n'
+         << inner << "<DataItem Dimensions=\"3 " << rank << "\" NumberType=\"Int\" Format=\"XML\">"
+         << dimensions_text(start) << ' ' << dimensions_text(stride) << ' '
+         << dimensions_text(count) << "</DataItem>\n";
+    data_item(n_spaces + 2, dataset, full, float64);
+    xml_ << indent(n_spaces) << "</DataItem>\n";
+  }
+
+  void begin_attribute(const char* name, const char* type, const char* center) {
+    xml_ << "        <Attribute Name=\"" << name << "\" AttributeType=\"" << type << "\" Center=\""
+         << center << "\">\n";
+  }
+  void end_attribute() { xml_ << "        </Attribute>\n"; }
+
+  void sampled_attribute(const char* name, const char* type, const char* center,
+                         const char* dataset, const std::vector<std::int64_t>& row_shape,
+                         std::int64_t k) {
+    begin_attribute(name, type, center);
+    sample_slab(10, dataset, row_shape, k);
+    end_attribute();
+  }
+
+  std::ostringstream xml_;
+  std::string file_name_;
+  SeriesShape shape_;
+};
+
+// A dataset the XDMF refers to, with the shape and storage it announces.
+struct ExpectedDataset {
+  const char* name;
+  std::vector<std::int64_t> dimensions;
+  StoredNumber number;
+};
+
+FileHandle open_for_reading(const std::string& path) {
+  return FileHandle(
+      checked_hdf5_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "H5Fopen", path));
+}
+
+std::vector<std::int64_t> dataset_dimensions(hid_t dataset, const std::string& path,
+                                             const char* name) {
+  const DataspaceHandle space(checked_hdf5_id(H5Dget_space(dataset), "H5Dget_space", path, name));
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0) throw_hdf5_error("H5Sget_simple_extent_ndims", path, name);
+  std::vector<hsize_t> dimensions(static_cast<std::size_t>(rank));
+  if (H5Sget_simple_extent_dims(space.get(), dimensions.data(), nullptr) < 0)
+    throw_hdf5_error("H5Sget_simple_extent_dims", path, name);
+  return {dimensions.begin(), dimensions.end()};
+}
+
+// Throws unless every dataset the XDMF refers to exists with the announced shape and type.
+void check_datasets(const std::string& path, const SeriesShape& shape) {
+  const FileHandle file = open_for_reading(path);
+  const std::int64_t s = shape.n_samples, n = shape.n_nodes, e = shape.n_elements;
+  const std::vector<ExpectedDataset> expected{
+      {layout::time, {s}, float64},
+      {layout::node_ids, {n}, int64},
+      {layout::node_positions, {n, 3}, float64},
+      {layout::element_ids, {e}, int64},
+      {layout::element_nodes, {e, layout::nodes_per_element}, int64},
+      {layout::positions, {s, n, 3}, float64},
+      {layout::velocities, {s, n, 3}, float64},
+      {layout::slopes, {s, n, 3}, float64},
+      {layout::axial_force, {s, e}, float64},
+  };
+  for (const ExpectedDataset& dataset : expected) {
+    const DatasetHandle handle(checked_hdf5_id(H5Dopen2(file.get(), dataset.name, H5P_DEFAULT),
+                                               "H5Dopen2", path, dataset.name));
+    const std::vector<std::int64_t> found = dataset_dimensions(handle.get(), path, dataset.name);
+    if (found != dataset.dimensions)
+      throw Error("'" + path + "' at " + dataset.name + ": shape (" + dimensions_text(found) +
+                  "), expected (" + dimensions_text(dataset.dimensions) + ") for " +
+                  std::to_string(s) + " samples, " + std::to_string(n) + " nodes, " +
+                  std::to_string(e) + " elements");
+    const DatatypeHandle type(
+        checked_hdf5_id(H5Dget_type(handle.get()), "H5Dget_type", path, dataset.name));
+    if (H5Tget_class(type.get()) != dataset.number.hdf5_class ||
+        H5Tget_size(type.get()) != static_cast<std::size_t>(dataset.number.precision))
+      throw Error("'" + path + "' at " + dataset.name + ": stored type is not " +
+                  (dataset.number.hdf5_class == H5T_FLOAT ? "float64" : "int64"));
+  }
+}
+
+// Both names in one directory: the XDMF refers to the HDF5 file by its base name.
+void check_paths(const fs::path& hdf5_path, const fs::path& xdmf_path) {
+  const fs::path hdf5_absolute = fs::absolute(hdf5_path).lexically_normal();
+  const fs::path xdmf_absolute = fs::absolute(xdmf_path).lexically_normal();
+  if (hdf5_absolute == xdmf_absolute)
+    throw Error("the XDMF file would replace the HDF5 file it describes");
+  if (hdf5_absolute.parent_path() != xdmf_absolute.parent_path())
+    throw Error("the XDMF file must be in the directory of '" + hdf5_path.string() +
+                "': it refers to it by its base name");
+}
+
+}  // namespace
+
+std::string transient_xdmf_path(const std::string& hdf5_path) {
+  return xdmf_path_for(fs::path(hdf5_path)).string();
+}
+
+std::vector<double> read_sample_times(const std::string& hdf5_path) {
+  const Hdf5ErrorPrintingSuppressed quiet_hdf5;
+  const FileHandle file = open_for_reading(hdf5_path);
+  const DatasetHandle dataset(checked_hdf5_id(H5Dopen2(file.get(), layout::time, H5P_DEFAULT),
+                                              "H5Dopen2", hdf5_path, layout::time));
+  const std::vector<std::int64_t> dimensions =
+      dataset_dimensions(dataset.get(), hdf5_path, layout::time);
+  if (dimensions.size() != 1)
+    throw Error("'" + hdf5_path + "' at " + layout::time + ": shape (" +
+                dimensions_text(dimensions) + "), expected one dimension");
+  std::vector<double> times(static_cast<std::size_t>(dimensions[0]));
+  if (!times.empty())
+    check_hdf5_status(
+        H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()),
+        "H5Dread", hdf5_path, layout::time);
+  return times;
+}
+
+void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_path,
+                          std::int64_t n_nodes, std::int64_t n_elements,
+                          const std::vector<double>& times) {
+  const Hdf5ErrorPrintingSuppressed quiet_hdf5;
+  try {
+    check_paths(hdf5_path, xdmf_path);
+    // ParaView's XDMF Reader (5.11) crashes on a temporal collection without grids.
+    if (times.empty()) throw Error("the run has no samples: there is nothing to show");
+    for (const double t : times)
+      if (!std::isfinite(t)) throw Error("a sample time is not finite: " + time_text(t));
+    const SeriesShape shape{static_cast<std::int64_t>(times.size()), n_nodes, n_elements};
+    check_datasets(hdf5_path, shape);
+    const std::string text =
+        TransientXdmfText(fs::path(hdf5_path).filename().string(), shape).document(times);
+
+    const fs::path target(xdmf_path);
+    TemporaryFile temporary(temporary_sibling(target, ::getpid()));
+    write_file_durably(temporary.path(), text);
+    rename_into_place(temporary.path(), target);
+    temporary.release();
+    fsync_path(target.has_parent_path() ? target.parent_path() : fs::path("."));
+  } catch (const Error& error) {
+    throw Error("cannot write '" + xdmf_path + "': " + error.what());
+  }
+}
+
+}  // namespace catena::io

@@ -1,0 +1,367 @@
+// write_transient_xdmf / read_sample_times on a tiny time-series file written here with
+// serial HDF5 in the layout of docs/output.md ("Time series"). The XDMF is checked as
+// text: one Uniform grid per sample with its time; every HDF DataItem names the HDF5 file
+// by its base name and a dataset that exists with the announced shape; every HyperSlab
+// selects row k (k = the grid's index) of a dataset that has it, with a count equal to the
+// HyperSlab's Dimensions and to the dataset's row shape. Failures (shape mismatch, wrong
+// directory, no samples) must throw and leave no file behind.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "catena/core/error.hpp"
+#include "catena/io/transient_xdmf.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Any HDF5 identifier, released on scope exit (H5Idec_ref closes whatever kind it is).
+class OpenId {
+ public:
+  explicit OpenId(hid_t id) : id_(id) {}
+  ~OpenId() {
+    if (id_ >= 0) H5Idec_ref(id_);
+  }
+  OpenId(const OpenId&) = delete;
+  OpenId& operator=(const OpenId&) = delete;
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+};
+
+constexpr std::int64_t n_nodes = 4;
+constexpr std::int64_t n_elements = 3;
+// Not multiples of a power of two, and one needs all 17 digits to read back exactly.
+const std::vector<double> sample_times{0.0, 0.1, 0.25, 1.0 / 3.0, 2.5e-7};
+
+// A dataset of `dims` filled with 0, 1, 2, ...; extendible along the first dimension and
+// chunked like TransientWriter's series when `extendible`.
+template <class Value>
+void write_dataset(hid_t file, const char* name, const std::vector<hsize_t>& dims, hid_t type,
+                   bool extendible) {
+  std::vector<hsize_t> max_dims = dims, chunk = dims;
+  if (extendible) {
+    max_dims[0] = H5S_UNLIMITED;
+    chunk[0] = 1;
+  }
+  const OpenId space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()));
+  const OpenId create(H5Pcreate(H5P_DATASET_CREATE));
+  if (extendible) H5Pset_chunk(create.get(), static_cast<int>(chunk.size()), chunk.data());
+  const OpenId links(H5Pcreate(H5P_LINK_CREATE));
+  H5Pset_create_intermediate_group(links.get(), 1);
+  const OpenId dataset(
+      H5Dcreate2(file, name, type, space.get(), links.get(), create.get(), H5P_DEFAULT));
+  ASSERT_GE(dataset.get(), 0) << name;
+  hsize_t n_values = 1;
+  for (const hsize_t d : dims) n_values *= d;
+  std::vector<Value> values(n_values);
+  for (hsize_t i = 0; i < n_values; ++i) values[i] = static_cast<Value>(i);
+  if (n_values > 0) {
+    ASSERT_GE(H5Dwrite(dataset.get(), type == H5T_IEEE_F64LE ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64,
+                       H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+              0)
+        << name;
+  }
+}
+
+// The layout of docs/output.md with `times` as /time.
+void write_series_file(const fs::path& path, const std::vector<double>& times) {
+  const OpenId file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0) << path;
+  const auto s = static_cast<hsize_t>(times.size());
+  const auto n = static_cast<hsize_t>(n_nodes), e = static_cast<hsize_t>(n_elements);
+  write_dataset<std::int64_t>(file.get(), "/mesh/node_ids", {n}, H5T_STD_I64LE, false);
+  write_dataset<double>(file.get(), "/mesh/node_positions", {n, 3}, H5T_IEEE_F64LE, false);
+  write_dataset<std::int64_t>(file.get(), "/mesh/element_ids", {e}, H5T_STD_I64LE, false);
+  write_dataset<std::int64_t>(file.get(), "/mesh/element_nodes", {e, 2}, H5T_STD_I64LE, false);
+  for (const char* name : {"/samples/positions", "/samples/velocities", "/samples/slopes"})
+    write_dataset<double>(file.get(), name, {s, n, 3}, H5T_IEEE_F64LE, true);
+  write_dataset<double>(file.get(), "/samples/axial_force", {s, e}, H5T_IEEE_F64LE, true);
+  // /time last, with the real values.
+  const hsize_t max_rows = H5S_UNLIMITED, chunk = 16;
+  const OpenId space(H5Screate_simple(1, &s, &max_rows));
+  const OpenId create(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_chunk(create.get(), 1, &chunk);
+  const OpenId time(H5Dcreate2(file.get(), "/time", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                               create.get(), H5P_DEFAULT));
+  ASSERT_GE(time.get(), 0);
+  if (!times.empty()) {
+    ASSERT_GE(H5Dwrite(time.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()),
+              0);
+  }
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::int64_t> numbers(const std::string& text) {
+  std::vector<std::int64_t> values;
+  std::istringstream in(text);
+  for (std::int64_t value = 0; in >> value;) values.push_back(value);
+  return values;
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++count;
+  return count;
+}
+
+std::vector<std::int64_t> dataset_dims(hid_t file, const std::string& dataset) {
+  const OpenId handle(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT));
+  if (handle.get() < 0) return {};
+  const OpenId space(H5Dget_space(handle.get()));
+  std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return {dims.begin(), dims.end()};
+}
+
+std::vector<std::string> directory_listing(const fs::path& directory) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(directory))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Every DataItem pointing into the HDF5 file: the base name, an existing dataset, its shape.
+void check_hdf_references(const std::string& xml, const fs::path& hdf5_path,
+                          const std::string& file_name_in_xml) {
+  const OpenId file(H5Fopen(hdf5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0);
+  const std::regex hdf_item(
+      R"re(<DataItem Dimensions="([^"]*)"[^>]*Format="HDF">([^<:]*):([^<]*)</DataItem>)re");
+  std::size_t n_items = 0;
+  for (auto match = std::sregex_iterator(xml.begin(), xml.end(), hdf_item);
+       match != std::sregex_iterator(); ++match, ++n_items) {
+    EXPECT_EQ((*match)[2], file_name_in_xml);
+    const std::string dataset = (*match)[3];
+    const std::vector<std::int64_t> dims = dataset_dims(file.get(), dataset);
+    ASSERT_FALSE(dims.empty()) << "the XDMF refers to a missing dataset " << dataset;
+    EXPECT_EQ(numbers((*match)[1]), dims) << dataset;
+  }
+  // Per grid: element_nodes, positions twice (geometry and displacement), node_positions,
+  // velocities, slopes, axial_force, node_ids, element_ids.
+  EXPECT_EQ(n_items, 9 * count_of(xml, "GridType=\"Uniform\""));
+}
+
+// Every HyperSlab in grid k selects row k of its dataset, all of the row, stride 1.
+void check_hyperslabs(const std::string& grid, std::int64_t k, hid_t file) {
+  const std::regex hyperslab(
+      R"re(<DataItem ItemType="HyperSlab" Dimensions="([^"]*)"[^>]*>(?:<!--[^>]*-->)?\s*)re"
+      R"re(<DataItem Dimensions="3 ([0-9]+)"[^>]*Format="XML">([^<]*)</DataItem>\s*)re"
+      R"re(<DataItem Dimensions="[^"]*"[^>]*Format="HDF">[^<:]*:([^<]*)</DataItem>\s*</DataItem>)re");
+  std::vector<std::string> selected;
+  for (auto match = std::sregex_iterator(grid.begin(), grid.end(), hyperslab);
+       match != std::sregex_iterator(); ++match) {
+    const std::string dataset = (*match)[4];
+    selected.push_back(dataset);
+    const std::vector<std::int64_t> dims = dataset_dims(file, dataset);
+    const auto rank = static_cast<std::size_t>(std::stoll((*match)[2]));
+    ASSERT_EQ(rank, dims.size()) << dataset;
+    const std::vector<std::int64_t> selection = numbers((*match)[3]);
+    ASSERT_EQ(selection.size(), 3 * rank) << dataset;
+    const std::vector<std::int64_t> start(selection.begin(), selection.begin() + rank);
+    const std::vector<std::int64_t> stride(selection.begin() + rank, selection.begin() + 2 * rank);
+    const std::vector<std::int64_t> count(selection.begin() + 2 * rank, selection.end());
+    std::vector<std::int64_t> expected_start(rank, 0), row = dims;
+    expected_start[0] = k;
+    row[0] = 1;
+    EXPECT_EQ(start, expected_start) << dataset << " in grid " << k;
+    EXPECT_EQ(stride, std::vector<std::int64_t>(rank, 1)) << dataset;
+    EXPECT_EQ(count, row) << dataset;
+    EXPECT_EQ(numbers((*match)[1]), count) << "HyperSlab Dimensions of " << dataset;
+    EXPECT_LT(k, dims[0]) << dataset;
+  }
+  std::sort(selected.begin(), selected.end());
+  EXPECT_EQ(selected, (std::vector<std::string>{"/samples/axial_force", "/samples/positions",
+                                                "/samples/positions", "/samples/slopes",
+                                                "/samples/velocities"}))
+      << "grid " << k;
+}
+
+class TransientXdmfTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    directory_ =
+        fs::temp_directory_path() / ("catena_test_transient_xdmf_" + std::string(test->name()) +
+                                     "_" + std::to_string(::getpid()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  fs::path directory_;
+};
+
+TEST_F(TransientXdmfTest, ReadsSampleTimesBack) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  EXPECT_EQ(catena::io::read_sample_times(h5.string()), sample_times);
+}
+
+TEST_F(TransientXdmfTest, XdmfPathReplacesTheExtension) {
+  EXPECT_EQ(catena::io::transient_xdmf_path("out/run.h5"), "out/run.xmf");
+  EXPECT_EQ(catena::io::transient_xdmf_path("run"), "run.xmf");
+}
+
+TEST_F(TransientXdmfTest, OneGridPerSampleSelectingItsRow) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  const std::string xmf = catena::io::transient_xdmf_path(h5.string());
+  catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements,
+                                   catena::io::read_sample_times(h5.string()));
+  EXPECT_EQ(directory_listing(directory_), (std::vector<std::string>{"run.h5", "run.xmf"}));
+
+  const std::string xml = read_text(xmf);
+  EXPECT_EQ(count_of(xml, "GridType=\"Collection\" CollectionType=\"Temporal\""), 1u);
+  EXPECT_EQ(count_of(xml, "GridType=\"Uniform\""), sample_times.size());
+  EXPECT_EQ(count_of(xml, "TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"3\""),
+            sample_times.size());
+  EXPECT_EQ(count_of(xml, "GeometryType=\"XYZ\""), sample_times.size());
+  for (const char* attribute : {"Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\"",
+                                "Name=\"velocities\" AttributeType=\"Vector\" Center=\"Node\"",
+                                "Name=\"slopes\" AttributeType=\"Vector\" Center=\"Node\"",
+                                "Name=\"axial_force\" AttributeType=\"Scalar\" Center=\"Cell\"",
+                                "Name=\"node_ids\" AttributeType=\"Scalar\" Center=\"Node\"",
+                                "Name=\"element_ids\" AttributeType=\"Scalar\" Center=\"Cell\""})
+    EXPECT_EQ(count_of(xml, attribute), sample_times.size()) << attribute;
+  EXPECT_EQ(count_of(xml, "Function=\"$0 - $1\""), sample_times.size());
+  check_hdf_references(xml, h5, "run.h5");
+
+  const OpenId file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0);
+  const std::string grid_tag = "<Grid Name=\"sample_";
+  std::size_t at = xml.find(grid_tag);
+  for (std::size_t k = 0; k < sample_times.size(); ++k) {
+    ASSERT_NE(at, std::string::npos) << "grid " << k << " missing";
+    const std::size_t next = xml.find(grid_tag, at + 1);
+    const std::string grid = xml.substr(at, next == std::string::npos ? next : next - at);
+    EXPECT_EQ(grid.rfind(grid_tag + std::to_string(k) + "\"", 0), 0u);
+    const std::smatch time = [&] {
+      std::smatch match;
+      std::regex_search(grid, match, std::regex(R"re(<Time Value="([^"]*)"/>)re"));
+      return match;
+    }();
+    ASSERT_FALSE(time.empty()) << "grid " << k;
+    EXPECT_EQ(std::stod(time[1]), sample_times[k]) << "the time must read back exactly";
+    // The geometry cache key of ParaView's XDMF Reader: unique per grid.
+    EXPECT_EQ(count_of(grid, "<!-- sample " + std::to_string(k) + " -->"), 1u);
+    check_hyperslabs(grid, static_cast<std::int64_t>(k), file.get());
+    at = next;
+  }
+  EXPECT_EQ(at, std::string::npos) << "more grids than samples";
+}
+
+TEST_F(TransientXdmfTest, ReplacesAnOldXdmfAndEscapesTheFileName) {
+  const fs::path h5 = directory_ / "a&b.h5";
+  const fs::path xmf = directory_ / "a&b.xmf";
+  write_series_file(h5, sample_times);
+  std::ofstream(xmf) << "stale";
+  catena::io::write_transient_xdmf(h5.string(), xmf.string(), n_nodes, n_elements, sample_times);
+  const std::string xml = read_text(xmf);
+  EXPECT_EQ(xml.find("stale"), std::string::npos);
+  EXPECT_EQ(xml.find("a&b.h5"), std::string::npos);
+  check_hdf_references(xml, h5, "a&amp;b.h5");
+  EXPECT_EQ(directory_listing(directory_), (std::vector<std::string>{"a&b.h5", "a&b.xmf"}));
+}
+
+// Expects a catena::Error whose message contains every one of `parts`, and no .xmf.
+template <class Write>
+void expect_refused(const fs::path& directory, Write write, const std::vector<std::string>& parts,
+                    const std::vector<std::string>& files_left) {
+  try {
+    write();
+    ADD_FAILURE() << "no exception";
+  } catch (const catena::Error& error) {
+    for (const std::string& part : parts)
+      EXPECT_NE(std::string(error.what()).find(part), std::string::npos)
+          << "'" << part << "' not in: " << error.what();
+  }
+  EXPECT_EQ(directory_listing(directory), files_left);
+}
+
+// ParaView's XDMF Reader crashes on an empty temporal collection: no samples, no XDMF.
+TEST_F(TransientXdmfTest, RefusesAFileWithoutSamples) {
+  const fs::path h5 = directory_ / "empty.h5";
+  write_series_file(h5, {});
+  const std::vector<double> times = catena::io::read_sample_times(h5.string());
+  EXPECT_TRUE(times.empty());
+  expect_refused(directory_,
+                 [&] {
+                   catena::io::write_transient_xdmf(h5.string(),
+                                                    (directory_ / "empty.xmf").string(), n_nodes,
+                                                    n_elements, times);
+                 },
+                 {"empty.xmf", "no samples"}, {"empty.h5"});
+}
+
+TEST_F(TransientXdmfTest, RefusesShapesThatDoNotMatchTheFile) {
+  const fs::path h5 = directory_ / "run.h5";
+  const std::string xmf = (directory_ / "run.xmf").string();
+  write_series_file(h5, sample_times);
+  const std::vector<std::string> only_h5{"run.h5"};
+  expect_refused(
+      directory_,
+      [&] {
+        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes + 1, n_elements, sample_times);
+      },
+      {"run.xmf", "/mesh/node_ids", "shape (4), expected (5)"}, only_h5);
+  expect_refused(
+      directory_,
+      [&] {
+        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements - 1, sample_times);
+      },
+      {"/mesh/element_ids"}, only_h5);
+  const std::vector<double> fewer(sample_times.begin(), sample_times.end() - 1);
+  expect_refused(
+      directory_,
+      [&] { catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, fewer); },
+      {"/time", "shape (5), expected (4)"}, only_h5);
+  expect_refused(
+      directory_,
+      [&] {
+        catena::io::write_transient_xdmf((directory_ / "missing.h5").string(), xmf, n_nodes,
+                                         n_elements, sample_times);
+      },
+      {"H5Fopen", "missing.h5"}, only_h5);
+}
+
+TEST_F(TransientXdmfTest, RefusesAnXdmfOutsideTheHdf5Directory) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  fs::create_directory(directory_ / "elsewhere");
+  expect_refused(directory_,
+                 [&] {
+                   catena::io::write_transient_xdmf(h5.string(),
+                                                    (directory_ / "elsewhere" / "run.xmf").string(),
+                                                    n_nodes, n_elements, sample_times);
+                 },
+                 {"base name"}, {"elsewhere", "run.h5"});
+  expect_refused(directory_,
+                 [&] {
+                   catena::io::write_transient_xdmf(h5.string(), h5.string(), n_nodes, n_elements,
+                                                    sample_times);
+                 },
+                 {"would replace"}, {"elsewhere", "run.h5"});
+  EXPECT_TRUE(fs::is_empty(directory_ / "elsewhere"));
+}
+
+}  // namespace
