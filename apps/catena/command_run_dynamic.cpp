@@ -76,11 +76,21 @@ class OutputObserver : public solvers::TransientObserver {
     std::vector<int> constraints;
     std::vector<double> constraint_forces;
     system_.owned_constraint_forces(q, constraints, constraint_forces);
-    writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces);
+    io::ContactSample contacts;
+    for (const auto& c : system_.contact_states({q, v, {}, t})) {
+      contacts.force.push_back(c.force);
+      contacts.position.push_back(c.position);
+    }
+    writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts);
   }
 
   void step(const solvers::StepRecord& r) override {
-    writer_.append_step({r.time, r.dt, r.newton_iterations, r.error, r.rejected});
+    io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}};
+    if (!system_.model().contacts.empty())
+      for (const auto& c :
+           system_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
+        record.contact_force.push_back(c.force);
+    writer_.append_step(record);
     last_dt_ = r.dt;
     double now = MPI_Wtime();
     MPI_Bcast(&now, 1, MPI_DOUBLE, 0, system_.comm());

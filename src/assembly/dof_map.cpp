@@ -60,6 +60,13 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
     if (partition.element_owner[e] == rank)
       for (int n : model.elements[e].nodes)
         if (partition.node_owner[n] != rank) touched.push_back(n);
+  // A moving contact is evaluated by its head node's owner, which reads every node of the
+  // path the head may reach.
+  for (const model::MovingContact& c : model.contacts)
+    if (partition.node_owner[c.head_node] == rank)
+      for (int e : model.paths[static_cast<size_t>(c.path)].elements)
+        for (int n : model.elements[static_cast<size_t>(e)].nodes)
+          if (partition.node_owner[n] != rank) touched.push_back(n);
   for (const model::Constraint& c : model.constraints)
     if (partition.node_owner[c.node_a] == rank && c.node_b >= 0 &&
         partition.node_owner[c.node_b] != rank)

@@ -144,9 +144,156 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     constraints_.push_back(lc);
   }
 
+  for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c) {
+    const model::MovingContact& contact = model.contacts[static_cast<size_t>(c)];
+    if (partition_.node_owner[contact.head_node] != rank) continue;
+    LocalContact lc;
+    lc.index = c;
+    lc.start.push_back(0.0);
+    std::vector<int> path_nodes;
+    for (int e : model.paths[static_cast<size_t>(contact.path)].elements) {
+      const auto& nodes = model.elements[static_cast<size_t>(e)].nodes;
+      lc.start.push_back(lc.start.back() + (model.nodes[static_cast<size_t>(nodes.back())].position -
+                                            model.nodes[static_cast<size_t>(nodes.front())].position)
+                                               .norm());
+      path_nodes.insert(path_nodes.end(), nodes.begin(), nodes.end());
+    }
+    std::sort(path_nodes.begin(), path_nodes.end());
+    path_nodes.erase(std::unique(path_nodes.begin(), path_nodes.end()), path_nodes.end());
+    for (int n : path_nodes)
+      for (int k = 0; k < std::min(6, dofs_.node_dofs(n)); ++k)
+        if (const PetscInt g = dofs_.global_dof(n, k); g >= 0) lc.path_global.push_back(g);
+    contacts_.push_back(std::move(lc));
+  }
+
   q_work_ = create_vector();
   v_work_ = create_vector();
   f_work_ = create_vector();
+}
+
+bool SecondOrderSystem::contact_geometry(const LocalContact& lc, double t,
+                                         ContactGeometry& g) const {
+  const model::MovingContact& c = model_->contacts[static_cast<size_t>(lc.index)];
+  const std::vector<int>& path = model_->paths[static_cast<size_t>(c.path)].elements;
+  const double s = c.start + c.speed * t;
+  g.position = s;
+  if (s < 0.0 || s > lc.start.back()) return false;
+  const auto it = std::upper_bound(lc.start.begin() + 1, lc.start.end() - 1, s);
+  const size_t e = static_cast<size_t>(it - lc.start.begin()) - 1;
+  const double L = lc.start[e + 1] - lc.start[e];
+  const elements::HermiteAt h = elements::hermite_at(std::clamp(s - lc.start[e], 0.0, L), L);
+  const auto& nodes = model_->elements[static_cast<size_t>(path[e])].nodes;
+  auto set = [&](int slot, int node, int k, double n, double d) {
+    g.local[slot] = dofs_.local_dof(node, k);
+    g.global[slot] = dofs_.global_dof(node, k);
+    g.fixed[slot] = node_reference_[12 * static_cast<size_t>(node) + k];
+    g.N[slot] = n;
+    g.D[slot] = d;
+  };
+  for (int k = 0; k < 3; ++k) set(k, c.head_node, k, c.up[k], 0.0);
+  // r_wire(s) = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x; δ = (r_head − r_wire)·up, and the
+  // contact point moves along the wire at `speed`: d/dt r_wire = Σ S v + speed Σ S' r.
+  const int node_of_block[4] = {nodes.front(), nodes.front(), nodes.back(), nodes.back()};
+  for (int b = 0; b < 4; ++b)
+    for (int k = 0; k < 3; ++k)
+      set(3 + 3 * b + k, node_of_block[b], 3 * (b % 2) + k, -h.s[b] * c.up[k],
+          -c.speed * h.ds[b] * c.up[k]);
+  return true;
+}
+
+double SecondOrderSystem::contact_force(const model::MovingContact& c, const ContactGeometry& g,
+                                        const double* q, const double* v,
+                                        double* penetration) const {
+  double delta = 0.0, rate = 0.0;
+  for (int j = 0; j < 15; ++j) {
+    const double x = g.local[j] >= 0 ? q[g.local[j]] : g.fixed[j];
+    delta += g.N[j] * x;
+    rate += g.D[j] * x + (v && g.local[j] >= 0 ? g.N[j] * v[g.local[j]] : 0.0);
+  }
+  if (penetration) *penetration = delta;
+  if (delta <= 0.0) return 0.0;
+  return std::max(0.0, c.stiffness * delta + c.damping * rate);
+}
+
+void SecondOrderSystem::add_contact_forces(double t, const double* q, const double* v,
+                                           double* f) const {
+  ContactGeometry g;
+  for (const LocalContact& lc : contacts_) {
+    if (!contact_geometry(lc, t, g)) continue;
+    const double F = contact_force(model_->contacts[static_cast<size_t>(lc.index)], g, q, v);
+    if (F == 0.0) continue;
+    for (int j = 0; j < 15; ++j)
+      if (g.local[j] >= 0) f[g.local[j]] += F * g.N[j];
+  }
+}
+
+void SecondOrderSystem::add_contact_entries(double t, const double* q, const double* v,
+                                            double c_K, double c_C, Mat J) const {
+  ContactGeometry g;
+  for (const LocalContact& lc : contacts_) {
+    const model::MovingContact& c = model_->contacts[static_cast<size_t>(lc.index)];
+    // The whole head–path coupling, so that the pattern does not depend on s(t).
+    for (int k = 0; k < 3; ++k) {
+      const PetscInt head = dofs_.global_dof(c.head_node, k);
+      if (head < 0) continue;
+      for (PetscInt p : lc.path_global) {
+        CATENA_PETSC(MatSetValue(J, head, p, 0.0, ADD_VALUES));
+        CATENA_PETSC(MatSetValue(J, p, head, 0.0, ADD_VALUES));
+      }
+    }
+    if (!contact_geometry(lc, t, g) || contact_force(c, g, q, v) == 0.0) continue;
+    // F = k δ + c δ̇ with δ = N·q, δ̇ = N·v + D·q; f_i = F N_i:
+    //   K_ij = N_i (k N_j + c D_j),  C_ij = c N_i N_j.
+    PetscInt idx[15];
+    double block[15 * 15];
+    int n = 0;
+    int slot[15];
+    for (int j = 0; j < 15; ++j)
+      if (g.global[j] >= 0) {
+        slot[n] = j;
+        idx[n++] = g.global[j];
+      }
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        const int i = slot[a], j = slot[b];
+        block[a * n + b] = g.N[i] * (c_K * (c.stiffness * g.N[j] + c.damping * g.D[j]) +
+                                     c_C * c.damping * g.N[j]);
+      }
+    CATENA_PETSC(MatSetValues(J, n, idx, n, idx, block, ADD_VALUES));
+  }
+}
+
+std::vector<SecondOrderSystem::ContactState> SecondOrderSystem::contact_states(
+    const EvalPoint& p) {
+  const size_t n = model_->contacts.size();
+  std::vector<double> local(4 * n, 0.0), global(4 * n, 0.0);
+  if (n == 0) return {};
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  {
+    const LocalArrayRead q(q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+    ContactGeometry g;
+    for (const LocalContact& lc : contacts_) {
+      const size_t i = static_cast<size_t>(lc.index);
+      const bool on = contact_geometry(lc, p.t, g);
+      double delta = 0.0;
+      const double F = on ? contact_force(model_->contacts[i], g, q.data(),
+                                          v ? v->data() : nullptr, &delta)
+                          : 0.0;
+      local[4 * i] = F;
+      local[4 * i + 1] = g.position;
+      local[4 * i + 2] = delta;
+      local[4 * i + 3] = on ? 1.0 : 0.0;
+    }
+  }
+  MPI_Allreduce(local.data(), global.data(), static_cast<int>(global.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+  std::vector<ContactState> out(n);
+  for (size_t i = 0; i < n; ++i)
+    out[i] = {global[4 * i], global[4 * i + 1], global[4 * i + 2], global[4 * i + 3] > 0.5};
+  return out;
 }
 
 namespace {
@@ -327,6 +474,26 @@ void SecondOrderSystem::preallocation(std::vector<PetscInt>& d_nnz,
     if (row < 0 || col < 0) return;
     (col >= lo && col < hi ? d_nnz : o_nnz)[row - lo] += 1;
   };
+  // Moving contacts: the head's position rows couple with every path DOF (0..5 of each
+  // path node), and those rows with the head's positions.
+  for (const model::MovingContact& c : m.contacts) {
+    std::vector<int> path_nodes;
+    for (int e : m.paths[static_cast<size_t>(c.path)].elements)
+      for (int n : m.elements[static_cast<size_t>(e)].nodes) path_nodes.push_back(n);
+    std::sort(path_nodes.begin(), path_nodes.end());
+    path_nodes.erase(std::unique(path_nodes.begin(), path_nodes.end()), path_nodes.end());
+    for (int k = 0; k < 3; ++k) {
+      const PetscInt head = dofs_.global_dof(c.head_node, k);
+      if (head < 0) continue;
+      for (int n : path_nodes)
+        for (int j = 0; j < std::min(6, counts[static_cast<size_t>(n)]); ++j) {
+          const PetscInt p = dofs_.global_dof(n, j);
+          if (p < 0) continue;
+          if (head >= lo && head < hi) count(head, p);
+          if (p >= lo && p < hi) count(p, head);
+        }
+    }
+  }
   // Constraints: a multiplier column in the position rows of nodes A and B, and a
   // multiplier row with A's and B's positions and the (zero) diagonal.
   for (int c = 0; c < dofs_.n_constraints(); ++c) {
@@ -450,9 +617,14 @@ void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
         for (double x : f_el) squares += x * x;
     });
     if (!moving_paths_.empty()) add_moving_loads(p.t, dst);
-    if (!constraints_.empty()) {
+    if (!constraints_.empty() || !contacts_.empty()) {
       const LocalArrayRead q(q_work_.get());  // scattered by visit_element_forces
       add_constraint_forces(p.t, q.data(), dst);
+      if (!contacts_.empty()) {
+        std::unique_ptr<LocalArrayRead> v;
+        if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
+        add_contact_forces(p.t, q.data(), v ? v->data() : nullptr, dst);
+      }
     }
   }
   CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
@@ -506,6 +678,7 @@ void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients&
       CATENA_PETSC(MatSetValues(J, static_cast<PetscInt>(n), idx, static_cast<PetscInt>(n), idx,
                                 block.data(), ADD_VALUES));
     }
+    add_contact_entries(p.t, q.data(), v ? v->data() : nullptr, c.c_K, c.c_C, J);
   }
   add_constraint_entries(c.c_lambda, c.c_g, J);
   CATENA_PETSC(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -537,6 +710,8 @@ void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) 
       if (K_out) CATENA_PETSC(MatSetValues(K_out, N, idx, N, idx, K.data(), ADD_VALUES));
       if (C_out) CATENA_PETSC(MatSetValues(C_out, N, idx, N, idx, C.data(), ADD_VALUES));
     }
+    if (K_out) add_contact_entries(p.t, q.data(), v ? v->data() : nullptr, 1.0, 0.0, K_out);
+    if (C_out) add_contact_entries(p.t, q.data(), v ? v->data() : nullptr, 0.0, 1.0, C_out);
   }
   if (K_out) add_constraint_entries(0.0, 1.0, K_out);
   if (C_out) add_constraint_entries(0.0, 0.0, C_out);

@@ -135,7 +135,9 @@ struct TransientWriter::Impl {
   ParallelHdf5File file;
   RowRedistribution nodes, elements, constraints;
   bool has_constraints = false;
+  hsize_t n_contacts = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
+  Series contact_force, contact_position, step_contact_force;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
   std::vector<StepRecord> pending_steps;
   bool closed = false;
@@ -151,7 +153,8 @@ struct TransientWriter::Impl {
         elements(c, static_cast<std::int64_t>(m.elements.size()), own_elements, "owned_elements"),
         constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
                     "owned_constraints"),
-        has_constraints(!m.constraints.empty()) {
+        has_constraints(!m.constraints.empty()),
+        n_contacts(static_cast<hsize_t>(m.contacts.size())) {
     MPI_Comm_rank(c, &rank);
   }
 };
@@ -212,6 +215,30 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     s.constraint_forces =
         Series(f, p, "/samples/constraint_forces",
                {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, "N");
+  if (s.n_contacts > 0) {
+    s.contact_force = Series(f, p, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
+    s.contact_position =
+        Series(f, p, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, "m");
+    s.step_contact_force =
+        Series(f, p, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
+    create_group(s.file, "/pantographs");
+    for (size_t i = 0; i < model.contacts.size(); ++i) {
+      const std::string name = "/pantographs/" + model.contacts[i].name;
+      const GroupHandle group = create_group(s.file, name.c_str());
+      const AttributeTarget target{group.get(), p};
+      write_int64_attribute(target, "index", static_cast<std::int64_t>(i));
+      write_double_attribute(target, "speed", model.contacts[i].speed);
+      write_double_attribute(target, "start", model.contacts[i].start);
+      write_string_attribute(target, "path", model.paths[static_cast<size_t>(model.contacts[i].path)].name);
+    }
+  }
+  {
+    const auto n_reg = static_cast<std::int64_t>(model.registration_nodes.size());
+    std::vector<std::int64_t> reg;
+    const RowBlock rb{0, s.rank == 0 ? n_reg : 0};
+    if (s.rank == 0) reg.assign(model.registration_nodes.begin(), model.registration_nodes.end());
+    write_block_dataset<std::int64_t>(s.file, {"/mesh/registration_nodes", n_reg, 1}, rb, reg);
+  }
   s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, "s");
   s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
   s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
@@ -233,6 +260,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   write_int64_attribute(root, "n_dofs", info.n_dofs);
   write_string_attribute(root, "analysis", "dynamic");
   write_string_attribute(root, "status", "running");
+  write_double_attribute(root, "evaluation_start", model.evaluation_start);
+  write_double_attribute(root, "evaluation_end", model.evaluation_end);
   flush();
 }
 
@@ -252,6 +281,14 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     s.constraint_forces =
         Series(f, p, "/samples/constraint_forces",
                {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, samples);
+  if (s.n_contacts > 0) {
+    s.contact_force =
+        Series(f, p, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, samples);
+    s.contact_position =
+        Series(f, p, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, samples);
+    s.step_contact_force =
+        Series(f, p, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, steps);
+  }
   s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, samples);
   s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
   s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
@@ -281,7 +318,8 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
                                     const std::vector<double>& velocities,
                                     const std::vector<double>& slopes,
                                     const std::vector<double>& axial_force,
-                                    const std::vector<double>& constraint_forces) {
+                                    const std::vector<double>& constraint_forces,
+                                    const ContactSample& contacts) {
   Impl& s = *impl_;
   const hid_t x = s.file.collective_transfer();
   const RowBlock root_row{0, s.rank == 0 ? 1 : 0};
@@ -297,6 +335,13 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
   if (s.has_constraints) {
     const std::vector<double> c = s.constraints.to_block(constraint_forces, 3);
     s.constraint_forces.append(x, 1, s.constraints.block(), c.data());
+  }
+  if (s.n_contacts > 0) {
+    // Replicated values: rank 0 writes the row.
+    const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
+    CATENA_ASSERT(contacts.force.size() == s.n_contacts, "one force per contact");
+    s.contact_force.append(x, 1, all, contacts.force.data());
+    s.contact_position.append(x, 1, all, contacts.position.data());
   }
 }
 
@@ -324,6 +369,14 @@ void TransientWriter::flush() {
     s.step_iterations.append(x, n, rows, iterations.data());
     s.step_error.append(x, n, rows, error.data());
     s.step_rejected.append(x, n, rows, rejected.data());
+    if (s.n_contacts > 0) {
+      std::vector<double> forces;
+      for (const StepRecord& r : s.pending_steps)
+        for (hsize_t i = 0; i < s.n_contacts; ++i)
+          forces.push_back(i < r.contact_force.size() ? r.contact_force[i] : 0.0);
+      const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
+      s.step_contact_force.append(x, n, all, forces.data());
+    }
     s.pending_steps.clear();
   }
   check_hdf5_status(H5Fflush(s.file.id(), H5F_SCOPE_GLOBAL), "H5Fflush", s.path, "/");
@@ -344,7 +397,8 @@ void TransientWriter::close(const std::string& status,
     write_double_attribute(root, name.c_str(), value);
   }
   for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial,
-                         &s.constraint_forces, &s.step_time,
+                         &s.constraint_forces, &s.contact_force, &s.contact_position,
+                         &s.step_contact_force, &s.step_time,
                          &s.step_dt, &s.step_iterations, &s.step_error, &s.step_rejected})
     series->reset();
   s.file.close();

@@ -22,6 +22,7 @@
 #include "line_generator.hpp"
 #include "moving_load_reader.hpp"
 #include "nodal_frames.hpp"
+#include "pantograph_reader.hpp"
 #include "node_reader.hpp"
 #include "overrides.hpp"
 #include "scene_build.hpp"
@@ -36,7 +37,8 @@ const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
       "name",         "gravity",  "sections",         "nodes", "lines",
       "elements",     "supports", "elastic_supports", "loads", "masses",
-      "constraints",  "moving_loads", "analysis", "integrator", "output"};
+      "constraints",  "moving_loads", "analysis", "integrator", "output",
+      "pantographs"};
   return keys;
 }
 
@@ -96,6 +98,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::read_output(scene.child("output"), model.output);
   detail::read_dynamics(scene, model);
   detail::read_moving_loads(scene.child("moving_loads"), build);
+  detail::read_pantographs(scene.child("pantographs"), build);
   detail::check_no_free_body(build);
 }
 

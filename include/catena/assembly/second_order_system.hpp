@@ -90,6 +90,16 @@ class SecondOrderSystem {
   // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (constant).
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
 
+  // Moving contacts (model::MovingContact, pantograph heads on a wire).
+  struct ContactState {
+    double force = 0.0;        // N, ≥ 0 (0: no contact)
+    double position = 0.0;     // m along the path (the pantograph's position)
+    double penetration = 0.0;  // m, (r_head − r_wire)·up; > 0 in contact
+    bool on_path = false;      // the contact point is on its path
+  };
+  // Collective. Every contact's state at p (identical on every rank).
+  std::vector<ContactState> contact_states(const EvalPoint& p);
+
   // Constraints (Lagrange multipliers).
   bool has_constraints() const { return !model_->constraints.empty(); }
   // Collective. 1 in the multiplier slots, 0 in the nodal ones.
@@ -146,6 +156,34 @@ class SecondOrderSystem {
   void add_constraint_forces(double t, const double* q_local, double* f_local) const;
   // Inserts c_λ Gᵀ + c_g G of this rank's constraints (and a zero multiplier diagonal).
   void add_constraint_entries(double c_lambda, double c_g, Mat J) const;
+
+  // Moving contacts evaluated by this rank (the owner of the head node): the path's
+  // cumulative reference lengths and the DOFs involved.
+  struct LocalContact {
+    int index = 0;                // into Model::contacts
+    std::vector<double> start;    // per path element, + total length at the end
+    std::vector<PetscInt> path_global;  // free DOFs of the path's nodes (pattern)
+  };
+  std::vector<LocalContact> contacts_;
+  // The contact's penetration δ = N·q (and δ̇ = N·v + D·q) over its 15 involved DOFs at
+  // time t: head position (3), then the wire element's r_A, r_A,x, r_B, r_B,x; local and
+  // global indices (−1 fixed) and the fixed values; false when off the path.
+  struct ContactGeometry {
+    PetscInt local[15], global[15];
+    double fixed[15];
+    double N[15], D[15];
+    double position = 0.0;
+  };
+  bool contact_geometry(const LocalContact& c, double t, ContactGeometry& g) const;
+  // Penalty force from the geometry and the local state arrays (0 if separated).
+  double contact_force(const model::MovingContact& c, const ContactGeometry& g, const double* q,
+                       const double* v, double* penetration = nullptr) const;
+  // Adds this rank's contact forces into the ghosted local force array.
+  void add_contact_forces(double t, const double* q_local, const double* v_local,
+                          double* f_local) const;
+  // Inserts c_K K + c_C C of the contacts (and zeros over the whole preallocated coupling).
+  void add_contact_entries(double t, const double* q_local, const double* v_local, double c_K,
+                           double c_C, Mat J) const;
 
   // A constraint owned by this rank: indices of its multipliers and of the position DOFs
   // of its nodes (B: −1 when absent), ghosted local and global.

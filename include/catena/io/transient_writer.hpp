@@ -5,7 +5,10 @@
 // /samples/axial_force (n_samples × n_elements), with constraints /mesh/constraint_nodes
 // (n_constraints × 2 node indices, −1: none) and /samples/constraint_forces
 // (n_samples × n_constraints × 3: the force on node A), /steps/* (one row per accepted
-// step) and root attributes (scene text, run facts, `status`).
+// step), with pantographs /samples/contact_force and /samples/contact_position
+// (n_samples × n_pantographs), /steps/contact_force (n_steps × n_pantographs), a group
+// /pantographs/<name> each (attributes index, speed), /mesh/registration_nodes and root
+// attributes evaluation_start/end, and root attributes (scene text, run facts, `status`).
 //
 // The file is written in place (not atomically) so that a long run's results up to the
 // last flush() are readable after a crash: flush() writes the buffered step rows and
@@ -29,6 +32,13 @@ struct StepRecord {
   int newton_iterations = 0;
   double error = -1.0;
   int rejected = 0;
+  std::vector<double> contact_force;  // N, one per model::MovingContact, at the step end
+};
+
+// Contact state of every pantograph at a sample (identical on every rank).
+struct ContactSample {
+  std::vector<double> force;     // N
+  std::vector<double> position;  // m along the path
 };
 
 // Where a restarted run continues an existing output file: the rows it had when the
@@ -65,7 +75,8 @@ class TransientWriter {
   void append_sample(double t, const std::vector<double>& positions,
                      const std::vector<double>& velocities, const std::vector<double>& slopes,
                      const std::vector<double>& axial_force,
-                     const std::vector<double>& constraint_forces = {});
+                     const std::vector<double>& constraint_forces = {},
+                     const ContactSample& contacts = {});
   // Not collective (identical on every rank): buffered until flush().
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.

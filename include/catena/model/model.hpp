@@ -4,11 +4,13 @@
 // assembly layer. Indices are 0-based positions in the vectors below; user-facing ids
 // (as written in the scene) are kept for messages and output. Units are SI throughout.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "catena/core/vec3.hpp"
+#include "catena/model/catenary_layout.hpp"
 
 namespace catena::model {
 
@@ -192,6 +194,31 @@ struct MovingLoad {
   double start_time = 0.0;    // s
 };
 
+// A named chain of cable/beam elements in travel order (e.g. the contact wire a
+// pantograph runs along), measured on the reference geometry. Made by the catenary
+// builder or from a list of lines.
+struct ElementPath {
+  std::string name;
+  std::vector<int> elements;  // element indices, consecutive elements share a node
+};
+
+// Penalty contact between a pantograph head (a node moving vertically) and a wire at the
+// moving point s(t) = start + speed·t along `path` (arc length on the reference geometry):
+// penetration δ = (r_head − r_wire(s))·up, force F = stiffness·δ + damping·δ̇ when δ > 0,
+// pushing the wire along +up and the head along −up; zero when δ ≤ 0 (loss of contact).
+// The head's coupling to every element of the path is preallocated, so the sparsity
+// pattern is fixed for the run.
+struct MovingContact {
+  std::string name;            // the pantograph's name
+  int head_node = 0;           // node index of the head
+  int path = 0;                // index into Model::paths
+  double speed = 0.0;          // m/s
+  double start = 0.0;          // m along the path at t = 0
+  double stiffness = 0.0;      // N/m, k_c > 0
+  double damping = 0.0;        // N·s/m (acts only in contact)
+  Vec3 up = Vec3::UnitZ();     // unit contact direction (opposite to gravity)
+};
+
 struct DynamicOptions {
   double duration = 0.0;  // s, > 0
   IntegratorOptions integrator;
@@ -213,11 +240,22 @@ struct Model {
   std::vector<Constraint> constraints;
 
   std::vector<MovingLoad> moving_loads;
+  std::vector<ElementPath> paths;
+  std::vector<MovingContact> contacts;
+  // Contact-wire nodes at registration (steady-arm) points: EN 50318's uplift at support.
+  std::vector<int> registration_nodes;
+  // The span of the line the contact statistics are evaluated on, [x_start, x_end] in m
+  // along the first contact's path (both 0: not set).
+  double evaluation_start = 0.0, evaluation_end = 0.0;
 
   AnalysisType analysis = AnalysisType::static_equilibrium;
   StaticOptions static_options;  // statics, and the initial equilibrium of dynamics
   DynamicOptions dynamic_options;
   OutputOptions output;
+
+  // Set when the scene has a `catenary`: what the builder made and what shape finding
+  // (solvers/shape_finding.hpp) adjusts; empty otherwise.
+  std::optional<CatenaryLayout> catenary;
 };
 
 }  // namespace catena::model

@@ -1,0 +1,194 @@
+#include "pantograph_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "did_you_mean.hpp"
+#include "line_path_reader.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+struct Stage {
+  double mass = 0.0, stiffness = 0.0, damping = 0.0;
+};
+
+// EN 50318's two-stage reference pantograph as reproduced in published validations
+// (../shared/reference/en50318.md): head m1 on frame m2.
+const std::vector<Stage>& en50318_stages() {
+  static const std::vector<Stage> stages{{7.2, 4200.0, 10.0}, {15.0, 50.0, 90.0}};
+  return stages;
+}
+constexpr double kEn50318ContactStiffness = 50000.0;  // N/m
+
+std::vector<Stage> read_stages(const Field& list) {
+  std::vector<Stage> stages;
+  const std::vector<Field> items = list.items();
+  if (items.size() < 1 || items.size() > 5)
+    list.fail("expected 1 to 5 stages (head first, the last joined to the ground), got " +
+              std::to_string(items.size()));
+  for (const Field& item : items) {
+    item.expect_map("a stage {mass, stiffness, damping}");
+    item.check_keys({"mass", "stiffness", "damping"});
+    Stage s;
+    s.mass = item.child("mass").real(RealRange::positive("kg"));
+    s.stiffness = item.child("stiffness").real(RealRange::non_negative("N/m"));
+    s.damping = item.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+    stages.push_back(s);
+  }
+  if (stages.back().stiffness <= 0.0)
+    items.back().child("stiffness").fail(
+        "the last stage is joined to the ground by this stiffness; it must be > 0, else "
+        "the pantograph is a free body");
+  return stages;
+}
+
+int find_path(const Field& where, const Model& m) {
+  const std::string name = where.text();
+  std::vector<std::string> names;
+  for (size_t i = 0; i < m.paths.size(); ++i) {
+    if (m.paths[i].name == name) return static_cast<int>(i);
+    names.push_back(m.paths[i].name);
+  }
+  std::string known;
+  for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+  where.fail("no path named '" + name + "';" + did_you_mean(name, names) +
+             (names.empty() ? " this scene has no paths (a `catenary` makes 'contact_wire')"
+                            : " known paths: " + known));
+}
+
+// Reference position of the path at arc length s (linear between the element's end nodes).
+Vec3 path_point(const Model& m, const ElementPath& path, double s, double& length) {
+  length = 0.0;
+  Vec3 at = Vec3::Zero();
+  bool found = false;
+  for (int e : path.elements) {
+    const auto& nodes = m.elements[static_cast<size_t>(e)].nodes;
+    const Vec3 a = m.nodes[static_cast<size_t>(nodes.front())].position;
+    const Vec3 b = m.nodes[static_cast<size_t>(nodes.back())].position;
+    const double L = (b - a).norm();
+    if (!found && s <= length + L) {
+      at = a + (b - a) * ((s - length) / L);
+      found = true;
+    }
+    length += L;
+  }
+  return at;
+}
+
+}  // namespace
+
+void read_pantographs(const Field& pantographs, SceneBuild& build) {
+  if (!pantographs.present()) return;
+  Model& m = build.model;
+  const double g = m.gravity.norm();
+  const Vec3 up = g > 0.0 ? Vec3(-m.gravity / g) : Vec3(Vec3::UnitZ());
+  if (std::abs(up.z()) < 1.0 - 1e-12)
+    pantographs.fail("pantographs move vertically: gravity must point along -z (it is " +
+                     std::to_string(m.gravity.x()) + ", " + std::to_string(m.gravity.y()) +
+                     ", " + std::to_string(m.gravity.z()) + ")");
+  std::int64_t next_node_id = 0, next_element_id = 0;
+  for (const Node& n : m.nodes) next_node_id = std::max(next_node_id, n.id + 1);
+  for (const ElementDesc& e : m.elements) next_element_id = std::max(next_element_id, e.id + 1);
+  std::set<std::string> names;
+  for (const Field& entry : pantographs.items()) {
+    entry.expect_map("a pantograph {name, path, speed or speed_kmh, start, static_force, ...}");
+    entry.check_keys({"name", "path", "line", "speed", "speed_kmh", "start", "static_force",
+                      "aerodynamic_coefficient", "model", "stages", "contact"});
+    MovingContact c;
+    c.name = entry.child("name").text();
+    if (!names.insert(c.name).second)
+      entry.child("name").fail("pantograph name '" + c.name + "' is used twice");
+    const Field path = entry.child("path"), line = entry.child("line");
+    if (path.present() == line.present())
+      entry.fail("give exactly one of path (a path the catenary builder made, e.g. "
+                 "contact_wire) and line (a line name or a list of them in travel order)");
+    if (path.present()) {
+      c.path = find_path(path, m);
+    } else {
+      ElementPath own;
+      own.name = "pantograph " + c.name;
+      own.elements = read_path(line, named_lines(build), m, "pantographs");
+      m.paths.push_back(own);
+      c.path = static_cast<int>(m.paths.size()) - 1;
+    }
+    const Field speed = entry.child("speed"), speed_kmh = entry.child("speed_kmh");
+    if (speed.present() == speed_kmh.present())
+      entry.fail("give exactly one of speed (m/s) and speed_kmh (km/h)");
+    c.speed = speed.present() ? speed.real(RealRange::non_negative("m/s"))
+                              : speed_kmh.real(RealRange::non_negative("km/h")) / 3.6;
+    double path_length = 0.0;
+    path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, path_length);
+    // A start outside [0, path length] is a pantograph that reaches (or has left) the wire
+    // later: no contact while it is off the path. Its nodes are drawn at the nearest end.
+    c.start = entry.child("start").real_or(0.0, RealRange::any("m"));
+    const Vec3 contact_point = path_point(m, m.paths[static_cast<size_t>(c.path)],
+                                          std::clamp(c.start, 0.0, path_length), path_length);
+    const double static_force = entry.child("static_force").real(RealRange::positive("N"));
+    const double aero =
+        entry.child("aerodynamic_coefficient").real_or(0.0, RealRange::any("N*s^2/m^2"));
+
+    std::vector<Stage> stages;
+    const Field model_field = entry.child("model"), stages_field = entry.child("stages");
+    const Field contact = entry.child("contact");
+    double contact_stiffness = 0.0;
+    if (model_field.present()) {
+      if (model_field.text() != "en50318")
+        model_field.fail("unknown pantograph model '" + model_field.text() +
+                         "'; accepted: en50318 (or give `stages` instead)");
+      if (stages_field.present())
+        stages_field.fail("`model: en50318` defines the stages; give either model or stages");
+      stages = en50318_stages();
+      contact_stiffness = kEn50318ContactStiffness;
+    } else {
+      if (!stages_field.present())
+        entry.fail("missing `stages` (head first: [{mass, stiffness, damping}, ...]) or "
+                   "`model: en50318`");
+      stages = read_stages(stages_field);
+    }
+    if (contact.present()) {
+      contact.expect_map("contact settings {stiffness, damping}");
+      contact.check_keys({"stiffness", "damping"});
+      contact_stiffness = contact.child("stiffness").real_or(contact_stiffness,
+                                                             RealRange::positive("N/m"));
+      c.damping = contact.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+    }
+    if (contact_stiffness <= 0.0)
+      entry.fail("missing contact: {stiffness: k_c} (N/m); `model: en50318` sets 50000");
+    c.stiffness = contact_stiffness;
+    c.up = up;
+
+    // Nodes: the head at the wire's reference point, the other stages below (the springs
+    // act on displacements, so the spacing is only for pictures).
+    const int origin = build.add_origin(entry);
+    std::vector<int> stage_nodes;
+    for (size_t i = 0; i < stages.size(); ++i) {
+      Node node;
+      node.id = next_node_id++;
+      node.position = contact_point - up * (0.5 * static_cast<double>(i));
+      build.add_node(node, origin);
+      stage_nodes.push_back(static_cast<int>(m.nodes.size()) - 1);
+      m.supports.push_back({stage_nodes.back(), 0b011u});  // x and y held
+      m.point_masses.push_back({stage_nodes.back(), stages[i].mass});
+      m.nodal_loads.push_back({stage_nodes.back(), -stages[i].mass * m.gravity});
+    }
+    for (size_t i = 0; i + 1 < stages.size(); ++i) {
+      ElementDesc spring;
+      spring.id = next_element_id++;
+      spring.nodes = {stage_nodes[i], stage_nodes[i + 1]};
+      spring.props = SpringProps{up * stages[i].stiffness, up * stages[i].damping};
+      spring.set = "pantograph " + c.name;
+      build.add_element(spring, origin);
+    }
+    m.elastic_supports.push_back(
+        {stage_nodes.back(), up * stages.back().stiffness, up * stages.back().damping});
+    m.nodal_loads.push_back({stage_nodes.back(), up * (static_force + aero * c.speed * c.speed)});
+    c.head_node = stage_nodes.front();
+    m.contacts.push_back(c);
+  }
+}
+
+}  // namespace catena::model::detail
