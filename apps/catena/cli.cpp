@@ -1,5 +1,8 @@
 #include "cli.hpp"
 
+#include <charconv>
+#include <cmath>
+
 #include "catena/core/error.hpp"
 
 namespace catena::app {
@@ -10,11 +13,14 @@ std::string usage() {
 Usage:
   catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [PETSc options]
   catena check SCENE.yaml [--set KEY=VALUE ...]
+  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]
   catena --help
 
 Commands:
   run     solve the scene (static equilibrium) and write OUT.h5 (+ OUT.xmf for ParaView)
   check   validate the scene and print what would be modelled, without solving
+  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
+          (serial: run it without mpirun)
 
 Options:
   -o, --output FILE     output file (default: the scene's output.file, else catena.h5)
@@ -24,6 +30,13 @@ Options:
                         OUT.h5 (same scene; analysis.duration may be raised)
   -h, --help            this text
 
+Options of stats:
+  --json                print JSON instead of a table
+  --section X0 X1       evaluation section along the path, m (default: the run's
+                        evaluation_start/evaluation_end; required if the run sets none)
+  --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
+                        at the cutoff; the sampling rate must be >= 10 x the cutoff)
+
 PETSc options (prefix -static_ for the static solver), e.g.:
   -static_snes_monitor -static_ksp_view -log_view -static_mat_mumps_icntl_4 2
 
@@ -31,6 +44,7 @@ Examples:
   catena check meshes/default.yaml
   mpirun -n 2 catena run meshes/default.yaml -o default.h5
   mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
+  catena stats en50318_250.h5 --section 240 360
 )";
 }
 
@@ -41,6 +55,62 @@ bool is_scene_path(const std::string& token) {
            token.compare(token.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   return ends_with(".yaml") || ends_with(".yml");
+}
+
+// A finite real number, the whole token (no trailing characters).
+double parse_real(const std::string& token, const char* flag) {
+  double value = 0.0;
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value))
+    throw InputError({"", 0, flag}, "'" + token + "' is not a finite number");
+  return value;
+}
+
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`; args[i] follows "stats".
+void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
+  StatsArguments& st = cl.stats;
+  for (; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const char* flag) -> const std::string& {
+      if (i + 1 >= args.size())
+        throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
+      return args[++i];
+    };
+    if (a == "-h" || a == "--help") {
+      cl.command = "help";
+      return;
+    } else if (a == "--json") {
+      st.json = true;
+    } else if (a == "--section") {
+      const double x0 = parse_real(value("--section"), "--section");
+      const double x1 = parse_real(value("--section"), "--section");
+      if (!(x1 > x0))
+        throw InputError({"", 0, "--section"},
+                         "X1 must be greater than X0 (got " + args[i - 1] + " " + args[i] +
+                             "); usage: --section X0 X1, in m along the path");
+      st.section = std::array<double, 2>{x0, x1};
+    } else if (a == "--cutoff") {
+      st.cutoff_hz = parse_real(value("--cutoff"), "--cutoff");
+      if (!(st.cutoff_hz > 0.0))
+        throw InputError({"", 0, "--cutoff"},
+                         "the cutoff must be positive (got " + args[i] + " Hz)");
+    } else if (!a.empty() && a[0] == '-') {
+      throw InputError({"", 0, "arguments"},
+                       "unknown option '" + a + "' for stats; accepted: --json, "
+                       "--section X0 X1, --cutoff HZ");
+    } else if (st.file.empty()) {
+      st.file = a;
+    } else {
+      throw InputError({"", 0, "arguments"}, "unexpected argument '" + a +
+                                                 "': one output file is accepted (got '" +
+                                                 st.file + "' already)");
+    }
+  }
+  if (st.file.empty())
+    throw InputError({"", 0, "OUT.h5"},
+                     "no output file given; usage: catena stats OUT.h5 [--json] "
+                     "[--section X0 X1] [--cutoff HZ]");
 }
 }  // namespace
 
@@ -63,9 +133,13 @@ CommandLine parse_command_line(int argc, char** argv) {
     return cl;
   }
   cl.command = args[i++];
+  if (cl.command == "stats") {
+    parse_stats(args, i, cl);
+    return cl;
+  }
   if (cl.command != "run" && cl.command != "check")
     throw InputError({"", 0, "command"}, "unknown command '" + cl.command +
-                                             "'; accepted: run, check, --help");
+                                             "'; accepted: run, check, stats, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {

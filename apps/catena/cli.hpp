@@ -1,19 +1,29 @@
 #pragma once
 // Command-line parsing for the catena app. Arguments we do not recognise and that start
 // with '-' are left to PETSc's options database (e.g. -static_snes_monitor, -log_view).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace catena::app {
 
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`.
+struct StatsArguments {
+  std::string file;                             // a dynamic run's output
+  bool json = false;                            // --json: JSON instead of the table
+  std::optional<std::array<double, 2>> section;  // --section X0 X1 [m]; else the file's
+  double cutoff_hz = 20.0;                      // --cutoff HZ: low-pass cutoff (−6 dB point)
+};
+
 struct CommandLine {
-  std::string command;                 // run | check | help
+  std::string command;                 // run | check | stats | help
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
   std::string joined;                  // the whole command line, for the output file
+  StatsArguments stats;                // command "stats" only
 };
 
 // Throws catena::InputError for malformed arguments.

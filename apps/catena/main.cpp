@@ -3,6 +3,7 @@
 //   catena check meshes/default.yaml
 //   mpirun -n 2 catena run meshes/default.yaml -o default.h5
 //   mpirun -n 3 catena run meshes/default.yaml --set lines[0].elements=600 -log_view
+//   catena stats run.h5 --section 240 360 --json
 //
 // Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
 // (no equilibrium found, singular structure, step size below its minimum), 128 + signal
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
         if (rank == 0) std::fputs(catena::app::usage().c_str(), stdout);
       } else if (cl.command == "check") {
         catena::app::command_check(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "stats") {
+        catena::app::command_stats(PETSC_COMM_WORLD, cl);
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }

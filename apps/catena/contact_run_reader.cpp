@@ -1,0 +1,391 @@
+#include "contact_run_reader.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+
+#include "catena/core/error.hpp"
+
+namespace catena::app {
+namespace {
+
+// Names in the time-series file (docs/output.md); the writer is src/io/transient_writer.cpp.
+constexpr const char* time_name = "/time";
+constexpr const char* contact_force_name = "/samples/contact_force";
+constexpr const char* contact_position_name = "/samples/contact_position";
+constexpr const char* positions_name = "/samples/positions";
+constexpr const char* pantographs_name = "/pantographs";
+constexpr const char* node_positions_name = "/mesh/node_positions";
+constexpr const char* registration_nodes_name = "/mesh/registration_nodes";
+
+// Relative tolerance on the spacing of /time (dense output at k × output.interval).
+constexpr double sampling_tolerance = 1e-6;
+
+template <herr_t (*Close)(hid_t)>
+class Handle {
+ public:
+  explicit Handle(hid_t id) : id_(id) {}
+  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() {
+    if (id_ >= 0) Close(id_);
+  }
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+};
+using File = Handle<&H5Fclose>;
+using Group = Handle<&H5Gclose>;
+using Dataset = Handle<&H5Dclose>;
+using Dataspace = Handle<&H5Sclose>;
+using Datatype = Handle<&H5Tclose>;
+using Attribute = Handle<&H5Aclose>;
+
+// HDF5 prints its error stack to stderr by default; failures here become one InputError.
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &handler_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, handler_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t handler_ = nullptr;
+  void* data_ = nullptr;
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)), file_(open(path_)) {}
+
+  [[noreturn]] void fail(const std::string& object, const std::string& message) const {
+    throw InputError({path_, 0, object}, message);
+  }
+
+  bool has_link(const char* name) const {
+    // Checks each level, so "/a/b" is false (not an error) when "/a" is missing.
+    std::string partial;
+    std::string rest = name;
+    while (!rest.empty()) {
+      const auto slash = rest.find('/', 1);
+      partial += rest.substr(0, slash);
+      rest = slash == std::string::npos ? "" : rest.substr(slash);
+      if (H5Lexists(file_.get(), partial.c_str(), H5P_DEFAULT) <= 0) return false;
+    }
+    return true;
+  }
+  bool has_attribute(hid_t object, const char* name) const { return H5Aexists(object, name) > 0; }
+  hid_t root() const { return file_.get(); }
+
+  std::string text_attribute(hid_t object, const char* name, const std::string& where) const {
+    const Attribute a(H5Aopen(object, name, H5P_DEFAULT));
+    if (a.get() < 0) fail(where, std::string("cannot open attribute ") + name);
+    const Datatype type(H5Aget_type(a.get()));
+    if (H5Tget_class(type.get()) != H5T_STRING)
+      fail(where, std::string("attribute ") + name + " is not a string");
+    std::string out;
+    if (H5Tis_variable_str(type.get()) > 0) {
+      char* value = nullptr;
+      if (H5Aread(a.get(), type.get(), &value) < 0)
+        fail(where, std::string("cannot read attribute ") + name);
+      out = value ? value : "";
+      H5free_memory(value);
+    } else {
+      std::string buffer(H5Tget_size(type.get()), '\0');
+      if (H5Aread(a.get(), type.get(), buffer.data()) < 0)
+        fail(where, std::string("cannot read attribute ") + name);
+      out = buffer.substr(0, buffer.find('\0'));
+    }
+    return out;
+  }
+
+  template <class T>
+  T number_attribute(hid_t object, const char* name, const std::string& where) const {
+    const Attribute a(H5Aopen(object, name, H5P_DEFAULT));
+    if (a.get() < 0) fail(where, std::string("cannot open attribute ") + name);
+    const Dataspace space(H5Aget_space(a.get()));
+    const Datatype type(H5Aget_type(a.get()));
+    const H5T_class_t cls = H5Tget_class(type.get());
+    if (H5Sget_simple_extent_npoints(space.get()) != 1 || (cls != H5T_INTEGER && cls != H5T_FLOAT))
+      fail(where, std::string("attribute ") + name + " is not a single number");
+    T value{};
+    const hid_t memory = std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;
+    if (H5Aread(a.get(), memory, &value) < 0)
+      fail(where, std::string("cannot read attribute ") + name);
+    return value;
+  }
+
+  std::vector<hsize_t> dims(const char* name) const {
+    const Dataset d = open_dataset(name);
+    const Dataspace space(H5Dget_space(d.get()));
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    if (rank < 0) fail(name, "cannot read the dataset's shape");
+    std::vector<hsize_t> out(static_cast<std::size_t>(rank));
+    H5Sget_simple_extent_dims(space.get(), out.data(), nullptr);
+    return out;
+  }
+
+  // The whole dataset as doubles (float or integer in the file), checked against `shape`.
+  std::vector<double> doubles(const char* name, const std::vector<hsize_t>& shape) const {
+    return read<double>(name, shape, H5T_FLOAT, H5T_NATIVE_DOUBLE);
+  }
+  std::vector<std::int64_t> integers(const char* name, const std::vector<hsize_t>& shape) const {
+    return read<std::int64_t>(name, shape, H5T_INTEGER, H5T_NATIVE_INT64);
+  }
+
+  // z of the given nodes (sorted, unique) at every sample of /samples/positions, one read:
+  // out[k * nodes.size() + j] is z of nodes[j] at sample k (HDF5 maps a union selection in
+  // the file's row-major order).
+  std::vector<double> node_heights(const std::vector<hsize_t>& nodes, hsize_t n_samples) const {
+    const Dataset d = open_dataset(positions_name);
+    const Dataspace file_space(H5Dget_space(d.get()));
+    H5Sselect_none(file_space.get());
+    for (hsize_t node : nodes) {
+      const hsize_t start[3] = {0, node, 2};
+      const hsize_t count[3] = {n_samples, 1, 1};
+      if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
+        fail(positions_name, "cannot select the registration nodes");
+    }
+    const hsize_t memory_dims[2] = {n_samples, nodes.size()};
+    const Dataspace memory_space(H5Screate_simple(2, memory_dims, nullptr));
+    std::vector<double> out(n_samples * nodes.size());
+    if (!out.empty() && H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(),
+                                H5P_DEFAULT, out.data()) < 0)
+      fail(positions_name, "cannot read the registration nodes' positions");
+    return out;
+  }
+
+  Group open_group(const char* name) const {
+    Group g(H5Gopen2(file_.get(), name, H5P_DEFAULT));
+    if (g.get() < 0) fail(name, "not a group");
+    return g;
+  }
+
+ private:
+  static hid_t open(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw InputError({path, 0, ""}, "no such file");
+    if (fs::is_directory(path, ec)) throw InputError({path, 0, ""}, "is a directory");
+    if (H5Fis_hdf5(path.c_str()) <= 0)
+      throw InputError({path, 0, ""}, "not an HDF5 file (or not readable)");
+    const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0) throw InputError({path, 0, ""}, "cannot open the HDF5 file for reading");
+    return id;
+  }
+
+  Dataset open_dataset(const char* name) const {
+    Dataset d(H5Dopen2(file_.get(), name, H5P_DEFAULT));
+    if (d.get() < 0) fail(name, "cannot open the dataset");
+    return d;
+  }
+
+  template <class T>
+  std::vector<T> read(const char* name, const std::vector<hsize_t>& shape, H5T_class_t kind,
+                      hid_t memory_type) const {
+    const Dataset d = open_dataset(name);
+    const Datatype type(H5Dget_type(d.get()));
+    const H5T_class_t cls = H5Tget_class(type.get());
+    if (cls != kind && !(kind == H5T_FLOAT && cls == H5T_INTEGER))
+      fail(name, kind == H5T_FLOAT ? "not a numeric dataset" : "not an integer dataset");
+    const std::vector<hsize_t> found = dims(name);
+    if (found != shape) {
+      auto text = [](const std::vector<hsize_t>& s) {
+        std::ostringstream os;
+        os << "(";
+        for (std::size_t i = 0; i < s.size(); ++i) os << (i ? ", " : "") << s[i];
+        os << (s.size() == 1 ? ",)" : ")");
+        return os.str();
+      };
+      fail(name, "shape " + text(found) + ", expected " + text(shape));
+    }
+    std::size_t n = 1;
+    for (hsize_t s : shape) n *= static_cast<std::size_t>(s);
+    std::vector<T> out(n);
+    if (n > 0 && H5Dread(d.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+      fail(name, "cannot read the dataset");
+    return out;
+  }
+
+  std::string path_;
+  File file_;
+};
+
+void check_is_complete_dynamic_output(const Reader& r) {
+  const std::string not_dynamic = "not a Catena dynamic output";
+  if (!r.has_attribute(r.root(), "analysis")) {
+    if (r.has_attribute(r.root(), "format"))
+      r.fail("", not_dynamic + " (format '" + r.text_attribute(r.root(), "format", "format") +
+                     "', no root attribute analysis = \"dynamic\")");
+    r.fail("", not_dynamic + " (no root attribute analysis = \"dynamic\")");
+  }
+  const std::string analysis = r.text_attribute(r.root(), "analysis", "analysis");
+  if (analysis != "dynamic") r.fail("analysis", not_dynamic + " (analysis = '" + analysis + "')");
+  if (!r.has_attribute(r.root(), "status"))
+    r.fail("status", "missing: the file was not written by a complete dynamic run");
+  const std::string status = r.text_attribute(r.root(), "status", "status");
+  if (status != "complete")
+    r.fail("status",
+           "the run's status is '" + status + "', not 'complete': statistics need a finished run");
+}
+
+double uniform_interval(const Reader& r, const std::vector<double>& t) {
+  if (t.size() < 2) r.fail(time_name, "fewer than 2 samples: no sampling interval");
+  const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  if (!(dt > 0.0)) r.fail(time_name, "the sample times do not increase");
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    const double step = t[k + 1] - t[k];
+    if (std::abs(step - dt) > sampling_tolerance * dt) {
+      std::ostringstream os;
+      os << "not uniformly sampled: samples " << k << " and " << k + 1 << " are " << step
+         << " s apart, the mean interval is " << dt << " s";
+      r.fail(time_name, os.str());
+    }
+  }
+  return dt;
+}
+
+std::optional<post::EvaluationSection> evaluation_section(const Reader& r) {
+  post::EvaluationSection s;
+  if (r.has_attribute(r.root(), "evaluation_start"))
+    s.x_start = r.number_attribute<double>(r.root(), "evaluation_start", "evaluation_start");
+  if (r.has_attribute(r.root(), "evaluation_end"))
+    s.x_end = r.number_attribute<double>(r.root(), "evaluation_end", "evaluation_end");
+  if (s.x_start == 0.0 && s.x_end == 0.0) return std::nullopt;
+  if (!(s.x_end > s.x_start)) {
+    std::ostringstream os;
+    os << "evaluation_start " << s.x_start << " m, evaluation_end " << s.x_end
+       << " m: the end must lie beyond the start (give --section X0 X1 instead)";
+    r.fail("evaluation_end", os.str());
+  }
+  return s;
+}
+
+// The groups under /pantographs, placed at their column (attribute index).
+std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_columns) {
+  if (!r.has_link(pantographs_name))
+    r.fail(pantographs_name, "missing: the run had no pantographs");
+  const Group group = r.open_group(pantographs_name);
+  H5G_info_t info;
+  if (H5Gget_info(group.get(), &info) < 0) r.fail(pantographs_name, "cannot list the group");
+  if (info.nlinks == 0) r.fail(pantographs_name, "empty: the run had no pantographs");
+  if (info.nlinks != n_columns) {
+    std::ostringstream os;
+    os << info.nlinks << " pantographs but " << n_columns << " columns in " << contact_force_name;
+    r.fail(pantographs_name, os.str());
+  }
+  std::vector<post::PantographRecord> out(n_columns);
+  std::vector<bool> seen(n_columns, false);
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t length = H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i,
+                                              nullptr, 0, H5P_DEFAULT);
+    if (length < 0) r.fail(pantographs_name, "cannot list the group");
+    std::string name(static_cast<std::size_t>(length) + 1, '\0');
+    H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(),
+                       H5P_DEFAULT);
+    name.resize(static_cast<std::size_t>(length));
+    const std::string where = std::string(pantographs_name) + "/" + name;
+    const Group g = r.open_group(where.c_str());
+    for (const char* attribute : {"index", "speed"})
+      if (!r.has_attribute(g.get(), attribute))
+        r.fail(where, std::string("missing attribute ") + attribute);
+    const auto index = r.number_attribute<std::int64_t>(g.get(), "index", where);
+    if (index < 0 || static_cast<hsize_t>(index) >= n_columns ||
+        seen[static_cast<std::size_t>(index)]) {
+      std::ostringstream os;
+      os << "attribute index = " << index << ": must be a distinct column in [0, " << n_columns
+         << ")";
+      r.fail(where, os.str());
+    }
+    const auto column = static_cast<std::size_t>(index);
+    seen[column] = true;
+    out[column].name = name;
+    out[column].speed = r.number_attribute<double>(g.get(), "speed", where);
+  }
+  return out;
+}
+
+}  // namespace
+
+ContactRun read_contact_run(const std::string& path) {
+  const QuietHdf5 quiet;
+  const Reader r(path);
+  check_is_complete_dynamic_output(r);
+
+  ContactRun run;
+  if (!r.has_link(time_name)) r.fail(time_name, "missing: not a Catena dynamic output");
+  const std::vector<hsize_t> time_dims = r.dims(time_name);
+  if (time_dims.size() != 1) r.fail(time_name, "not one-dimensional");
+  const hsize_t n = time_dims[0];
+  run.n_samples = static_cast<std::size_t>(n);
+  run.dt = uniform_interval(r, r.doubles(time_name, {n}));
+  run.evaluation_section = evaluation_section(r);
+
+  for (const char* name : {contact_force_name, contact_position_name})
+    if (!r.has_link(name))
+      r.fail(name, "missing: the run had no pantographs (no contact was modelled)");
+  const std::vector<hsize_t> force_dims = r.dims(contact_force_name);
+  if (force_dims.size() != 2 || force_dims[0] != n)
+    r.fail(contact_force_name, "not of shape (n_samples, n_pantographs)");
+  const hsize_t n_pantographs = force_dims[1];
+  if (n_pantographs == 0) r.fail(contact_force_name, "no columns: the run had no pantographs");
+  run.pantographs = pantograph_list(r, n_pantographs);
+  const std::vector<double> force = r.doubles(contact_force_name, {n, n_pantographs});
+  const std::vector<double> position = r.doubles(contact_position_name, {n, n_pantographs});
+  for (std::size_t j = 0; j < run.pantographs.size(); ++j) {
+    post::PantographRecord& p = run.pantographs[j];
+    p.force.resize(run.n_samples);
+    p.position.resize(run.n_samples);
+    for (std::size_t k = 0; k < run.n_samples; ++k) {
+      p.force[k] = force[k * n_pantographs + j];
+      p.position[k] = position[k * n_pantographs + j];
+    }
+  }
+
+  run.has_registration_nodes = r.has_link(registration_nodes_name);
+  if (!run.has_registration_nodes) return run;
+  const std::vector<hsize_t> registration_dims = r.dims(registration_nodes_name);
+  if (registration_dims.size() != 1) r.fail(registration_nodes_name, "not one-dimensional");
+  const std::vector<std::int64_t> registration =
+      r.integers(registration_nodes_name, registration_dims);
+  if (registration.empty()) return run;
+  const std::vector<hsize_t> mesh_dims = r.dims(node_positions_name);
+  if (mesh_dims.size() != 2 || mesh_dims[1] != 3)
+    r.fail(node_positions_name, "not of shape (n_nodes, 3)");
+  const hsize_t n_nodes = mesh_dims[0];
+  const std::vector<double> reference = r.doubles(node_positions_name, mesh_dims);
+  if (r.dims(positions_name) != std::vector<hsize_t>{n, n_nodes, 3})
+    r.fail(positions_name, "not of shape (n_samples, n_nodes, 3)");
+  std::set<hsize_t> unique;
+  for (std::int64_t node : registration) {
+    if (node < 0 || static_cast<hsize_t>(node) >= n_nodes) {
+      std::ostringstream os;
+      os << "node index " << node << " outside [0, " << n_nodes << ")";
+      r.fail(registration_nodes_name, os.str());
+    }
+    unique.insert(static_cast<hsize_t>(node));
+  }
+  const std::vector<hsize_t> nodes(unique.begin(), unique.end());
+  const std::vector<double> z = r.node_heights(nodes, n);
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    post::RegistrationPoint p;
+    p.reference_x = reference[3 * nodes[j]];
+    p.z.resize(run.n_samples);
+    for (std::size_t k = 0; k < run.n_samples; ++k) p.z[k] = z[k * nodes.size() + j];
+    run.registration_points.push_back(std::move(p));
+  }
+  return run;
+}
+
+}  // namespace catena::app

@@ -1,0 +1,30 @@
+#pragma once
+// Reading what `catena stats` needs from a dynamic run's output file (docs/output.md,
+// "Contact forces and pantographs"): the sampling, the pantographs' contact force and
+// position, the evaluation section and the registration points' heights. Serial HDF5
+// (default file access), for one rank.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/post/contact_statistics.hpp"
+
+namespace catena::app {
+
+struct ContactRun {
+  std::size_t n_samples = 0;
+  double dt = 0.0;  // s, the (uniform) sampling interval of /time
+  // The root attributes evaluation_start/evaluation_end; none if absent or both 0.
+  std::optional<post::EvaluationSection> evaluation_section;
+  std::vector<post::PantographRecord> pantographs;  // in column order (attribute index)
+  bool has_registration_nodes = false;              // the file has /mesh/registration_nodes
+  std::vector<post::RegistrationPoint> registration_points;  // one per registration node
+};
+
+// Not collective. Reads `path`; throws catena::InputError naming the file (and the object)
+// if it is missing, not HDF5, not a Catena dynamic output, not complete (status), has no
+// pantographs, is not uniformly sampled or its datasets' shapes disagree.
+ContactRun read_contact_run(const std::string& path);
+
+}  // namespace catena::app
