@@ -1,0 +1,53 @@
+#pragma once
+// What the catenary builder (scene key `catenary`, docs/catenary.md) put into a Model:
+// which elements are the contact wire, the messenger and the droppers, where the wire
+// must be (the design heights), and which values shape finding
+// (solvers/shape_finding.hpp) may change. Plain data; indices are 0-based positions in
+// the Model's vectors. Units SI; z is up (the builder requires gravity along −z).
+#include <string>
+#include <vector>
+
+namespace catena::model {
+
+// One dropper: a bar (BarProps) from the messenger down to the contact wire.
+struct CatenaryDropper {
+  int element = 0;         // into Model::elements (a BarProps element)
+  int contact_node = 0;    // its lower node, on the contact wire
+  int messenger_node = 0;  // its upper node, on the messenger
+  int span = 0;            // 0-based span number
+  double design_z = 0.0;   // m, the contact wire's design height at the dropper
+  // N/m: when > 0 the dropper's stiffness EA/l0 is what the design fixes, so its EA is
+  // set to stiffness × unstretched length whenever the length changes; 0: EA is fixed.
+  double stiffness = 0.0;
+};
+
+// A steady arm (registration) at an intermediate support: an elastic support on the
+// contact wire and, when the design height is held, a vertical preload (a nodal load)
+// that shape finding sizes so that the static registration height is design_z.
+struct CatenaryRegistration {
+  int node = 0;           // contact-wire node, into Model::nodes
+  int load = -1;          // into Model::nodal_loads; −1: the height is not held
+  double design_z = 0.0;  // m
+  double stiffness = 0.0;  // N/m, vertical
+};
+
+// A wire of the tension section: its cable elements in x order and its design tension
+// (the axial force the balance weights keep; shape finding sets the prestrain to it).
+struct CatenaryWire {
+  std::string name;           // "contact_wire" or "messenger"
+  std::vector<int> elements;  // into Model::elements (CableProps), in x order
+  double tension = 0.0;       // N
+};
+
+struct CatenaryLayout {
+  int dimension = 3;                  // 2: x–z plane (out-of-plane DOFs fixed), 3
+  std::vector<double> support_x;      // m, the n_spans + 1 support (mast) positions
+  std::vector<double> dropper_offsets;  // m, from the span's start; empty if they differ per span
+  double system_height = 0.0;         // m, messenger above contact wire at the supports
+  CatenaryWire contact_wire;
+  CatenaryWire messenger;
+  std::vector<CatenaryDropper> droppers;            // in x order
+  std::vector<CatenaryRegistration> registrations;  // intermediate supports, in x order
+};
+
+}  // namespace catena::model
