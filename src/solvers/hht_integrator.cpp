@@ -9,6 +9,7 @@
 #include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/hermite_interpolation.hpp"
 #include "catena/solvers/reusable_newton.hpp"
+#include "catena/solvers/round_off_floor.hpp"
 
 namespace catena::solvers {
 
@@ -22,6 +23,7 @@ struct HhtIntegrator::Impl {
   VecHandle q_prev, v_prev, a_prev;
   // Pending step: built from the unknown a1.
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
+  RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   VecHandle q1, v1, a1, f1, residual, error;
   MatHandle mass, K, C, jacobian;
   MatHandle coupling;  // Gᵀ (constraints only)
@@ -67,6 +69,7 @@ struct HhtIntegrator::Impl {
       kinematics(a);
       system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), C.get());
       ++counters.jacobian_evaluations;
+      round_off.set_tangent(K.get());
     }
     const double s = 1.0 + options.alpha;
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
@@ -143,7 +146,12 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   }
   CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
   s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
-  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get());
+  if (!s.round_off.known()) {  // first attempt: the floor from a tangent at the start
+    s.system.tangent_parts({s.q0.get(), s.v0.get(), {}, s.t0}, s.K.get(), s.C.get());
+    s.round_off.set_tangent(s.K.get());
+  }
+  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get()) +
+                       (1.0 + s.options.alpha) * s.round_off.at(s.q0.get());
   const NewtonResult result =
       s.newton->solve(s.a1.get(), s.options.atol + s.options.rtol * s.scale0 + floor);
   StepOutcome out;

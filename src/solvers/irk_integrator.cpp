@@ -13,6 +13,7 @@
 #include "catena/solvers/hermite_interpolation.hpp"
 #include "catena/solvers/mumps_status.hpp"
 #include "catena/solvers/reusable_newton.hpp"
+#include "catena/solvers/round_off_floor.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -46,6 +47,7 @@ struct IrkIntegrator::Impl {
 
   double t0 = 0.0, t_prev = 0.0, h = 0.0, h_last = 0.0, h_matrix = -1.0;
   double scale0 = 0.0, stage_scale = 0.0;
+  RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   double klast_end = -1.0;  // end time of the step whose stages Klast holds
   VecHandle q0, v0, a0, q_prev, v_prev, a_prev, q1, v1, a1, scratch;
   std::vector<VecHandle> Kst, Klast, U, V, F;
@@ -164,6 +166,7 @@ struct IrkIntegrator::Impl {
     system.tangent_parts({q0.get(), v0.get(), {}, t0}, K.get(), C.get());
     ++counters.jacobian_evaluations;
     ++tangent_serial;
+    round_off.set_tangent(K.get());
   }
 
   void build(Vec xk, bool refresh, Mat) {
@@ -328,8 +331,10 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
     m.h_matrix = h;
   }
   m.predict();
+  if (!m.round_off.known()) m.evaluate_start_tangent();  // the floor needs a tangent
   const double atol =
       m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s)) +
+      m.round_off.at(m.q0.get()) * std::sqrt(static_cast<double>(m.s)) +
       m.algebraic->residual_floor(h * h, m.q0.get()) * std::sqrt(static_cast<double>(m.s));
   const NewtonResult result = m.newton->solve(m.x.get(), atol);
   StepOutcome out;
