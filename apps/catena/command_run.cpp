@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "run_info.hpp"
 #include "scene_loading.hpp"
+#include "shape_report.hpp"
 
 namespace catena::app {
 namespace {
@@ -74,7 +75,7 @@ void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult&
 }  // namespace
 
 void command_run(MPI_Comm comm, const CommandLine& cl) {
-  const model::Model m = load_scene(comm, cl.scene, cl.overrides);
+  model::Model m = load_scene(comm, cl.scene, cl.overrides);
   const int rank = mpi_rank(comm);
   if (rank == 0) {
     std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n",
@@ -82,6 +83,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                 m.nodes.size(), m.elements.size(), mpi_size(comm));
     std::fflush(stdout);
   }
+  shape_catenary(comm, m);  // a `catenary` scene: dropper lengths before any analysis
   if (m.analysis == model::AnalysisType::dynamic) {
     run_dynamic(comm, cl, m);
     return;

@@ -31,7 +31,7 @@ Kernel make_element_kernel(const model::Model& model, int index) {
         } else if constexpr (std::is_same_v<P, model::BarProps>) {
           const elements::BarSection s{p.EA, p.mass_per_length, p.damping, p.tension_only};
           const double l0 = p.unstretched_length > 0.0 ? p.unstretched_length : length;
-          return std::make_unique<elements::TensionBar>(l0, s, model.gravity);
+          return std::make_unique<elements::TensionBar>(l0, s, model.gravity, length);
         } else if constexpr (std::is_same_v<P, model::SpringProps>) {
           return std::make_unique<elements::LinearSpring>(xa, xb,
                                                           elements::SpringSection{p.stiffness, p.damping});

@@ -6,17 +6,25 @@
 
 namespace catena::elements {
 
-TensionBar::TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity)
-    : l0_(unstretched_length), section_(section),
+TensionBar::TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity,
+                       double mesh_length)
+    : l0_(unstretched_length), mesh_length_(mesh_length), section_(section),
       node_weight_(0.5 * section.mass_per_length * unstretched_length * gravity) {
   CATENA_ASSERT(l0_ > 0.0, "TensionBar: unstretched length must be positive");
+  CATENA_ASSERT(mesh_length_ >= 0.0, "TensionBar: mesh length must not be negative");
+}
+
+double TensionBar::unstretched_length(const LoadPath& path) const {
+  if (mesh_length_ <= 0.0) return l0_;
+  return mesh_length_ + path.loads * (l0_ - mesh_length_);
 }
 
 void TensionBar::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   const Vec3 d(s.q[3] - s.q[0], s.q[4] - s.q[1], s.q[5] - s.q[2]);
   const double l = d.norm();
   const Vec3 e = d / l;
-  const double eps = l / l0_ - 1.0;
+  const double l0 = unstretched_length(s.path);
+  const double eps = l / l0 - 1.0;
   const bool slack = section_.tension_only && eps < 0.0;
   const double EA = slack ? 0.0 : section_.EA;
   const double c = slack ? 0.0 : section_.damping;
@@ -46,7 +54,7 @@ void TensionBar::evaluate(const LocalState& s, Request r, LocalOutput out) const
   const Mat3 P = (Mat3::Identity() - e * e.transpose()) / l;  // ∂e/∂d
   if (r.stiffness) {
     // ∂(N e)/∂d = e ∂N/∂dᵀ + N ∂e/∂d, ∂N/∂d = (EA/l0) e + c Pᵀ Δv.
-    const Mat3 Kb = e * ((EA / l0_) * e + c * (P * dv)).transpose() + N * P;
+    const Mat3 Kb = e * ((EA / l0) * e + c * (P * dv)).transpose() + N * P;
     scatter(Kb, out.K);
   }
   if (r.damping) scatter(c * e * e.transpose(), out.C);
@@ -60,7 +68,7 @@ void TensionBar::mass(double* M) const {
 
 SectionResult TensionBar::section_result(const LocalState& s) const {
   const Vec3 d(s.q[3] - s.q[0], s.q[4] - s.q[1], s.q[5] - s.q[2]);
-  const double eps = d.norm() / l0_ - 1.0;
+  const double eps = d.norm() / unstretched_length(s.path) - 1.0;
   const bool slack = section_.tension_only && eps < 0.0;
   return {slack ? 0.0 : section_.EA * eps, eps};
 }

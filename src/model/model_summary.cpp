@@ -160,6 +160,23 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("point masses",
         std::to_string(model.point_masses.size()) + " (sum " + format_number(total_mass) + " kg)");
   t.row("gravity", format_vector(model.gravity) + " m/s^2");
+  if (model.catenary) {
+    const CatenaryLayout& c = *model.catenary;
+    const std::size_t n_spans = c.support_x.size() - 1;
+    t.row("catenary", std::to_string(c.dimension) + "D simple catenary, " +
+                          plural(static_cast<long long>(n_spans), "span") + " over " +
+                          format_number(c.support_x.back()) + " m, " +
+                          plural(static_cast<long long>(c.droppers.size()), "dropper") +
+                          ", " + plural(static_cast<long long>(c.registrations.size()),
+                                        "steady arm") +
+                          "; stitch wires are not modelled");
+    t.row("shape finding",
+          "dropper lengths, steady-arm preloads and wire prestrains are set by 'catena run' "
+          "before the analysis (docs/catenary.md)");
+    if (model.evaluation_end > model.evaluation_start)
+      t.row("evaluation", "contact wire from " + format_number(model.evaluation_start) +
+                              " m to " + format_number(model.evaluation_end) + " m");
+  }
   if (!set_order.empty()) {
     t.heading("  sets");
     for (const std::string& name : set_order)

@@ -15,6 +15,7 @@
 #include "attachment_reader.hpp"
 #include "catena/core/error.hpp"
 #include "catena/model/node_dofs.hpp"
+#include "catenary_reader.hpp"
 #include "constraint_reader.hpp"
 #include "element_reader.hpp"
 #include "free_body_check.hpp"
@@ -35,10 +36,10 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",         "gravity",  "sections",         "nodes", "lines",
-      "elements",     "supports", "elastic_supports", "loads", "masses",
-      "constraints",  "moving_loads", "analysis", "integrator", "output",
-      "pantographs"};
+      "name",        "gravity",      "sections",         "nodes",      "lines",
+      "elements",    "supports",     "elastic_supports", "loads",      "masses",
+      "constraints", "moving_loads", "analysis",         "integrator", "output",
+      "catenary",    "pantographs"};
   return keys;
 }
 
@@ -82,6 +83,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::generate_lines(scene.child("lines"), sections, build,
                          detail::max_element_id(explicit_elements));
   detail::add_explicit_elements(std::move(explicit_elements), build);
+  detail::read_catenary(scene.child("catenary"), build);
   if (model.nodes.empty())
     scene.child("nodes").fail(
         "the scene defines no nodes; add 'nodes' (and 'lines' or "

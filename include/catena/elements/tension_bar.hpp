@@ -8,7 +8,13 @@
 // either. The switch is sharp: the Jacobian is that of the active branch (no
 // regularisation), which Newton handles because the force is continuous at l = l0.
 //
-// Units: EA [N], l0 [m], c [N·s/m], μ [kg/m].
+// A bar whose unstretched length l0 differs from its mesh length L (a dropper sized by
+// shape finding) would be stretched in the reference configuration, where the static
+// solver starts. Given L, the bar's unstretched length follows the static load path with
+// the loads: l0(λ) = L + λ (l0 − L), λ = LoadPath::loads (docs/formulation.md), as the
+// cables' prestrain does; dynamics runs at λ = 1. Mass and weight use l0 throughout.
+//
+// Units: EA [N], l0 [m], L [m], c [N·s/m], μ [kg/m].
 #include "catena/core/vec3.hpp"
 #include "catena/elements/element.hpp"
 
@@ -23,7 +29,9 @@ struct BarSection {
 
 class TensionBar final : public Element {
  public:
-  TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity);
+  // mesh_length: L above; 0 = none (l0 at every point of the load path).
+  TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity,
+             double mesh_length = 0.0);
 
   std::string_view kind() const override { return "bar"; }
   int n_nodes() const override { return 2; }
@@ -33,7 +41,11 @@ class TensionBar final : public Element {
   SectionResult section_result(const LocalState& s) const override;
 
  private:
+  // Unstretched length at this point of the static load path.
+  double unstretched_length(const LoadPath& path) const;
+
   double l0_;
+  double mesh_length_;
   BarSection section_;
   Vec3 node_weight_;  // gravity force on each lumped node mass, N
 };

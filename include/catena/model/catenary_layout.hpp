@@ -25,9 +25,9 @@ struct CatenaryDropper {
 // contact wire and, when the design height is held, a vertical preload (a nodal load)
 // that shape finding sizes so that the static registration height is design_z.
 struct CatenaryRegistration {
-  int node = 0;           // contact-wire node, into Model::nodes
-  int load = -1;          // into Model::nodal_loads; −1: the height is not held
-  double design_z = 0.0;  // m
+  int node = 0;            // contact-wire node, into Model::nodes
+  int load = -1;           // into Model::nodal_loads; −1: the height is not held
+  double design_z = 0.0;   // m
   double stiffness = 0.0;  // N/m, vertical
 };
 
@@ -40,10 +40,10 @@ struct CatenaryWire {
 };
 
 struct CatenaryLayout {
-  int dimension = 3;                  // 2: x–z plane (out-of-plane DOFs fixed), 3
-  std::vector<double> support_x;      // m, the n_spans + 1 support (mast) positions
+  int dimension = 3;                    // 2: x–z plane (out-of-plane DOFs fixed), 3
+  std::vector<double> support_x;        // m, the n_spans + 1 support (mast) positions
   std::vector<double> dropper_offsets;  // m, from the span's start; empty if they differ per span
-  double system_height = 0.0;         // m, messenger above contact wire at the supports
+  double system_height = 0.0;           // m, messenger above contact wire at the supports
   CatenaryWire contact_wire;
   CatenaryWire messenger;
   std::vector<CatenaryDropper> droppers;            // in x order

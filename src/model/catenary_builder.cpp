@@ -1,0 +1,315 @@
+#include "catenary_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace catena::model::detail {
+namespace {
+
+// Support components (bit k of Support::fixed_mask, nodal layout [x, y, z, rx_x, rx_y, ...]).
+constexpr unsigned kFixX = 1u << 0;
+constexpr unsigned kFixY = 1u << 1;
+constexpr unsigned kFixZ = 1u << 2;
+constexpr unsigned kFixSlopeY = 1u << 4;  // rx_y: keeps a 2D wire's tangent in the x–z plane
+
+// The stations of one span: its support points and dropper points, as distances from the
+// span's start.
+std::vector<double> span_stations(const CatenaryDesign& d, std::size_t span) {
+  std::vector<double> s{0.0};
+  s.insert(s.end(), d.droppers.positions[span].begin(), d.droppers.positions[span].end());
+  s.push_back(d.span_lengths[span]);
+  return s;
+}
+
+// Elements between two stations `gap` apart: the fewest of length at most h.
+int elements_in_gap(double gap, double h) {
+  return std::max(1, static_cast<int>(std::ceil(gap / h * (1.0 - 1e-12))));
+}
+
+// One wire's nodes and elements, built before anything is added to the model so that the
+// numbering can follow docs/scene.md (all contact-wire nodes, then all messenger nodes).
+struct WirePlan {
+  std::vector<Vec3> positions;                // new nodes, in x order
+  std::vector<std::pair<int, int>> elements;  // local node numbers, in x order
+  std::vector<std::vector<int>> stations;     // per span: local node per station
+  std::vector<int> support_nodes;             // per support: the node that is held
+  std::vector<std::pair<int, int>> joints;    // split supports: (end, start) nodes
+  std::vector<double> arc_at_support;         // m along the wire, per support
+  double shortest_element = std::numeric_limits<double>::infinity();
+};
+
+WirePlan plan_wire(const CatenaryDesign& d, const std::vector<double>& support_x, double z) {
+  const std::size_t n_spans = d.span_lengths.size();
+  // Staggered wires kink at the intermediate supports; ANCF slopes cannot, so each span
+  // gets its own node there and a stiff spring joins the two (a hinge, see the doc).
+  const bool split = d.dimension == 3 && d.stagger != 0.0;
+  const auto lateral = [&](std::size_t support) {
+    return support % 2 == 0 ? d.stagger : -d.stagger;
+  };
+  WirePlan w;
+  double arc = 0.0;
+  auto add_node = [&](const Vec3& x) {
+    w.positions.push_back(x);
+    return static_cast<int>(w.positions.size()) - 1;
+  };
+  int previous_end = -1;
+  for (std::size_t span = 0; span < n_spans; ++span) {
+    const Vec3 a(support_x[span], lateral(span), z);
+    const Vec3 b(support_x[span + 1], lateral(span + 1), z);
+    const double length = d.span_lengths[span];
+    const std::vector<double> s = span_stations(d, span);
+    std::vector<int> nodes_at_stations;
+    int current = previous_end;
+    if (span == 0 || split) {
+      current = add_node(a);
+      if (span > 0) w.joints.emplace_back(previous_end, current);
+    }
+    if (span == 0) w.support_nodes.push_back(current);
+    w.arc_at_support.push_back(arc);
+    nodes_at_stations.push_back(current);
+    for (std::size_t k = 0; k + 1 < s.size(); ++k) {
+      const int n = elements_in_gap(s[k + 1] - s[k], d.element_length);
+      for (int e = 1; e <= n; ++e) {
+        const double at =
+            s[k] + (s[k + 1] - s[k]) * static_cast<double>(e) / static_cast<double>(n);
+        const bool span_end = e == n && k + 2 == s.size();  // exactly at the next support
+        const int next = add_node(span_end ? b : Vec3(a + (b - a) * (at / length)));
+        const double element_length = (w.positions[next] - w.positions[current]).norm();
+        w.shortest_element = std::min(w.shortest_element, element_length);
+        arc += element_length;
+        w.elements.emplace_back(current, next);
+        current = next;
+      }
+      nodes_at_stations.push_back(current);
+    }
+    w.stations.push_back(nodes_at_stations);
+    w.support_nodes.push_back(current);  // the end of this span holds support span + 1
+    previous_end = current;
+  }
+  w.arc_at_support.push_back(arc);
+  return w;
+}
+
+// Takes `count` ids after `last_used`; errors if int64 would overflow.
+std::int64_t reserve_ids(std::int64_t& last_used, std::int64_t count, const Field& where,
+                         const char* what) {
+  if (last_used > std::numeric_limits<std::int64_t>::max() - count)
+    where.fail(std::string("the catenary's generated ") + what +
+               " ids would exceed the largest 64-bit integer; use smaller ids elsewhere");
+  const std::int64_t first = last_used + 1;
+  last_used += count;
+  return first;
+}
+
+CableProps wire_props(const WireDesign& w) {
+  CableProps p;
+  p.EA = w.EA;
+  p.EI = w.EI;
+  p.mass_per_length = w.mass_per_length;
+  p.damping_time = w.damping_time;
+  p.prestrain = w.tension / w.EA;  // shape finding corrects it to the tension in the static state
+  return p;
+}
+
+// Adds both wires, the droppers, the joints of staggered supports, the supports and
+// attachments, the contact-wire path and Model::catenary.
+class CatenaryAssembler {
+ public:
+  CatenaryAssembler(const CatenaryDesign& d, const Field& entry, SceneBuild& build)
+      : d_(d), entry_(entry), build_(build), model_(build.model) {
+    support_x_.push_back(0.0);
+    for (const double length : d.span_lengths) support_x_.push_back(support_x_.back() + length);
+    contact_ = plan_wire(d, support_x_, 0.0);
+    messenger_ = plan_wire(d, support_x_, d.system_height);
+    origin_ = build.add_origin(entry);
+  }
+
+  void build() {
+    add_nodes();
+    CatenaryLayout layout;
+    layout.dimension = d_.dimension;
+    layout.support_x = support_x_;
+    layout.system_height = d_.system_height;
+    const bool same_positions =
+        std::all_of(d_.droppers.positions.begin(), d_.droppers.positions.end(),
+                    [&](const std::vector<double>& p) { return p == d_.droppers.positions[0]; });
+    if (same_positions) layout.dropper_offsets = d_.droppers.positions[0];
+    layout.contact_wire = add_wire("contact_wire", contact_, contact_base_, d_.contact_wire);
+    layout.messenger = add_wire("messenger", messenger_, messenger_base_, d_.messenger);
+    add_droppers(layout);
+    add_joints("contact_wire_joints", contact_, contact_base_, d_.contact_wire.EA);
+    add_joints("messenger_joints", messenger_, messenger_base_, d_.messenger.EA);
+    add_supports(layout);
+    add_path(layout);
+    model_.catenary = std::move(layout);
+  }
+
+ private:
+  int contact_node(int local) const { return contact_base_ + local; }
+  int messenger_node(int local) const { return messenger_base_ + local; }
+
+  // Adds the nodes and reserves the ids of every element the catenary will add.
+  void add_nodes() {
+    std::int64_t last_id = 0;
+    for (const Node& node : model_.nodes) last_id = std::max(last_id, node.id);
+    std::int64_t last_element_id = 0;
+    for (const ElementDesc& element : model_.elements)
+      last_element_id = std::max(last_element_id, element.id);
+    std::size_t n_elements = contact_.elements.size() + messenger_.elements.size() +
+                             contact_.joints.size() + messenger_.joints.size();
+    for (const auto& p : d_.droppers.positions) n_elements += p.size();
+    next_element_id_ =
+        reserve_ids(last_element_id, static_cast<std::int64_t>(n_elements), entry_, "element");
+    const auto n_new =
+        static_cast<std::int64_t>(contact_.positions.size() + messenger_.positions.size());
+    std::int64_t id = reserve_ids(last_id, n_new, entry_, "node");
+    contact_base_ = static_cast<int>(model_.nodes.size());
+    for (const Vec3& x : contact_.positions) build_.add_node(Node{id++, x}, origin_);
+    messenger_base_ = static_cast<int>(model_.nodes.size());
+    for (const Vec3& x : messenger_.positions) build_.add_node(Node{id++, x}, origin_);
+  }
+
+  void add_element(ElementDesc element) {
+    element.id = next_element_id_++;
+    build_.add_element(element, origin_);
+  }
+
+  CatenaryWire add_wire(const std::string& name, const WirePlan& plan, int base,
+                        const WireDesign& design) {
+    CatenaryWire wire{name, {}, design.tension};
+    ElementDesc element;
+    element.props = wire_props(design);
+    element.set = name;
+    for (const auto& [a, b] : plan.elements) {
+      element.nodes = {base + a, base + b};
+      wire.elements.push_back(static_cast<int>(model_.elements.size()));
+      add_element(element);
+    }
+    return wire;
+  }
+
+  void add_droppers(CatenaryLayout& layout) {
+    const DropperDesign& dd = d_.droppers;
+    ElementDesc element;
+    element.set = "droppers";
+    for (std::size_t span = 0; span < d_.span_lengths.size(); ++span) {
+      for (std::size_t k = 0; k < dd.positions[span].size(); ++k) {
+        const int lower = contact_node(contact_.stations[span][k + 1]);
+        const int upper = messenger_node(messenger_.stations[span][k + 1]);
+        BarProps bar;
+        // A stiffness fixes EA/l0; until shape finding sets l0 it is the mesh length.
+        bar.EA = dd.stiffness > 0.0 ? dd.stiffness * d_.system_height : dd.EA;
+        bar.mass_per_length = dd.mass_per_length;
+        bar.damping = dd.damping;
+        bar.tension_only = dd.tension_only;
+        element.props = bar;
+        element.nodes = {upper, lower};
+        CatenaryDropper dropper;
+        dropper.element = static_cast<int>(model_.elements.size());
+        dropper.contact_node = lower;
+        dropper.messenger_node = upper;
+        dropper.span = static_cast<int>(span);
+        dropper.design_z = design_height(d_.presag, dd.positions[span][k], d_.span_lengths[span]);
+        dropper.stiffness = dd.stiffness;
+        layout.droppers.push_back(dropper);
+        add_element(element);
+        if (dd.clamp_mass > 0.0) {
+          model_.point_masses.push_back(PointMass{lower, dd.clamp_mass});
+          model_.point_masses.push_back(PointMass{upper, dd.clamp_mass});
+        }
+      }
+    }
+  }
+
+  void add_joints(const std::string& set, const WirePlan& plan, int base, double EA) {
+    ElementDesc element;
+    element.set = set;
+    SpringProps spring;
+    spring.stiffness = Vec3::Constant(kJointStiffnessFactor * EA / plan.shortest_element);
+    element.props = spring;
+    for (const auto& [a, b] : plan.joints) {
+      element.nodes = {base + a, base + b};
+      add_element(element);
+    }
+  }
+
+  void add_supports(CatenaryLayout& layout) {
+    std::map<int, unsigned> fixed;  // node → mask, so each node gets one Support
+    const unsigned planar = d_.dimension == 2 ? kFixY | kFixSlopeY : 0u;
+    if (planar != 0u) {
+      for (std::size_t i = 0; i < contact_.positions.size(); ++i)
+        fixed[contact_node(static_cast<int>(i))] = planar;
+      for (std::size_t i = 0; i < messenger_.positions.size(); ++i)
+        fixed[messenger_node(static_cast<int>(i))] = planar;
+    }
+    const std::size_t n_supports = support_x_.size();
+    for (const std::size_t end : {std::size_t{0}, n_supports - 1}) {
+      fixed[contact_node(contact_.support_nodes[end])] |= kFixX | kFixY | kFixZ;
+      fixed[messenger_node(messenger_.support_nodes[end])] |= kFixX | kFixY | kFixZ;
+    }
+    const SteadyArmDesign& arm = d_.steady_arms;
+    const MessengerSupportDesign& ms = d_.messenger_supports;
+    for (std::size_t j = 1; j + 1 < n_supports; ++j) {
+      const int registration = contact_node(contact_.support_nodes[j]);
+      fixed[registration] |= kFixY;  // the steady arm holds the wire laterally
+      if (arm.stiffness > 0.0 || arm.damping > 0.0)
+        model_.elastic_supports.push_back(ElasticSupport{
+            registration, Vec3(0.0, 0.0, arm.stiffness), Vec3(0.0, 0.0, arm.damping)});
+      if (arm.mass > 0.0) model_.point_masses.push_back(PointMass{registration, arm.mass});
+      CatenaryRegistration r;
+      r.node = registration;
+      r.design_z = 0.0;
+      r.stiffness = arm.stiffness;
+      if (arm.hold_design_height) {
+        r.load = static_cast<int>(model_.nodal_loads.size());
+        model_.nodal_loads.push_back(NodalLoad{registration, Vec3::Zero()});
+      }
+      layout.registrations.push_back(r);
+
+      const int top = messenger_node(messenger_.support_nodes[j]);
+      fixed[top] |= kFixY | (ms.fixed ? kFixZ : 0u);
+      if (!ms.fixed)
+        model_.elastic_supports.push_back(
+            ElasticSupport{top, Vec3(0.0, 0.0, ms.stiffness), Vec3(0.0, 0.0, ms.damping)});
+    }
+    for (const auto& [node, mask] : fixed) model_.supports.push_back(Support{node, mask});
+    for (const int local : contact_.support_nodes)
+      model_.registration_nodes.push_back(contact_node(local));
+  }
+
+  // The contact wire as a path for moving contacts, and the evaluation section's range
+  // along it (arc length on the reference geometry: x unless the wire is staggered).
+  void add_path(const CatenaryLayout& layout) {
+    model_.paths.push_back(ElementPath{"contact_wire", layout.contact_wire.elements});
+    if (!d_.evaluation_spans) return;
+    const auto [first, last] = *d_.evaluation_spans;
+    model_.evaluation_start = contact_.arc_at_support[static_cast<std::size_t>(first - 1)];
+    model_.evaluation_end = contact_.arc_at_support[static_cast<std::size_t>(last)];
+  }
+
+  const CatenaryDesign& d_;
+  const Field& entry_;
+  SceneBuild& build_;
+  Model& model_;
+  std::vector<double> support_x_;
+  WirePlan contact_, messenger_;
+  int origin_ = 0;
+  int contact_base_ = 0, messenger_base_ = 0;
+  std::int64_t next_element_id_ = 0;  // the next element id handed out
+};
+
+}  // namespace
+
+double design_height(double presag, double s, double span_length) {
+  const double xi = s / span_length;
+  return -4.0 * presag * xi * (1.0 - xi);
+}
+
+void build_catenary(const CatenaryDesign& design, const Field& entry, SceneBuild& build) {
+  CatenaryAssembler(design, entry, build).build();
+}
+
+}  // namespace catena::model::detail

@@ -1,0 +1,87 @@
+#pragma once
+// The geometry of a simple catenary (one tension section) from its design data: nodes,
+// cable elements for the contact wire and the messenger, dropper bars, clamp and
+// steady-arm masses, supports, elastic supports, the contact-wire path, the registration
+// nodes and Model::catenary. The design is read and range-checked by catenary_reader; what
+// is built, and why, is in docs/catenary.md.
+//
+// Geometry (reference configuration, stress-free apart from the cables' prestrain):
+//   x along the track from the first support (x = 0), z up, y lateral;
+//   contact wire straight at z = 0 between supports, messenger straight at
+//   z = system_height, both at y = ±stagger alternating at the supports (3D) or y = 0.
+// Both wires are straight in every span because ANCF slopes are continuous at a node. The
+// droppers are vertical bars in the reference configuration; their unstretched lengths
+// (the pre-sag shape) come from shape finding.
+//
+// Numbering: new node ids follow the largest id in the model (explicit and line nodes),
+// contact-wire nodes first, then messenger nodes, each in x order; new element ids follow
+// the largest element id, in the order contact wire, messenger, droppers, joints.
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "scene_build.hpp"
+
+namespace catena::model::detail {
+
+struct WireDesign {
+  double EA = 0.0;               // N
+  double EI = 0.0;               // N·m²
+  double mass_per_length = 0.0;  // kg/m
+  double tension = 0.0;          // N, in the static state
+  double damping_time = 0.0;     // s, Kelvin–Voigt axial damping
+};
+
+struct DropperDesign {
+  std::vector<std::vector<double>> positions;  // m from the span's start, per span
+  double EA = 0.0;                             // N; 0 when `stiffness` is given
+  double stiffness = 0.0;        // N/m (EA = stiffness × unstretched length); 0 when EA is
+  double mass_per_length = 0.0;  // kg/m
+  double damping = 0.0;          // N·s/m, along the dropper
+  bool tension_only = true;
+  double clamp_mass = 0.0;  // kg, at each end
+};
+
+struct SteadyArmDesign {
+  double stiffness = 0.0;          // N/m, vertical, at the contact wire's intermediate supports
+  double damping = 0.0;            // N·s/m
+  double mass = 0.0;               // kg
+  bool hold_design_height = true;  // preload sized by shape finding
+};
+
+struct MessengerSupportDesign {
+  bool fixed = false;      // z held (and y in 3D); otherwise an elastic support
+  double stiffness = 0.0;  // N/m, vertical, when not fixed
+  double damping = 0.0;    // N·s/m
+};
+
+struct CatenaryDesign {
+  int dimension = 3;                 // 2 or 3
+  std::vector<double> span_lengths;  // m
+  double system_height = 0.0;        // m
+  double presag = 0.0;               // m, contact-wire sag at mid-span (design)
+  double stagger = 0.0;              // m, 3D only
+  double element_length = 0.0;       // m, upper bound of the wires' element length
+  WireDesign contact_wire;
+  WireDesign messenger;
+  DropperDesign droppers;
+  SteadyArmDesign steady_arms;
+  MessengerSupportDesign messenger_supports;
+  std::optional<std::pair<int, int>> evaluation_spans;  // 1-based, first ≤ last
+};
+
+// Stiffness of the spring that joins the two nodes of a wire at a staggered support, as a
+// multiple of the wire's axial stiffness EA/h of its shortest element (h): its stretch
+// under the wire tension is 1 % of one element's.
+inline constexpr double kJointStiffnessFactor = 100.0;
+
+// Not collective. The contact wire's design height at distance s from the start of a span
+// of length L: the pre-sag parabola −4·presag·(s/L)·(1 − s/L), 0 at the supports.
+double design_height(double presag, double s, double span_length);
+
+// Not collective. Adds the catenary to build.model (see the file comment). `entry` is the
+// scene's `catenary` map, which messages about the generated nodes and elements point at.
+// The design must be valid (catenary_reader checks it).
+void build_catenary(const CatenaryDesign& design, const Field& entry, SceneBuild& build);
+
+}  // namespace catena::model::detail

@@ -1,0 +1,234 @@
+#include "catenary_reader.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "catenary_builder.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+constexpr std::int64_t max_spans = 10'000;
+constexpr double max_catenary_elements = 10'000'000.0;  // per wire, as for lines
+
+const std::vector<std::string>& catenary_keys() {
+  static const std::vector<std::string> keys{
+      "dimension", "spans",       "span_length",        "span_lengths",    "system_height",
+      "presag",    "stagger",     "element_length",     "contact_wire",    "messenger",
+      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans"};
+  return keys;
+}
+
+WireDesign read_wire(const Field& wire, const char* what) {
+  wire.expect_map(what);
+  wire.check_keys({"EA", "EI", "mass_per_length", "tension", "damping_time"});
+  WireDesign w;
+  w.EA = wire.child("EA").real(RealRange::positive("N"));
+  w.EI = wire.child("EI").real(RealRange::positive("N*m^2"));
+  w.mass_per_length = wire.child("mass_per_length").real(RealRange::positive("kg/m"));
+  // The wire hangs from its tension: none, and the catenary has no shape.
+  w.tension = wire.child("tension").real(RealRange::positive("N"));
+  w.damping_time = wire.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
+  return w;
+}
+
+std::vector<double> read_span_lengths(const Field& c) {
+  const Field spans = c.child("spans");
+  const Field span_length = c.child("span_length");
+  const Field span_lengths = c.child("span_lengths");
+  if (span_lengths.present()) {
+    if (spans.present() || span_length.present())
+      span_lengths.fail(
+          "give either 'span_lengths' (a list) or 'spans' with 'span_length', "
+          "not both");
+    const std::vector<Field> items = span_lengths.items();
+    if (items.empty() || items.size() > static_cast<std::size_t>(max_spans))
+      span_lengths.fail("expected a list of 1 to " + std::to_string(max_spans) +
+                        " span lengths, got " + std::to_string(items.size()));
+    std::vector<double> lengths;
+    for (const Field& item : items) lengths.push_back(item.real(RealRange::positive("m")));
+    return lengths;
+  }
+  if (!spans.present() && !span_length.present())
+    c.fail(
+        "missing the spans: give 'spans' (a count) and 'span_length' (m), or "
+        "'span_lengths' (a list, m)");
+  const std::int64_t n = spans.integer(IntRange::between(1, max_spans));
+  const double length = span_length.real(RealRange::positive("m"));
+  return std::vector<double>(static_cast<std::size_t>(n), length);
+}
+
+// One span's dropper positions: increasing, strictly inside the span.
+std::vector<double> read_positions(const Field& list, double span_length, std::size_t span) {
+  const std::vector<Field> items = list.items();
+  if (items.empty())
+    list.fail("span " + std::to_string(span + 1) +
+              " has no droppers; expected at least one position in (0, span length)");
+  std::vector<double> positions;
+  for (const Field& item : items) {
+    const double s = item.real(RealRange::between(0.0, false, span_length, false, "m"));
+    if (!positions.empty() && !(s > positions.back()))
+      item.fail("dropper positions must increase along the span: " + format_number(s) +
+                " m follows " + format_number(positions.back()) + " m");
+    positions.push_back(s);
+  }
+  return positions;
+}
+
+// `positions`: one list for every span, or a list of lists (one per span).
+std::vector<std::vector<double>> read_dropper_positions(const Field& positions,
+                                                        const std::vector<double>& spans) {
+  if (!positions.present())
+    positions.fail(
+        "missing required key; expected the droppers' distances from the span's "
+        "start support (m): a list, or one list per span");
+  const std::vector<Field> items = positions.items();
+  const bool per_span = !items.empty() && items.front().is_list();
+  std::vector<std::vector<double>> out;
+  if (!per_span) {
+    for (std::size_t span = 0; span < spans.size(); ++span)
+      out.push_back(read_positions(positions, spans[span], span));
+    return out;
+  }
+  if (items.size() != spans.size())
+    positions.fail("a list per span needs " + std::to_string(spans.size()) +
+                   " lists (one per span), got " + std::to_string(items.size()));
+  for (std::size_t span = 0; span < spans.size(); ++span)
+    out.push_back(read_positions(items[span], spans[span], span));
+  return out;
+}
+
+DropperDesign read_droppers(const Field& droppers, const std::vector<double>& spans) {
+  droppers.expect_map("the droppers {positions, EA or stiffness, ...}");
+  droppers.check_keys(
+      {"positions", "EA", "stiffness", "mass_per_length", "damping", "tension_only", "clamp_mass"});
+  DropperDesign d;
+  d.positions = read_dropper_positions(droppers.child("positions"), spans);
+  const Field EA = droppers.child("EA");
+  const Field stiffness = droppers.child("stiffness");
+  if (EA.present() == stiffness.present())
+    droppers.fail(EA.present() ? "both 'EA' and 'stiffness' are given; give one: EA (N) or the "
+                                 "dropper stiffness EA/length (N/m)"
+                               : "missing the dropper's axial stiffness: give 'EA' (N) or "
+                                 "'stiffness' (N/m, = EA/length)");
+  if (EA.present())
+    d.EA = EA.real(RealRange::positive("N"));
+  else
+    d.stiffness = stiffness.real(RealRange::positive("N/m"));
+  d.mass_per_length =
+      droppers.child("mass_per_length").real_or(0.0, RealRange::non_negative("kg/m"));
+  d.damping = droppers.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+  d.tension_only = droppers.child("tension_only").boolean_or(true);
+  d.clamp_mass = droppers.child("clamp_mass").real_or(0.0, RealRange::non_negative("kg"));
+  return d;
+}
+
+SteadyArmDesign read_steady_arms(const Field& arms) {
+  arms.expect_map("the steady arms {stiffness, damping, mass, hold_design_height}");
+  arms.check_keys({"stiffness", "damping", "mass", "hold_design_height"});
+  SteadyArmDesign a;
+  a.stiffness = arms.child("stiffness").real(RealRange::non_negative("N/m"));
+  a.damping = arms.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+  a.mass = arms.child("mass").real_or(0.0, RealRange::non_negative("kg"));
+  a.hold_design_height = arms.child("hold_design_height").boolean_or(true);
+  return a;
+}
+
+MessengerSupportDesign read_messenger_supports(const Field& supports) {
+  supports.expect_map("the messenger supports {stiffness, damping} or {fixed: true}");
+  supports.check_keys({"fixed", "stiffness", "damping"});
+  MessengerSupportDesign s;
+  s.fixed = supports.child("fixed").boolean_or(false);
+  const Field stiffness = supports.child("stiffness");
+  const Field damping = supports.child("damping");
+  if (s.fixed) {
+    if (stiffness.present() || damping.present())
+      (stiffness.present() ? stiffness : damping)
+          .fail(
+              "a fixed messenger support has no stiffness or damping; give 'fixed: true' "
+              "or 'stiffness' (N/m)");
+    return s;
+  }
+  if (!stiffness.present())
+    supports.fail(
+        "missing the messenger supports' vertical stiffness: give 'stiffness' "
+        "(N/m) or 'fixed: true'");
+  s.stiffness = stiffness.real(RealRange::positive("N/m"));
+  s.damping = damping.real_or(0.0, RealRange::non_negative("N*s/m"));
+  return s;
+}
+
+std::pair<int, int> read_evaluation_spans(const Field& field, int n_spans) {
+  const std::vector<Field> items = field.items();
+  if (items.size() != 2)
+    field.fail("expected [first, last] (1-based span numbers), got " + field.value_text());
+  const IntRange range = IntRange::between(1, n_spans);
+  const auto first = static_cast<int>(items[0].integer(range));
+  const auto last = static_cast<int>(items[1].integer(range));
+  if (last < first)
+    items[1].fail("the last evaluation span (" + std::to_string(last) +
+                  ") comes before the first (" + std::to_string(first) + ")");
+  return {first, last};
+}
+
+}  // namespace
+
+void read_catenary(const Field& catenary, SceneBuild& build) {
+  if (!catenary.present()) return;
+  catenary.expect_map("a catenary (a map of design data, see docs/scene.md)");
+  if (const Field stitch = catenary.child("stitch"); stitch.present())
+    stitch.fail(
+        "stitch wires are not modelled (the builder makes a simple catenary: "
+        "contact wire, messenger, droppers); remove the key");
+  catenary.check_keys(catenary_keys());
+
+  const Vec3 g = build.model.gravity;
+  if (!(g.z() < 0.0 && g.x() == 0.0 && g.y() == 0.0))
+    catenary.fail(
+        "the catenary is built with z up, so gravity must point along -z; got "
+        "gravity " +
+        format_vector(g) + " m/s^2");
+
+  CatenaryDesign d;
+  d.dimension =
+      static_cast<int>(catenary.child("dimension").integer_or(3, IntRange::between(2, 3)));
+  d.span_lengths = read_span_lengths(catenary);
+  const Field height = catenary.child("system_height");
+  d.system_height = height.real(RealRange::positive("m"));
+  d.presag = catenary.child("presag").real_or(
+      0.0, RealRange::between(0.0, true, d.system_height, false, "m"));
+  const Field stagger = catenary.child("stagger");
+  if (stagger.present() && d.dimension == 2)
+    stagger.fail(
+        "stagger is a lateral (y) offset; a 2D catenary (dimension: 2) lies in the "
+        "x-z plane and has none. Remove the key or use dimension: 3");
+  d.stagger = stagger.real_or(0.0, RealRange::any("m"));
+  const Field element_length = catenary.child("element_length");
+  d.element_length = element_length.real(RealRange::positive("m"));
+  double total_length = 0.0;
+  for (const double l : d.span_lengths) total_length += l;
+  if (total_length / d.element_length > max_catenary_elements)
+    element_length.fail("element_length " + format_number(d.element_length) + " m gives about " +
+                        format_number(total_length / d.element_length) +
+                        " elements per wire; at most 1e7 are accepted");
+
+  d.contact_wire = read_wire(catenary.child("contact_wire"),
+                             "the contact wire {EA, EI, mass_per_length, tension}");
+  d.messenger = read_wire(catenary.child("messenger"),
+                          "the messenger wire {EA, EI, mass_per_length, tension}");
+  d.droppers = read_droppers(catenary.child("droppers"), d.span_lengths);
+  // Intermediate supports exist only with two spans or more.
+  const bool has_intermediate_supports = d.span_lengths.size() > 1;
+  const Field arms = catenary.child("steady_arms");
+  const Field messenger_supports = catenary.child("messenger_supports");
+  if (has_intermediate_supports || arms.present()) d.steady_arms = read_steady_arms(arms);
+  if (has_intermediate_supports || messenger_supports.present())
+    d.messenger_supports = read_messenger_supports(messenger_supports);
+  if (const Field spans = catenary.child("evaluation_spans"); spans.present())
+    d.evaluation_spans = read_evaluation_spans(spans, static_cast<int>(d.span_lengths.size()));
+
+  build_catenary(d, catenary, build);
+}
+
+}  // namespace catena::model::detail

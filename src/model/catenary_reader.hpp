@@ -1,0 +1,15 @@
+#pragma once
+// The scene's `catenary`: design data of a simple catenary (one tension section), read and
+// range-checked here, built by catenary_builder. Keys, units and ranges: docs/scene.md
+// "catenary"; the model it makes: docs/catenary.md.
+#include "scene_build.hpp"
+#include "yaml_fields.hpp"
+
+namespace catena::model::detail {
+
+// Not collective. Reads `catenary` (absent: nothing happens) and adds the catenary to
+// build.model. Needs Model::gravity (the catenary's z is up, so gravity must point along
+// −z) and comes after the explicit nodes, lines and elements, whose ids it numbers after.
+void read_catenary(const Field& catenary, SceneBuild& build);
+
+}  // namespace catena::model::detail
