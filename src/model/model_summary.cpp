@@ -185,13 +185,29 @@ std::string describe(const Model& model, int n_ranks_running) {
   const StaticOptions& s = model.static_options;
   if (model.analysis == AnalysisType::dynamic) {
     const IntegratorOptions& i = model.dynamic_options.integrator;
-    t.row("dynamics", "duration " + format_number(model.dynamic_options.duration) + " s, " +
-                          i.type + (i.type == "hht" ? " alpha " + format_number(i.alpha)
-                                    : i.type == "petsc" ? std::string()
-                                                        : " " + std::to_string(i.stages) +
-                                                              " stages") +
-                          ", dt " + format_number(i.dt) + " s" +
-                          (i.adaptive ? " (adaptive, rtol " + format_number(i.rtol) + ")" : ""));
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on `" " + std::to_string(n)`.
+    std::string method = i.type;
+    if (i.type == "hht") {
+      method += " alpha ";
+      method += format_number(i.alpha);
+    } else if (i.type != "petsc") {
+      method += ' ';
+      method += std::to_string(i.stages);
+      method += " stages";
+    }
+    std::string text = "duration ";
+    text += format_number(model.dynamic_options.duration);
+    text += " s, ";
+    text += method;
+    text += ", dt ";
+    text += format_number(i.dt);
+    text += " s";
+    if (i.adaptive) {
+      text += " (adaptive, rtol ";
+      text += format_number(i.rtol);
+      text += ')';
+    }
+    t.row("dynamics", text);
     t.row("initial state", model.dynamic_options.initial.from_static
                                ? "static equilibrium (below)"
                                : "reference configuration");
