@@ -7,9 +7,37 @@
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/linear_spring.hpp"
 #include "catena/elements/point_mass.hpp"
+#include "catena/elements/rayleigh_damped.hpp"
 #include "catena/elements/tension_bar.hpp"
 
 namespace catena::assembly {
+namespace {
+
+// The element's reference state: per node the first dofs_per_node() of
+// [position, tangent, section_y, section_z], as SecondOrderSystem::reference_state.
+std::vector<double> reference_state(const model::Model& model, const std::vector<int>& nodes,
+                                    int dofs_per_node) {
+  std::vector<double> q;
+  for (int n : nodes) {
+    const model::Node& node = model.nodes[n];
+    const Vec3* parts[4] = {&node.position, &node.tangent, &node.section_y, &node.section_z};
+    for (int k = 0; k < dofs_per_node; ++k) q.push_back((*parts[k / 3])[k % 3]);
+  }
+  return q;
+}
+
+// Rayleigh damping wraps the element when its section asks for it.
+std::unique_ptr<elements::Element> with_rayleigh(std::unique_ptr<elements::Element> e,
+                                                 const model::Rayleigh& r,
+                                                 const model::Model& model,
+                                                 const std::vector<int>& nodes) {
+  if (!r.active()) return e;
+  const std::vector<double> q_ref = reference_state(model, nodes, e->dofs_per_node());
+  return std::make_unique<elements::RayleighDamped>(
+      std::move(e), elements::RayleighCoefficients{r.mass, r.stiffness}, q_ref);
+}
+
+}  // namespace
 
 Kernel make_element_kernel(const model::Model& model, int index) {
   const model::ElementDesc& desc = model.elements[index];
@@ -26,8 +54,9 @@ Kernel make_element_kernel(const model::Model& model, int index) {
         if constexpr (std::is_same_v<P, model::CableProps>) {
           const elements::CableSection s{p.EA, p.EI, p.mass_per_length, p.damping_time,
                                          p.prestrain};
-          return std::make_unique<elements::AncfCable>(length, s, model.gravity,
-                                                       desc.distributed_load);
+          return with_rayleigh(std::make_unique<elements::AncfCable>(length, s, model.gravity,
+                                                                     desc.distributed_load),
+                               p.rayleigh, model, desc.nodes);
         } else if constexpr (std::is_same_v<P, model::BarProps>) {
           const elements::BarSection s{p.EA, p.mass_per_length, p.damping, p.tension_only};
           const double l0 = p.unstretched_length > 0.0 ? p.unstretched_length : length;
@@ -45,9 +74,11 @@ Kernel make_element_kernel(const model::Model& model, int index) {
           const elements::BeamSection s{p.EA,   p.GA_y, p.GA_z,   p.GJ,     p.EI_y,
                                         p.EI_z, p.mass_per_length, p.rho_Iy, p.rho_Iz,
                                         p.damping_time};
-          return std::make_unique<elements::AncfBeam>(
-              node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
-              elements::BeamLoads{model.gravity, desc.distributed_load});
+          return with_rayleigh(
+              std::make_unique<elements::AncfBeam>(
+                  node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
+                  elements::BeamLoads{model.gravity, desc.distributed_load}),
+              p.rayleigh, model, desc.nodes);
         }
       },
       desc.props);

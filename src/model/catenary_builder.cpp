@@ -110,6 +110,7 @@ CableProps wire_props(const WireDesign& w) {
   p.EI = w.EI;
   p.mass_per_length = w.mass_per_length;
   p.damping_time = w.damping_time;
+  p.rayleigh = w.rayleigh;
   p.prestrain = w.tension / w.EA;  // shape finding corrects it to the tension in the static state
   return p;
 }

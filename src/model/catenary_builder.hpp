@@ -30,6 +30,7 @@ struct WireDesign {
   double mass_per_length = 0.0;  // kg/m
   double tension = 0.0;          // N, in the static state
   double damping_time = 0.0;     // s, Kelvin–Voigt axial damping
+  Rayleigh rayleigh;             // proportional damping (none by default)
 };
 
 struct DropperDesign {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "catenary_builder.hpp"
+#include "rayleigh_reader.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -22,7 +23,7 @@ const std::vector<std::string>& catenary_keys() {
 
 WireDesign read_wire(const Field& wire, const char* what) {
   wire.expect_map(what);
-  wire.check_keys({"EA", "EI", "mass_per_length", "tension", "damping_time"});
+  wire.check_keys({"EA", "EI", "mass_per_length", "tension", "damping_time", "rayleigh"});
   WireDesign w;
   w.EA = wire.child("EA").real(RealRange::positive("N"));
   w.EI = wire.child("EI").real(RealRange::positive("N*m^2"));
@@ -30,6 +31,7 @@ WireDesign read_wire(const Field& wire, const char* what) {
   // The wire hangs from its tension: none, and the catenary has no shape.
   w.tension = wire.child("tension").real(RealRange::positive("N"));
   w.damping_time = wire.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
+  w.rayleigh = read_rayleigh(wire.child("rayleigh"));
   return w;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "did_you_mean.hpp"
+#include "rayleigh_reader.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -18,10 +19,10 @@ struct KindKeys {
 // The accepted keys of each section type, in the order docs/scene.md lists them.
 const std::array<KindKeys, 4>& keys_by_kind() {
   static const std::array<KindKeys, 4> table{{
-      {SectionKind::cable, {"type", "EA", "EI", "mass_per_length", "damping_time"}},
+      {SectionKind::cable, {"type", "EA", "EI", "mass_per_length", "damping_time", "rayleigh"}},
       {SectionKind::beam,
        {"type", "EA", "GA_y", "GA_z", "GJ", "EI_y", "EI_z", "mass_per_length", "rho_Iy", "rho_Iz",
-        "damping_time", "y_axis"}},
+        "damping_time", "rayleigh", "y_axis"}},
       {SectionKind::bar,
        {"type", "EA", "mass_per_length", "damping", "tension_only", "unstretched_length"}},
       {SectionKind::spring, {"type", "stiffness", "damping"}},
@@ -65,6 +66,7 @@ CableProps read_cable(const Field& s) {
   p.EI = s.child("EI").real(RealRange::positive("N*m^2"));
   p.mass_per_length = s.child("mass_per_length").real(RealRange::positive("kg/m"));
   p.damping_time = s.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
+  p.rayleigh = read_rayleigh(s.child("rayleigh"));
   return p;
 }
 
@@ -80,6 +82,7 @@ BeamProps read_beam(const Field& s) {
   p.rho_Iy = s.child("rho_Iy").real_or(0.0, RealRange::non_negative("kg*m"));
   p.rho_Iz = s.child("rho_Iz").real_or(0.0, RealRange::non_negative("kg*m"));
   p.damping_time = s.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
+  p.rayleigh = read_rayleigh(s.child("rayleigh"));
   const Field y_axis = s.child("y_axis");
   const Vec3 y = y_axis.vec3_or(Vec3::UnitZ(), RealRange::any(""));
   // Only the direction matters; it is checked against each element's axis later.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -356,3 +357,30 @@ TEST(Options, DefaultsWhenAbsent) {
 }
 
 }  // namespace
+
+// --- Rayleigh damping ---------------------------------------------------------------------
+
+TEST(Rayleigh, RatioAtTwoFrequenciesGivesThatRatioAtBoth) {
+  std::string text = wire_scene;
+  text.replace(text.find("mass_per_length: 1.35}"), 22,
+               "mass_per_length: 1.35, rayleigh: {ratio: 0.005, frequencies: [1, 20]}}");
+  const Model m = parse_scene(text, "rayleigh.yaml");
+  const catena::model::Rayleigh r = std::get<CableProps>(m.elements.front().props).rayleigh;
+  for (double f : {1.0, 20.0}) {
+    const double w = 2.0 * std::numbers::pi * f;
+    EXPECT_NEAR(r.mass / (2.0 * w) + r.stiffness * w / 2.0, 0.005, 1e-15);
+  }
+  EXPECT_TRUE(r.active());
+}
+
+TEST(Rayleigh, CoefficientsAsGivenAndAbsentMeansNone) {
+  std::string text = wire_scene;
+  text.replace(text.find("mass_per_length: 1.35}"), 22,
+               "mass_per_length: 1.35, rayleigh: {stiffness: 2.0e-4}}");
+  const catena::model::Rayleigh r =
+      std::get<CableProps>(parse_scene(text, "r.yaml").elements.front().props).rayleigh;
+  EXPECT_EQ(r.mass, 0.0);
+  EXPECT_EQ(r.stiffness, 2.0e-4);
+  EXPECT_FALSE(std::get<CableProps>(parse_scene(wire_scene, "w.yaml").elements.front().props)
+                   .rayleigh.active());
+}

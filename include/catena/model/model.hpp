@@ -26,6 +26,13 @@ struct Node {
   Vec3 section_z = Vec3::Zero();
 };
 
+// Rayleigh damping D = α M + β K_ref (elements/rayleigh_damped.hpp); zero: none.
+struct Rayleigh {
+  double mass = 0.0;       // α, 1/s
+  double stiffness = 0.0;  // β, s
+  bool active() const { return mass > 0.0 || stiffness > 0.0; }
+};
+
 // ANCF gradient-deficient cable (contact wire, messenger, droppers as cables).
 struct CableProps {
   double EA = 0.0;               // N, axial stiffness
@@ -35,6 +42,7 @@ struct CableProps {
   // Prestrain ε_p: the element's unstretched length is L_mesh / (1 + ε_p). Set from the
   // scene's `tension` (ε_p = T/EA), `prestrain` or `unstretched_length`.
   double prestrain = 0.0;
+  Rayleigh rayleigh;             // proportional damping α M + β K_ref (last: aggregates)
 };
 
 // ANCF beam with torsion (see elements/ancf_beam.hpp for the formulation).
@@ -47,6 +55,7 @@ struct BeamProps {
   double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, section rotary inertia per length
   double damping_time = 0.0;      // s, Kelvin–Voigt on all strains
   Vec3 y_axis = Vec3::UnitZ();    // reference direction of the section's y axis
+  Rayleigh rayleigh;              // proportional damping α M + β K_ref (last: aggregates)
 };
 
 // Two-node bar between node positions (droppers); optionally tension-only.
