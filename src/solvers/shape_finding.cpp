@@ -187,10 +187,9 @@ bool tensions_converged(const CatenaryLayout& layout, const Errors& e, double rt
              rtol * layout.messenger.tension;
 }
 
-}  // namespace
-
-ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
-                                       const ShapeFindingOptions& options) {
+// The iteration on `model`, which ends with the unknowns found applied to it.
+ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
+                              const ShapeFindingOptions& options, Unknowns& found) {
   CATENA_ASSERT(model.catenary.has_value(), "shape finding needs a catenary layout");
   const CatenaryLayout layout = *model.catenary;
   const std::size_t n = layout.droppers.size();
@@ -255,6 +254,7 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
           u.messenger_prestrain, e.messenger_tension, layout.messenger.tension, EA_messenger);
   }
 
+  found = u;
   report.dropper_lengths = u.lengths;
   report.registration_preloads = u.preloads;
   report.height_errors = e.dropper;
@@ -264,6 +264,24 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
   report.messenger_tension = e.messenger_tension;
   for (const model::CatenaryDropper& d : layout.droppers)
     report.dropper_forces.push_back(snapshot.axial_force[static_cast<std::size_t>(d.element)]);
+  return report;
+}
+
+}  // namespace
+
+ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
+                                       const ShapeFindingOptions& options) {
+  CATENA_ASSERT(model.catenary.has_value(), "shape finding needs a catenary layout");
+  // The design shape is the catenary's own, without the pantographs pressing on it (a head
+  // standing in a span would lift the wire there, and shape finding would shorten that
+  // span's droppers to pull it back down) and without moving loads. The pantographs'
+  // stages stay in the copy, held by their ground springs, touching nothing.
+  model::Model bare = model;
+  bare.contacts.clear();
+  bare.moving_loads.clear();
+  Unknowns found;
+  ShapeFindingReport report = find_shape(comm, bare, options, found);
+  apply(found, model);
   return report;
 }
 

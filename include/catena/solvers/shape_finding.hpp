@@ -49,7 +49,9 @@ struct ShapeFindingReport {
 // Collective: every rank passes the same model and gets the same report. Requires
 // model.catenary. Sets the dropper lengths (and EA = stiffness × length where the design
 // gives a stiffness), the steady-arm preloads (Model::nodal_loads) and the wires'
-// prestrains in `model`. Throws NumericalError when a dropper would need a non-positive
+// prestrains in `model`. The shape is the catenary's alone: pantograph contacts and moving
+// loads are left out of every solve (the design heights are those of the unloaded line).
+// Throws NumericalError when a dropper would need a non-positive
 // length (the messenger hangs below the contact wire: raise system_height or the
 // messenger's tension), when the iteration does not reach height_tolerance within
 // max_iterations, and whatever StaticSolver throws.
