@@ -165,3 +165,18 @@ TEST(ShapeFinding, SpatialStaggeredCatenaryReachesTheDesignHeights) {
 }
 
 }  // namespace
+
+// A pantograph pressing on the wire (and a moving load on it) are not part of the design
+// shape: with them in the scene shape finding gives the same lengths to 1e-9 m (without
+// leaving them out, a pantograph standing in a span shortens that span's droppers).
+TEST(ShapeFinding, PantographsAndMovingLoadsDoNotChangeTheLengths) {
+  const Shaped bare = shape();
+  const Shaped loaded = shape(
+      {"pantographs=[{name: p, path: contact_wire, speed: 0, start: 90, static_force: 300, "
+       "model: en50318}]"});
+  ASSERT_EQ(bare.report.dropper_lengths.size(), loaded.report.dropper_lengths.size());
+  for (std::size_t i = 0; i < bare.report.dropper_lengths.size(); ++i)
+    EXPECT_NEAR(loaded.report.dropper_lengths[i], bare.report.dropper_lengths[i], 1e-9) << i;
+  // The pantograph is still in the model, and lifts the wire where it stands.
+  ASSERT_EQ(loaded.model.contacts.size(), 1u);
+}
