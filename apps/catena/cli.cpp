@@ -14,6 +14,8 @@ Usage:
   catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [PETSc options]
   catena check SCENE.yaml [--set KEY=VALUE ...]
   catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]
+  catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
+                    [--json] [PETSc options]
   catena --help
 
 Commands:
@@ -21,6 +23,9 @@ Commands:
   check   validate the scene and print what would be modelled, without solving
   stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
           (serial: run it without mpirun)
+  elasticity  static elasticity of a catenary scene along one span (EN 50119): uplift of
+          the contact wire per newton of a static upward force at each point, with max,
+          min, mean and the uniformity coefficient (docs/catenary.md, "Elasticity")
 
 Options:
   -o, --output FILE     output file (default: the scene's output.file, else catena.h5)
@@ -37,7 +42,16 @@ Options of stats:
   --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
                         at the cutoff; the sampling rate must be >= 10 x the cutoff)
 
-PETSc options (prefix -static_ for the static solver), e.g.:
+Options of elasticity (also --set; pantographs, moving loads and dynamics are ignored):
+  --span N              span, 1-based (default: the first of catenary.evaluation_spans,
+                        else the middle span, (spans + 1) / 2)
+  --step DX             spacing of the points along the span, m (default 1; > 0, at most
+                        the span length); both supports are points
+  --force F             static upward force at each point, N (default 100; > 0)
+  --json                print JSON instead of a table
+
+PETSc options (prefix -static_ for the static solver, -elasticity_ for the elasticity
+solves), e.g.:
   -static_snes_monitor -static_ksp_view -log_view -static_mat_mumps_icntl_4 2
 
 Examples:
@@ -45,6 +59,7 @@ Examples:
   mpirun -n 2 catena run meshes/default.yaml -o default.h5
   mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
   catena stats en50318_250.h5 --section 240 360
+  mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5 --json
 )";
 }
 
@@ -57,14 +72,70 @@ bool is_scene_path(const std::string& token) {
   return ends_with(".yaml") || ends_with(".yml");
 }
 
-// A finite real number, the whole token (no trailing characters).
-double parse_real(const std::string& token, const char* flag) {
+// A finite real number, the whole token (no trailing characters); `accepted`, if given,
+// is added to the message.
+double parse_real(const std::string& token, const char* flag, const std::string& accepted = "") {
   double value = 0.0;
   const char* end = token.data() + token.size();
   const auto [ptr, ec] = std::from_chars(token.data(), end, value);
   if (ec != std::errc() || ptr != end || !std::isfinite(value))
-    throw InputError({"", 0, flag}, "'" + token + "' is not a finite number");
+    throw InputError({"", 0, flag}, "'" + token + "' is not a finite number" +
+                                        (accepted.empty() ? "" : "; accepted: " + accepted));
   return value;
+}
+
+// A whole number, the whole token.
+int parse_integer(const std::string& token, const char* flag, const char* accepted) {
+  int value = 0;
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  if (ec != std::errc() || ptr != end)
+    throw InputError({"", 0, flag}, "'" + token + "' is not a whole number; accepted: " + accepted);
+  return value;
+}
+
+// A finite number > 0, the whole token; `accepted` says what is, for the message.
+double parse_positive(const std::string& token, const char* flag, const char* unit,
+                      const std::string& accepted) {
+  const double value = parse_real(token, flag, accepted);
+  if (!(value > 0.0))
+    throw InputError({"", 0, flag},
+                     "must be positive (got " + token + " " + unit + "); accepted: " + accepted);
+  return value;
+}
+
+// The options of `catena elasticity` at args[i]; returns false if args[i] is none of them.
+bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
+                             ElasticityArguments& el) {
+  const std::string& a = args[i];
+  auto value = [&](const char* flag) -> const std::string& {
+    if (i + 1 >= args.size())
+      throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
+    return args[++i];
+  };
+  if (a == "--json") {
+    el.json = true;
+  } else if (a == "--span") {
+    el.span = parse_integer(value("--span"), "--span",
+                            "a span number from 1 to the catenary's number of spans");
+    if (*el.span < 1)
+      throw InputError({"", 0, "--span"}, "span " + args[i] +
+                                              " does not exist; accepted: a span number from "
+                                              "1 to the catenary's number of spans");
+  } else if (a == "--step") {
+    el.step = parse_positive(value("--step"), "--step", "m",
+                             "a distance in m, > 0 and at most the span length");
+  } else if (a == "--force") {
+    el.force = parse_positive(value("--force"), "--force", "N", "an upward force in N, > 0");
+  } else if (a == "-o" || a == "--output" || a == "--restart") {
+    throw InputError({"", 0, "arguments"}, "'" + a +
+                                               "' is not an option of elasticity (which "
+                                               "writes no output file); accepted: --set, --span N, "
+                                               "--step DX, --force F, --json");
+  } else {
+    return false;
+  }
+  return true;
 }
 
 // `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`; args[i] follows "stats".
@@ -137,9 +208,9 @@ CommandLine parse_command_line(int argc, char** argv) {
     parse_stats(args, i, cl);
     return cl;
   }
-  if (cl.command != "run" && cl.command != "check")
+  if (cl.command != "run" && cl.command != "check" && cl.command != "elasticity")
     throw InputError({"", 0, "command"}, "unknown command '" + cl.command +
-                                             "'; accepted: run, check, stats, --help");
+                                             "'; accepted: run, check, stats, elasticity, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {
@@ -150,6 +221,8 @@ CommandLine parse_command_line(int argc, char** argv) {
     if (a == "-h" || a == "--help") {
       cl.command = "help";
       return cl;
+    } else if (cl.command == "elasticity" && parse_elasticity_option(args, i, cl.elasticity)) {
+      continue;
     } else if (a == "--set") {
       cl.overrides.push_back(value("--set"));
     } else if (a.rfind("--set=", 0) == 0) {

@@ -16,14 +16,23 @@ struct StatsArguments {
   double cutoff_hz = 20.0;                      // --cutoff HZ: low-pass cutoff (−6 dB point)
 };
 
+// `catena elasticity SCENE [--set k=v ...] [--span N] [--step DX] [--force F] [--json]`.
+struct ElasticityArguments {
+  std::optional<int> span;  // --span N (1-based); else the first evaluation span or the middle one
+  double step = 1.0;        // --step DX [m], > 0: spacing of the points along the span
+  double force = 100.0;     // --force F [N], > 0: the static upward probe force
+  bool json = false;        // --json: JSON instead of the table
+};
+
 struct CommandLine {
-  std::string command;                 // run | check | stats | help
+  std::string command;                 // run | check | stats | elasticity | help
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
   std::string joined;                  // the whole command line, for the output file
   StatsArguments stats;                // command "stats" only
+  ElasticityArguments elasticity;      // command "elasticity" only
 };
 
 // Throws catena::InputError for malformed arguments.

@@ -13,6 +13,9 @@ void command_run(MPI_Comm comm, const CommandLine& cl);
 // Collective; rank 0 reads the file and prints. `catena stats`: EN 50318 contact-force
 // statistics per pantograph of a dynamic run's output (command_stats.cpp).
 void command_stats(MPI_Comm comm, const CommandLine& cl);
+// Collective; rank 0 prints. `catena elasticity`: the static elasticity curve of one span
+// of a catenary scene (command_elasticity.cpp).
+void command_elasticity(MPI_Comm comm, const CommandLine& cl);
 // Collective. The dynamic analysis of command_run.
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
 

@@ -4,6 +4,7 @@
 //   mpirun -n 2 catena run meshes/default.yaml -o default.h5
 //   mpirun -n 3 catena run meshes/default.yaml --set lines[0].elements=600 -log_view
 //   catena stats run.h5 --section 240 360 --json
+//   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5
 //
 // Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
 // (no equilibrium found, singular structure, step size below its minimum), 128 + signal
@@ -30,6 +31,8 @@ int main(int argc, char** argv) {
         catena::app::command_check(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "stats") {
         catena::app::command_stats(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "elasticity") {
+        catena::app::command_elasticity(PETSC_COMM_WORLD, cl);
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }
