@@ -23,7 +23,7 @@ namespace {
 model::Model clamped_droppers() {
   model::Model m;
   m.gravity = Vec3(0, 0, -9.81);
-  const model::CableProps rope{1.8e7, 195.0, 1.35, 0.0, 20000.0 / 1.8e7};
+  const model::CableProps rope{1.8e7, 195.0, 1.35, 0.0, 20000.0 / 1.8e7, {}};
   const auto nodes = catena::test::add_line(m, {0, 0, 0}, {30, 0, 0}, 30, rope);
   catena::test::set_reference_frames(m);
   catena::test::pin(m, nodes.back());

@@ -23,8 +23,8 @@ namespace {
 model::Model two_wire_structure() {
   model::Model m;
   m.gravity = Vec3(0, 0, -9.81);
-  model::CableProps cw{1.8e7, 195.0, 1.35, 0.0, 20000.0 / 1.8e7};
-  model::CableProps mw{1.3e7, 131.7, 1.07, 0.0, 16000.0 / 1.3e7};
+  model::CableProps cw{1.8e7, 195.0, 1.35, 0.0, 20000.0 / 1.8e7, {}};
+  model::CableProps mw{1.3e7, 131.7, 1.07, 0.0, 16000.0 / 1.3e7, {}};
   const int n = 40;
   const auto contact = catena::test::add_line(m, {0, 0, 0}, {60, 0, 0}, n, cw);
   const auto messenger = catena::test::add_line(m, {0, 0, 1.2}, {60, 0, 1.2}, n, mw);

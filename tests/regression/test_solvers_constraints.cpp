@@ -30,7 +30,7 @@ using catena::Vec3;
 
 namespace {
 
-const model::CableProps kRope{1260.0, 8.505e-3, 9.972, 0.0, 0.0};
+const model::CableProps kRope{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}};
 
 // The flexible pendulum of meshes/cable_pendulum.yaml, its pivot pinned by elimination
 // or by a constraint (pinned, or prescribed with a horizontal sine of `amplitude`).

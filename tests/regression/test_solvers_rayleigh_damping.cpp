@@ -25,7 +25,8 @@ double measured_first_mode_ratio(double alpha, double beta, double& omega) {
   const catena::test::TautString string;
   omega = 2.0 * std::numbers::pi * string.first_frequency();
   model::Model m = string.model();
-  for (model::ElementDesc& e : m.elements) std::get<model::CableProps>(e.props).rayleigh = {alpha, beta};
+  for (model::ElementDesc& e : m.elements)
+    std::get<model::CableProps>(e.props).rayleigh = {alpha, beta};
   catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
@@ -52,7 +53,8 @@ double measured_first_mode_ratio(double alpha, double beta, double& omega) {
   }
   EXPECT_EQ(peaks.size(), 5u);
   // δ = ln(A_k / A_{k+1}) = 2πζ / √(1 − ζ²).
-  const double delta = std::log(peaks.front() / peaks.back()) / (peaks.size() - 1.0);
+  const double delta =
+      std::log(peaks.front() / peaks.back()) / static_cast<double>(peaks.size() - 1);
   return delta / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + delta * delta);
 }
 
