@@ -4,23 +4,27 @@
 #include <bit>
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "catena/model/node_dofs.hpp"
 #include "number_format.hpp"
+#include "summary_table.hpp"
 
 namespace catena::model {
+
+std::string detail::plural(long long n, const std::string& word) {
+  std::string text = std::to_string(n);
+  text += ' ';
+  text += word;
+  if (n != 1) text += 's';
+  return text;
+}
+
 namespace {
 
 using detail::format_number;
 using detail::format_vector;
-
-constexpr int label_width = 18;
-
-std::string plural(long long n, const std::string& word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
+using detail::plural;
 
 // Counts per element kind in variant order, e.g. "cable 300, bar 12".
 std::string kind_counts(const std::vector<long long>& counts) {
@@ -72,20 +76,6 @@ struct SetSummary {
   }
 };
 
-class Table {
- public:
-  void row(const std::string& label, const std::string& value, int indent = 2) {
-    out_ << std::string(static_cast<std::size_t>(indent), ' ') << label;
-    const int pad = label_width - static_cast<int>(label.size()) - (indent - 2);
-    out_ << std::string(static_cast<std::size_t>(std::max(pad, 1)), ' ') << value << "\n";
-  }
-  void heading(const std::string& text) { out_ << text << "\n"; }
-  std::string str() const { return out_.str(); }
-
- private:
-  std::ostringstream out_;
-};
-
 struct DofCounts {
   long long nodes_with[13] = {};  // indexed by DOFs per node (3, 6, 12)
   long long total = 0;
@@ -112,7 +102,8 @@ int suggested_rank_count(const Model& model) {
 }
 
 std::string describe(const Model& model, int n_ranks_running) {
-  Table t;
+  detail::SummaryTable t;
+  detail::SummaryNotes notes;
   t.heading("Scene" + (model.name.empty() ? std::string() : " '" + model.name + "'") +
             (model.source_file.empty() ? std::string() : " from " + model.source_file));
 
@@ -161,15 +152,7 @@ std::string describe(const Model& model, int n_ranks_running) {
         std::to_string(model.point_masses.size()) + " (sum " + format_number(total_mass) + " kg)");
   t.row("gravity", format_vector(model.gravity) + " m/s^2");
   if (model.catenary) {
-    const CatenaryLayout& c = *model.catenary;
-    const std::size_t n_spans = c.support_x.size() - 1;
-    t.row("catenary", std::to_string(c.dimension) + "D simple catenary, " +
-                          plural(static_cast<long long>(n_spans), "span") + " over " +
-                          format_number(c.support_x.back()) + " m, " +
-                          plural(static_cast<long long>(c.droppers.size()), "dropper") +
-                          ", " + plural(static_cast<long long>(c.registrations.size()),
-                                        "steady arm") +
-                          "; stitch wires are not modelled");
+    detail::describe_catenary(model, t, notes);
     t.row("shape finding",
           "dropper lengths, steady-arm preloads and wire prestrains are set by 'catena run' "
           "before the analysis (docs/catenary.md)");
@@ -177,6 +160,15 @@ std::string describe(const Model& model, int n_ranks_running) {
       t.row("evaluation", "contact wire from " + format_number(model.evaluation_start) +
                               " m to " + format_number(model.evaluation_end) + " m");
   }
+  detail::describe_moving(model, t, notes);
+  if (model.analysis == AnalysisType::dynamic && !detail::structure_is_damped(model))
+    notes.left_out.push_back(
+        model.catenary
+            ? "no structural damping: nothing damps the wires (no damping_time or rayleigh "
+              "on either wire, dropper, steady-arm and messenger-support damping 0); only the "
+              "integrator's numerical dissipation acts"
+            : "no structural damping: no element or elastic support outside the pantographs "
+              "has damping; only the integrator's numerical dissipation acts");
   if (!set_order.empty()) {
     t.heading("  sets");
     for (const std::string& name : set_order)
@@ -223,6 +215,11 @@ std::string describe(const Model& model, int n_ranks_running) {
                                std::to_string(free_dofs_per_rank_target) +
                                " free DOFs per rank); this check ran on " +
                                plural(n_ranks_running, "rank"));
+  if (!notes.left_out.empty()) {
+    t.heading("Left out:");
+    for (const std::string& item : notes.left_out) t.heading("  - " + item);
+  }
+  for (const std::string& warning : notes.warnings) t.heading("warning: " + warning);
   return t.str();
 }
 

@@ -160,6 +160,9 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       entry.fail("missing contact: {stiffness: k_c} (N/m); `model: en50318` sets 50000");
     c.stiffness = contact_stiffness;
     c.up = up;
+    for (const Stage& s : stages) c.stages.push_back({s.mass, s.stiffness, s.damping});
+    c.static_force = static_force;
+    c.aerodynamic_coefficient = aero;
 
     // Nodes: the head at the wire's reference point, the other stages below (the springs
     // act on displacements, so the spacing is only for pictures).

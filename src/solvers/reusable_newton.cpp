@@ -40,14 +40,14 @@ PetscErrorCode ReusableNewton::form_function(SNES, Vec x, Vec r, void* ctx) {
   });
 }
 
-PetscErrorCode ReusableNewton::form_jacobian(SNES, Vec x, Mat J, Mat, void* ctx) {
+PetscErrorCode ReusableNewton::form_jacobian(SNES snes, Vec x, Mat J, Mat, void* ctx) {
   auto* self = static_cast<ReusableNewton*>(ctx);
   return self->guard_.run([&] {
-    const bool refresh = !self->tangent_valid_ || self->settings_.full_newton;
+    const bool refresh = !self->tangent_valid_ || self->full_newton_now_;
     self->builder_(x, refresh, J);
     if (refresh) {
       self->tangent_valid_ = true;
-      self->tangent_fresh_ = true;
+      CATENA_PETSC(SNESGetIterationNumber(snes, &self->tangent_iterate_));
       ++self->counters_.tangent_evaluations;
     }
     self->matrix_valid_ = true;
@@ -72,9 +72,16 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
   } else if (it > 0) {
     const double theta = self->previous_norm_ > 0.0 ? fnorm / self->previous_norm_ : 0.0;
     self->max_contraction_ = std::max(self->max_contraction_, theta);
-    const bool fresh = self->tangent_fresh_ || s.full_newton;
-    if (theta > s.refresh_contraction && !fresh) {
-      // The reused tangent no longer contracts well: re-evaluate it now.
+    // Fresh: the step to this iterate was a Newton step, its tangent evaluated at the
+    // step's start (iterate it − 1).
+    const bool fresh = self->tangent_iterate_ == it - 1 || self->full_newton_now_;
+    // At this rate the remaining iterations would end at |F| θ^(max − it): if that misses
+    // the tolerance, a new tangent now is cheaper than a failed step (the convergence
+    // prediction of Hairer & Wanner II, IV.8).
+    const bool too_slow =
+        theta < 1.0 && fnorm * std::pow(theta, s.max_iterations - it) > self->atol_;
+    if ((theta > s.refresh_contraction || too_slow) && !fresh) {
+      // The tangent of an earlier iterate no longer contracts well: re-evaluate it now.
       self->tangent_valid_ = false;
       if (SNESSetLagJacobian(snes, -2) != 0) return PETSC_ERR_LIB;
     } else if (theta > s.divergence_contraction && self->previous_theta_ > s.divergence_contraction) {
@@ -97,14 +104,36 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
 }
 
 NewtonResult ReusableNewton::solve(Vec x, double atol) {
+  // A solve that fails after starting from the tangent of an earlier solve is tried once
+  // more from the same guess by full Newton (RADAU5 retries with a fresh Jacobian): the
+  // failure may be the old tangent's (a step across many kinks, e.g. droppers changing
+  // state), not the step size's, and the caller would otherwise halve the step. Full
+  // Newton, because between kinks a tangent kept over iterates can make the iteration
+  // cycle between two active sets.
+  const bool stale_start = tangent_valid_ && !settings_.full_newton;
+  if (stale_start) {
+    if (!guess_) CATENA_PETSC(VecDuplicate(x, guess_.out()));
+    CATENA_PETSC(VecCopy(x, guess_.get()));
+  }
+  NewtonResult result = solve_once(x, atol, settings_.full_newton);
+  if (result.converged || !stale_start) return result;
+  CATENA_PETSC(VecCopy(guess_.get(), x));
+  const int first_iterations = result.iterations;
+  result = solve_once(x, atol, true);
+  result.iterations += first_iterations;
+  return result;
+}
+
+NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
+  full_newton_now_ = full_newton;
   atol_ = atol;
   previous_norm_ = -1.0;
   previous_theta_ = 0.0;
   max_contraction_ = 0.0;
-  tangent_fresh_ = false;
+  tangent_iterate_ = -1;
   failure_.clear();
-  const bool rebuild = !matrix_valid_ || settings_.full_newton;
-  CATENA_PETSC(SNESSetLagJacobian(snes_.get(), settings_.full_newton ? 1 : (rebuild ? -2 : -1)));
+  const bool rebuild = !matrix_valid_ || full_newton;
+  CATENA_PETSC(SNESSetLagJacobian(snes_.get(), full_newton ? 1 : (rebuild ? -2 : -1)));
   const PetscErrorCode ierr = SNESSolve(snes_.get(), nullptr, x);
   guard_.rethrow_if_any();
   CATENA_PETSC(ierr);

@@ -226,6 +226,16 @@ struct MovingContact {
   double stiffness = 0.0;      // N/m, k_c > 0
   double damping = 0.0;        // N·s/m (acts only in contact)
   Vec3 up = Vec3::UnitZ();     // unit contact direction (opposite to gravity)
+  // What the pantograph reader built, for `catena check` (the stages themselves are nodes,
+  // point masses, springs, an elastic support and loads in the model's vectors).
+  struct Stage {
+    double mass = 0.0;       // kg
+    double stiffness = 0.0;  // N/m, to the next stage (the last: to ground)
+    double damping = 0.0;    // N·s/m, likewise
+  };
+  std::vector<Stage> stages;             // head first
+  double static_force = 0.0;             // N, F0 on the last stage
+  double aerodynamic_coefficient = 0.0;  // N·s²/m²: the uplift is F0 + c·speed²
 };
 
 struct DynamicOptions {

@@ -8,11 +8,16 @@
 //   tangent   — the element Jacobians K, C (one element pass): invalidate_tangent();
 //   matrix    — the Newton matrix built from them with the step's coefficients (h):
 //               invalidate_matrix(); every rebuild is one numeric factorisation.
-// The owner's Jacobian callback is told which one to redo. In one solve, when the
-// contraction ‖F_{k+1}‖/‖F_k‖ exceeds `refresh_contraction` with a tangent from an earlier
-// solve, the tangent is refreshed at the next iteration; with a fresh tangent, a
-// contraction above `divergence_contraction` at two consecutive iterations, or the
-// iteration limit, fails the solve (the caller cuts the step). `full_newton` re-evaluates the tangent at every iterate.
+// The owner's Jacobian callback is told which one to redo. When the contraction
+// ‖F_{k+1}‖/‖F_k‖ of a step taken with a tangent evaluated at an earlier iterate (of this
+// solve or an earlier one) exceeds `refresh_contraction`, the tangent is re-evaluated at
+// the current iterate; a Newton step from a tangent evaluated at its own starting iterate
+// that contracts by more than `divergence_contraction` twice in a row, or the iteration
+// limit, fails the solve (the caller cuts the step). Refreshing again within a solve
+// matters where the force law has kinks (tension-only droppers, contact): an iterate that
+// crosses a kink after the refresh makes that tangent as wrong as a stale one, and iterating
+// on with it converged linearly, often beyond the iteration limit (docs/validation.md,
+// "Dropper slack and re-tension"). `full_newton` re-evaluates the tangent at every iterate.
 //
 // Convergence: ‖F‖₂ ≤ atol (set per solve), or a Newton update below kNewtonStepTolerance
 // relative to the iterate (round-off). Failures are reported, not thrown.
@@ -71,7 +76,9 @@ class ReusableNewton {
   // The tangent is out of date: re-evaluate it before the next solve.
   void invalidate_tangent() { tangent_valid_ = false; matrix_valid_ = false; }
 
-  // Collective. Solves F(x) = 0 from the initial guess in x.
+  // Collective. Solves F(x) = 0 from the initial guess in x. A solve that started from
+  // the tangent of an earlier solve and fails is retried once from the same guess with a
+  // fresh tangent; `iterations` counts both attempts.
   NewtonResult solve(Vec x, double atol);
 
   // The last residual evaluated and the iterate it was evaluated at (valid after solve).
@@ -80,6 +87,7 @@ class ReusableNewton {
   KSP ksp() const;
 
  private:
+  NewtonResult solve_once(Vec x, double atol, bool full_newton);
   static PetscErrorCode form_function(SNES, Vec x, Vec r, void* ctx);
   static PetscErrorCode form_jacobian(SNES, Vec x, Mat J, Mat P, void* ctx);
   static PetscErrorCode converged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm,
@@ -89,11 +97,15 @@ class ReusableNewton {
   Residual residual_fn_;
   MatrixBuilder builder_;
   Vec residual_;
+  VecHandle guess_;  // the initial guess, kept for a retry (created at the first need)
   SnesHandle snes_;
   CallbackGuard guard_;
   NewtonCounters counters_;
   bool tangent_valid_ = false, matrix_valid_ = false;
-  bool tangent_fresh_ = false;  // tangent evaluated during the current solve
+  // The iterate (SNES iteration number) of the current solve at which the tangent was last
+  // evaluated; −1: in an earlier solve.
+  PetscInt tangent_iterate_ = -1;
+  bool full_newton_now_ = false;  // this solve re-evaluates the tangent at every iterate
   double atol_ = 0.0, previous_norm_ = 0.0, previous_theta_ = 0.0, max_contraction_ = 0.0;
   std::string failure_;
 };

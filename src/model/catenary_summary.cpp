@@ -1,0 +1,210 @@
+// The catenary part of the `catena check` summary: what the builder made from the
+// design data (docs/catenary.md) and what it leaves out. Everything is read back from
+// the model itself (elements, point masses, supports), not from the scene text, so the
+// summary shows what will be simulated.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "number_format.hpp"
+#include "summary_table.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+// "0.2 kg" or "0.2 to 0.5 kg" over values (none: "none").
+std::string range_text(std::vector<double> values, const std::string& unit) {
+  if (values.empty()) return "none";
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  // Equal up to round-off (element lengths from node coordinates): one value.
+  if (*hi - *lo <= 1e-9 * std::max(std::abs(*lo), std::abs(*hi)))
+    return cat(format_number(*lo), " ", unit);
+  return cat(format_number(*lo), " to ", format_number(*hi), " ", unit);
+}
+
+double element_length(const Model& m, int e) {
+  const std::vector<int>& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
+  return (m.nodes[static_cast<std::size_t>(nodes.back())].position -
+          m.nodes[static_cast<std::size_t>(nodes.front())].position)
+      .norm();
+}
+
+double point_mass_at(const Model& m, int node) {
+  double mass = 0.0;
+  for (const PointMass& p : m.point_masses)
+    if (p.node == node) mass += p.mass;
+  return mass;
+}
+
+// The vertical elastic support at a node (stiffness, damping), zero if none.
+std::pair<double, double> vertical_support(const Model& m, int node) {
+  double k = 0.0, c = 0.0;
+  for (const ElasticSupport& s : m.elastic_supports)
+    if (s.node == node) {
+      k += s.stiffness.z();
+      c += s.damping.z();
+    }
+  return {k, c};
+}
+
+const CableProps& wire_props(const Model& m, const CatenaryWire& wire) {
+  return std::get<CableProps>(m.elements[static_cast<std::size_t>(wire.elements.front())].props);
+}
+
+std::string wire_text(const Model& m, const CatenaryWire& wire) {
+  const CableProps& p = wire_props(m, wire);
+  std::vector<double> lengths;
+  for (const int e : wire.elements) lengths.push_back(element_length(m, e));
+  return cat(plural(static_cast<long long>(wire.elements.size()), "cable"), " of ",
+             range_text(lengths, "m"), ", tension ", format_number(wire.tension), " N, EA ",
+             format_number(p.EA), " N, EI ", format_number(p.EI), " N*m^2, ",
+             format_number(p.mass_per_length), " kg/m, damping_time ",
+             format_number(p.damping_time), " s",
+             p.rayleigh.active() ? cat(", Rayleigh alpha ", format_number(p.rayleigh.mass),
+                                       " 1/s, beta ", format_number(p.rayleigh.stiffness), " s")
+                                 : std::string());
+}
+
+// "3 x 60 m" for equal spans, else "60, 60, 55 m".
+std::string spans_text(const std::vector<double>& spans) {
+  if (std::all_of(spans.begin(), spans.end(), [&](double l) { return l == spans.front(); }))
+    return cat(std::to_string(spans.size()), " x ", format_number(spans.front()), " m");
+  std::string text;
+  for (const double l : spans) text += cat(text.empty() ? "" : ", ", format_number(l));
+  return cat(text, " m");
+}
+
+struct Messenger {
+  int n_fixed = 0;  // intermediate supports held in z
+  std::vector<double> stiffness, damping;
+};
+
+// The messenger's intermediate supports: its nodes at the masts' x (both nodes of a
+// staggered pair), held in z by a support or by a vertical elastic support.
+Messenger messenger_supports(const Model& m, const CatenaryLayout& c) {
+  std::set<int> nodes;
+  for (const int e : c.messenger.elements)
+    for (const int n : m.elements[static_cast<std::size_t>(e)].nodes)
+      for (std::size_t j = 1; j + 1 < c.support_x.size(); ++j)
+        if (std::abs(m.nodes[static_cast<std::size_t>(n)].position.x() - c.support_x[j]) < 1e-9)
+          nodes.insert(n);
+  Messenger out;
+  for (const Support& s : m.supports)
+    if (nodes.contains(s.node) && (s.fixed_mask & 0b100u) != 0u) ++out.n_fixed;
+  for (const ElasticSupport& s : m.elastic_supports)
+    if (nodes.contains(s.node)) {
+      out.stiffness.push_back(s.stiffness.z());
+      out.damping.push_back(s.damping.z());
+    }
+  return out;
+}
+
+}  // namespace
+
+void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
+  const CatenaryLayout& c = *m.catenary;
+  const std::size_t n_spans = c.support_x.size() - 1;
+  std::vector<double> spans;
+  for (std::size_t j = 0; j < n_spans; ++j) spans.push_back(c.support_x[j + 1] - c.support_x[j]);
+  t.row("catenary", cat(std::to_string(c.dimension), "D simple catenary, ",
+                        plural(static_cast<long long>(n_spans), "span"), " over ",
+                        format_number(c.support_x.back()), " m, ",
+                        plural(static_cast<long long>(c.droppers.size()), "dropper"), ", ",
+                        plural(static_cast<long long>(c.registrations.size()), "steady arm"),
+                        "; stitch wires are not modelled"));
+  double stagger = 0.0;
+  for (const int n : m.registration_nodes)
+    stagger = std::max(stagger, std::abs(m.nodes[static_cast<std::size_t>(n)].position.y()));
+  t.row("spans",
+        cat(spans_text(spans), ", system height ", format_number(c.system_height), " m, ",
+            c.dimension == 2 ? std::string("2D (x-z plane: y and slope y fixed)")
+                             : cat("3D, stagger +/-", format_number(stagger), " m")),
+        4);
+  t.row("contact wire", wire_text(m, c.contact_wire), 4);
+  t.row("messenger", wire_text(m, c.messenger), 4);
+
+  // Droppers: bars, read back from their elements.
+  bool all_tension_only = true, any_tension_only = false;
+  std::vector<double> dropper_mass, dropper_damping, stiffness, EA, clamps;
+  for (const CatenaryDropper& d : c.droppers) {
+    const BarProps& bar = std::get<BarProps>(m.elements[static_cast<std::size_t>(d.element)].props);
+    all_tension_only = all_tension_only && bar.tension_only;
+    any_tension_only = any_tension_only || bar.tension_only;
+    dropper_mass.push_back(bar.mass_per_length);
+    dropper_damping.push_back(bar.damping);
+    if (d.stiffness > 0.0)
+      stiffness.push_back(d.stiffness);  // the design's EA/l0
+    else
+      EA.push_back(bar.EA);
+    clamps.push_back(point_mass_at(m, d.contact_node));
+    clamps.push_back(point_mass_at(m, d.messenger_node));
+  }
+  const std::string behaviour =
+      all_tension_only   ? "tension-only (slack in compression, sharp switch)"
+      : any_tension_only ? "partly tension-only"
+                         : "carrying compression too (tension_only: false)";
+  t.row("droppers",
+        cat(plural(static_cast<long long>(c.droppers.size()), "bar"), " (axial force only), ",
+            behaviour, ", ",
+            stiffness.empty() ? cat("EA ", range_text(EA, "N"))
+                              : cat("stiffness ", range_text(stiffness, "N/m")),
+            ", ", range_text(dropper_mass, "kg/m"), ", damping ",
+            range_text(dropper_damping, "N*s/m"), "; unstretched lengths set by shape finding"),
+        4);
+  const double max_clamp = *std::max_element(clamps.begin(), clamps.end());
+  t.row("clamp masses",
+        max_clamp > 0.0 ? cat(range_text(clamps, "kg"), " at each end of every dropper")
+                        : std::string("none (clamp_mass 0)"),
+        4);
+
+  double arm_mass = 1.0;  // no steady arms: nothing to leave out
+  if (!c.registrations.empty()) {
+    std::vector<double> k, damping, mass;
+    int held = 0;
+    for (const CatenaryRegistration& r : c.registrations) {
+      const auto [ks, cs] = vertical_support(m, r.node);
+      k.push_back(ks);
+      damping.push_back(cs);
+      mass.push_back(point_mass_at(m, r.node));
+      if (r.load >= 0) ++held;
+    }
+    t.row("steady arms",
+          cat(std::to_string(c.registrations.size()), " vertical springs ", range_text(k, "N/m"),
+              ", damping ", range_text(damping, "N*s/m"), ", mass ", range_text(mass, "kg"),
+              ", y held; ",
+              held > 0 ? cat(std::to_string(held), " preloaded to the design height")
+                       : std::string("no preload (hold_design_height false)")),
+          4);
+    const Messenger ms = messenger_supports(m, c);
+    t.row("messenger supp.",
+          ms.n_fixed > 0 ? cat(std::to_string(ms.n_fixed), " fixed in z, y held")
+                         : cat(std::to_string(ms.stiffness.size()), " vertical springs ",
+                               range_text(ms.stiffness, "N/m"), ", damping ",
+                               range_text(ms.damping, "N*s/m"), ", y held"),
+          4);
+    arm_mass = *std::max_element(mass.begin(), mass.end());
+  }
+  t.row("anchors", "both wires pinned (x, y, z) at the first and last support", 4);
+
+  notes.left_out.push_back("stitch wires (not modelled)");
+  notes.left_out.push_back(
+      "anchor spans and balance weights: the wire ends are pinned, their tensions set "
+      "through the prestrain");
+  notes.left_out.push_back(
+      "steady-arm rotation: a steady arm is a vertical spring (with a point mass) on the "
+      "contact wire");
+  notes.left_out.push_back("dropper bending: droppers are bars (axial force only)");
+  if (c.dimension == 2)
+    notes.left_out.push_back(
+        "out-of-plane (y) motion: dimension 2 fixes every wire node's y and slope y");
+  if (!any_tension_only)
+    notes.left_out.push_back("dropper slackening (droppers.tension_only false)");
+  if (*std::max_element(dropper_mass.begin(), dropper_mass.end()) <= 0.0)
+    notes.left_out.push_back("dropper mass (droppers.mass_per_length 0)");
+  if (max_clamp <= 0.0) notes.left_out.push_back("clamp masses (droppers.clamp_mass 0)");
+  if (arm_mass <= 0.0) notes.left_out.push_back("steady-arm mass (steady_arms.mass 0)");
+}
+
+}  // namespace catena::model::detail

@@ -1,0 +1,210 @@
+// The moving part of the `catena check` summary: moving loads and pantographs (path,
+// speed, forces, stages, contact), when each is on its path within the analysis, what the
+// pantograph model leaves out, and warnings when a load or pantograph leaves its path
+// before the analysis ends or does not cross the evaluation section in time.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "number_format.hpp"
+#include "summary_table.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+// Length of a path of elements on the reference geometry (chords of the elements, as the
+// moving loads and contacts measure their arc length).
+double path_length(const Model& m, const std::vector<int>& elements) {
+  double length = 0.0;
+  for (const int e : elements) {
+    const std::vector<int>& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
+    length += (m.nodes[static_cast<std::size_t>(nodes.back())].position -
+               m.nodes[static_cast<std::size_t>(nodes.front())].position)
+                  .norm();
+  }
+  return length;
+}
+
+// The sets (line names) of a path's elements, in path order, each once: "cw1, cw2".
+std::string path_sets(const Model& m, const std::vector<int>& elements) {
+  std::vector<std::string> names;
+  for (const int e : elements) {
+    const std::string& set = m.elements[static_cast<std::size_t>(e)].set;
+    if (names.empty() || names.back() != set) names.push_back(set);
+  }
+  std::string text;
+  for (const std::string& n : names) text += cat(text.empty() ? "" : ", ", n);
+  return text;
+}
+
+std::string speed_text(double speed) {
+  return cat(format_number(speed), " m/s (", format_number(speed * 3.6), " km/h)");
+}
+
+// Where something moving at `speed` from `start` (m along a path of length `length`, at
+// time t0) is on the path within [t0, t_end]: the time interval, empty if never.
+struct OnPath {
+  bool ever = false;
+  double t_enter = 0.0, t_leave = 0.0;  // s
+};
+OnPath on_path(double start, double speed, double t0, double t_end, double length) {
+  OnPath o;
+  if (speed <= 0.0) {
+    o.ever = start >= 0.0 && start <= length;
+    o.t_enter = t0;
+    o.t_leave = t_end;
+    return o;
+  }
+  o.t_enter = std::max(t0, t0 + (0.0 - start) / speed);
+  o.t_leave = std::min(t_end, t0 + (length - start) / speed);
+  o.ever = o.t_enter <= o.t_leave;
+  return o;
+}
+
+std::string on_path_text(const OnPath& o, double start, double speed, double t0) {
+  if (!o.ever) return "never on its path within the analysis";
+  const auto s = [&](double t) { return start + speed * (t - t0); };
+  return cat("on the path from t = ", format_number(o.t_enter), " s to ", format_number(o.t_leave),
+             " s (", format_number(s(o.t_enter)), " m to ", format_number(s(o.t_leave)), " m)");
+}
+
+// Warning when a load or pantograph runs off the end of its path before the analysis ends.
+void warn_path_end(const std::string& what, double start, double speed, double t0, double t_end,
+                   double length, SummaryNotes& notes) {
+  if (speed <= 0.0 || start > length) return;
+  const double t_leave = t0 + (length - start) / speed;
+  if (t_leave >= t_end) return;
+  notes.warnings.push_back(cat(what, " runs beyond the end of its path (", format_number(length),
+                               " m) at t = ", format_number(t_leave),
+                               " s, before the analysis ends at ", format_number(t_end),
+                               " s: it acts on nothing from then on"));
+}
+
+// Warning when a pantograph on the evaluation section's path does not cover
+// [evaluation_start, evaluation_end] within the analysis.
+void warn_evaluation(const Model& m, const MovingContact& c, double t_end, SummaryNotes& notes) {
+  const double a = m.evaluation_start, b = m.evaluation_end;
+  const double s0 = c.start, s1 = c.start + c.speed * t_end;
+  if (s0 <= a && s1 >= b) return;
+  std::string text =
+      cat("pantograph '", c.name, "' does not traverse the evaluation section (", format_number(a),
+          " m to ", format_number(b), " m) within the analysis: it covers ", format_number(s0),
+          " m to ", format_number(s1), " m in ", format_number(t_end), " s");
+  if (s0 > a) text += cat("; it starts ", format_number(s0 - a), " m inside or beyond it");
+  if (s1 < b && c.speed > 0.0)
+    text += cat("; reaching ", format_number(b),
+                " m needs analysis.duration >= ", format_number((b - s0) / c.speed), " s");
+  notes.warnings.push_back(text);
+}
+
+void describe_moving_loads(const Model& m, double t_end, SummaryTable& t, SummaryNotes& notes) {
+  t.row("moving loads", std::to_string(m.moving_loads.size()));
+  for (const MovingLoad& load : m.moving_loads) {
+    const double length = path_length(m, load.elements);
+    t.row(load.name,
+          cat("lines ", path_sets(m, load.elements), " (", format_number(length), " m), force ",
+              format_vector(load.force), " N, ", speed_text(load.speed), ", at ",
+              format_number(load.start), " m at t = ", format_number(load.start_time), " s"),
+          4);
+    const OnPath o = on_path(load.start, load.speed, load.start_time, t_end, length);
+    t.row("", on_path_text(o, load.start, load.speed, load.start_time), 4);
+    warn_path_end(cat("moving load '", load.name, "'"), load.start, load.speed, load.start_time,
+                  t_end, length, notes);
+  }
+}
+
+std::string stages_text(const MovingContact& c) {
+  std::string text;
+  for (std::size_t i = 0; i < c.stages.size(); ++i) {
+    const MovingContact::Stage& s = c.stages[i];
+    const bool last = i + 1 == c.stages.size();
+    text += cat(i == 0 ? "" : "; ", format_number(s.mass), " kg, ", format_number(s.stiffness),
+                last ? " N/m and " : " N/m, ", format_number(s.damping),
+                last ? " N*s/m to ground" : " N*s/m");
+  }
+  return text;
+}
+
+}  // namespace
+
+void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
+  const bool dynamic = m.analysis == AnalysisType::dynamic;
+  const double t_end = dynamic ? m.dynamic_options.duration : 0.0;
+  if (!m.moving_loads.empty()) describe_moving_loads(m, t_end, t, notes);
+  if (m.contacts.empty()) return;
+  t.row("pantographs", cat(std::to_string(m.contacts.size()),
+                           " (lumped-mass stages moving vertically, penalty contact)"));
+  for (std::size_t i = 0; i < m.contacts.size(); ++i) {
+    const MovingContact& c = m.contacts[i];
+    const ElementPath& path = m.paths[static_cast<std::size_t>(c.path)];
+    const double length = path_length(m, path.elements);
+    const double uplift = c.static_force + c.aerodynamic_coefficient * c.speed * c.speed;
+    // A path the reader made from `line:` is named after the pantograph: show its lines.
+    const std::string path_text = path.name == cat("pantograph ", c.name)
+                                      ? cat("lines ", path_sets(m, path.elements))
+                                      : cat("path ", path.name);
+    t.row(c.name,
+          cat(path_text, " (", format_number(length), " m), ", speed_text(c.speed), ", start ",
+              format_number(c.start), " m"),
+          4);
+    t.row("", cat("stages (head first): ", stages_text(c)), 4);
+    t.row("",
+          cat("static force ", format_number(c.static_force), " N, aerodynamic coefficient ",
+              format_number(c.aerodynamic_coefficient), " N*s^2/m^2: uplift ",
+              format_number(uplift), " N"),
+          4);
+    t.row("",
+          cat("contact stiffness ", format_number(c.stiffness), " N/m, damping ",
+              format_number(c.damping), " N*s/m"),
+          4);
+    if (!dynamic) {
+      t.row("", cat("standing at ", format_number(c.start), " m (static analysis)"), 4);
+      continue;
+    }
+    const OnPath o = on_path(c.start, c.speed, 0.0, t_end, length);
+    t.row("", on_path_text(o, c.start, c.speed, 0.0), 4);
+    const std::string who = cat("pantograph '", c.name, "'");
+    if (!o.ever)
+      notes.warnings.push_back(cat(who, " is never on its path (", format_number(length),
+                                   " m) within the analysis (0 to ", format_number(t_end),
+                                   " s): it touches nothing"));
+    else
+      warn_path_end(who, c.start, c.speed, 0.0, t_end, length, notes);
+    if (m.evaluation_end > m.evaluation_start && c.path == m.contacts.front().path)
+      warn_evaluation(m, c, t_end, notes);
+    if (c.aerodynamic_coefficient == 0.0)
+      notes.left_out.push_back(cat(who, ": aerodynamic uplift (aerodynamic_coefficient 0)"));
+    if (c.damping == 0.0)
+      notes.left_out.push_back(cat(who, ": contact damping (contact.damping 0)"));
+  }
+  notes.left_out.push_back(
+      "pantograph stages' weight (cancelled: the static force is the net uplift), their "
+      "horizontal motion and the head's rotation");
+}
+
+bool structure_is_damped(const Model& m) {
+  std::vector<bool> pantograph_node(m.nodes.size(), false);
+  for (const MovingContact& c : m.contacts)
+    for (std::size_t k = 0; k < std::max<std::size_t>(c.stages.size(), 1); ++k)
+      pantograph_node[static_cast<std::size_t>(c.head_node) + k] = true;
+  for (const ElementDesc& e : m.elements) {
+    if (pantograph_node[static_cast<std::size_t>(e.nodes.front())]) continue;
+    if (const auto* cable = std::get_if<CableProps>(&e.props);
+        cable && (cable->damping_time > 0.0 || cable->rayleigh.active()))
+      return true;
+    if (const auto* beam = std::get_if<BeamProps>(&e.props);
+        beam && (beam->damping_time > 0.0 || beam->rayleigh.active()))
+      return true;
+    if (const auto* bar = std::get_if<BarProps>(&e.props); bar && bar->damping > 0.0) return true;
+    if (const auto* spring = std::get_if<SpringProps>(&e.props);
+        spring && spring->damping.maxCoeff() > 0.0)
+      return true;
+  }
+  for (const ElasticSupport& s : m.elastic_supports)
+    if (!pantograph_node[static_cast<std::size_t>(s.node)] && s.damping.maxCoeff() > 0.0)
+      return true;
+  return false;
+}
+
+}  // namespace catena::model::detail
