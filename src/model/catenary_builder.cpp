@@ -134,6 +134,7 @@ class CatenaryAssembler {
     layout.dimension = d_.dimension;
     layout.support_x = support_x_;
     layout.system_height = d_.system_height;
+    layout.auto_spans = d_.auto_spans;
     const bool same_positions =
         std::all_of(d_.droppers.positions.begin(), d_.droppers.positions.end(),
                     [&](const std::vector<double>& p) { return p == d_.droppers.positions[0]; });

@@ -69,6 +69,7 @@ struct CatenaryDesign {
   SteadyArmDesign steady_arms;
   MessengerSupportDesign messenger_supports;
   std::optional<std::pair<int, int>> evaluation_spans;  // 1-based, first ≤ last
+  std::optional<AutoSpanCount> auto_spans;              // `spans: auto` (else the scene's count)
 };
 
 // Stiffness of the spring that joins the two nodes of a wire at a staggered support, as a

@@ -1,23 +1,27 @@
 #include "catenary_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "catenary_builder.hpp"
 #include "rayleigh_reader.hpp"
+#include "run_reach.hpp"
 
 namespace catena::model::detail {
 namespace {
 
 constexpr std::int64_t max_spans = 10'000;
 constexpr double max_catenary_elements = 10'000'000.0;  // per wire, as for lines
+constexpr std::int64_t kDefaultRunOutSpans = 2;
 
 const std::vector<std::string>& catenary_keys() {
   static const std::vector<std::string> keys{
       "dimension", "spans",       "span_length",        "span_lengths",    "system_height",
       "presag",    "stagger",     "element_length",     "contact_wire",    "messenger",
-      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans"};
+      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans", "run_out_spans"};
   return keys;
 }
 
@@ -35,8 +39,47 @@ WireDesign read_wire(const Field& wire, const char* what) {
   return w;
 }
 
-std::vector<double> read_span_lengths(const Field& c) {
+// `spans: auto`: the spans up to the one holding the farthest point a pantograph reaches,
+// plus `run_out_spans` more (default 2), so that the far anchor and the reflections from it
+// stay away from the last contact point.
+std::vector<double> auto_span_lengths(const Field& c, const Field& scene,
+                                      std::optional<AutoSpanCount>& why) {
   const Field spans = c.child("spans");
+  const Field span_length = c.child("span_length");
+  if (c.child("span_lengths").present())
+    c.child("span_lengths").fail(
+        "give either 'span_lengths' (a list) or 'spans: auto' with 'span_length', not both");
+  if (!span_length.present())
+    spans.fail("'auto' needs 'span_length' (m): the run's reach is cut into spans of that length");
+  const double length = span_length.real(RealRange::positive("m"));
+  const RunReach reach = read_run_reach(scene, spans);
+  AutoSpanCount count;
+  count.reach = reach.farthest;
+  count.pantograph = reach.pantograph;
+  count.duration = reach.duration;
+  count.run_out_spans = static_cast<int>(
+      c.child("run_out_spans").integer_or(kDefaultRunOutSpans, IntRange::between(0, max_spans)));
+  // The span that holds the reach (a reach exactly on a support ends the span before it).
+  const double reached = std::ceil(reach.farthest / length - 1e-9);
+  const double n = std::max(1.0, reached) + count.run_out_spans;
+  if (n > static_cast<double>(max_spans))
+    spans.fail("'auto' gives " + format_number(n) + " spans (pantograph '" + reach.pantograph +
+               "' reaches " + format_number(reach.farthest) + " m in " +
+               format_number(reach.duration) + " s); at most " + std::to_string(max_spans) +
+               " are accepted");
+  why = count;
+  return std::vector<double>(static_cast<std::size_t>(n), length);
+}
+
+std::vector<double> read_span_lengths(const Field& c, const Field& scene,
+                                      std::optional<AutoSpanCount>& why) {
+  const Field spans = c.child("spans");
+  const Field run_out = c.child("run_out_spans");
+  const bool automatic = spans.present() && spans.is_scalar() && spans.text() == "auto";
+  if (run_out.present() && !automatic)
+    run_out.fail("'run_out_spans' goes with 'spans: auto' (the spans added after the run's "
+                 "reach); with a span count or 'span_lengths' remove it");
+  if (automatic) return auto_span_lengths(c, scene, why);
   const Field span_length = c.child("span_length");
   const Field span_lengths = c.child("span_lengths");
   if (span_lengths.present()) {
@@ -56,6 +99,10 @@ std::vector<double> read_span_lengths(const Field& c) {
     c.fail(
         "missing the spans: give 'spans' (a count) and 'span_length' (m), or "
         "'span_lengths' (a list, m)");
+  if (spans.is_scalar() && !parse_integer(spans.text()))
+    spans.fail("expected a span count (an integer in [1, " + std::to_string(max_spans) +
+               "]) or 'auto' (as many spans as the run reaches, plus run-out spans), got " +
+               spans.value_text());
   const std::int64_t n = spans.integer(IntRange::between(1, max_spans));
   const double length = span_length.real(RealRange::positive("m"));
   return std::vector<double>(static_cast<std::size_t>(n), length);
@@ -176,7 +223,7 @@ std::pair<int, int> read_evaluation_spans(const Field& field, int n_spans) {
 
 }  // namespace
 
-void read_catenary(const Field& catenary, SceneBuild& build) {
+void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build) {
   if (!catenary.present()) return;
   catenary.expect_map("a catenary (a map of design data, see docs/scene.md)");
   if (const Field stitch = catenary.child("stitch"); stitch.present())
@@ -195,7 +242,7 @@ void read_catenary(const Field& catenary, SceneBuild& build) {
   CatenaryDesign d;
   d.dimension =
       static_cast<int>(catenary.child("dimension").integer_or(3, IntRange::between(2, 3)));
-  d.span_lengths = read_span_lengths(catenary);
+  d.span_lengths = read_span_lengths(catenary, scene, d.auto_spans);
   const Field height = catenary.child("system_height");
   d.system_height = height.real(RealRange::positive("m"));
   d.presag = catenary.child("presag").real_or(

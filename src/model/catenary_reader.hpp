@@ -10,6 +10,7 @@ namespace catena::model::detail {
 // Not collective. Reads `catenary` (absent: nothing happens) and adds the catenary to
 // build.model. Needs Model::gravity (the catenary's z is up, so gravity must point along
 // −z) and comes after the explicit nodes, lines and elements, whose ids it numbers after.
-void read_catenary(const Field& catenary, SceneBuild& build);
+// `scene` is the root: `spans: auto` reads the run's duration and pantographs from it.
+void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build);
 
 }  // namespace catena::model::detail

@@ -117,6 +117,14 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   double stagger = 0.0;
   for (const int n : m.registration_nodes)
     stagger = std::max(stagger, std::abs(m.nodes[static_cast<std::size_t>(n)].position.y()));
+  if (c.auto_spans) {
+    const AutoSpanCount& a = *c.auto_spans;
+    t.row("span count",
+          cat("auto: pantograph '", a.pantograph, "' reaches ", format_number(a.reach),
+              " m in ", format_number(a.duration), " s, + ",
+              plural(a.run_out_spans, "run-out span")),
+          4);
+  }
   t.row("spans",
         cat(spans_text(spans), ", system height ", format_number(c.system_height), " m, ",
             c.dimension == 2 ? std::string("2D (x-z plane: y and slope y fixed)")

@@ -4,6 +4,7 @@
 // must be (the design heights), and which values shape finding
 // (solvers/shape_finding.hpp) may change. Plain data; indices are 0-based positions in
 // the Model's vectors. Units SI; z is up (the builder requires gravity along −z).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,14 @@ struct CatenaryWire {
   double tension = 0.0;       // N
 };
 
+// `spans: auto`: why the line has the spans it has (the scene gave no count).
+struct AutoSpanCount {
+  double reach = 0.0;       // m, the farthest point a pantograph reaches in the run
+  std::string pantograph;   // the one that reaches it
+  double duration = 0.0;    // s, the run's analysis.duration
+  int run_out_spans = 0;    // whole spans added beyond the span that holds `reach`
+};
+
 struct CatenaryLayout {
   int dimension = 3;                    // 2: x–z plane (out-of-plane DOFs fixed), 3
   std::vector<double> support_x;        // m, the n_spans + 1 support (mast) positions
@@ -48,6 +57,7 @@ struct CatenaryLayout {
   CatenaryWire messenger;
   std::vector<CatenaryDropper> droppers;            // in x order
   std::vector<CatenaryRegistration> registrations;  // intermediate supports, in x order
+  std::optional<AutoSpanCount> auto_spans;          // set when the run chose the span count
 };
 
 }  // namespace catena::model
