@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "catena/core/error.hpp"
 #include "catena/model/scene_reader.hpp"
+#include "input_errors.hpp"
 
 namespace {
 
@@ -23,16 +23,6 @@ const std::string scene_file =
 Model read_with(std::vector<std::string> overrides) {
   overrides.insert(overrides.begin(), "catenary.spans=auto");
   return read_scene(scene_file, overrides);
-}
-
-std::string error_with(std::vector<std::string> overrides) {
-  try {
-    read_scene(scene_file, overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
 }
 
 TEST(CatenaryAutoSpans, ReachPlusTwoRunOutSpansByDefault) {
@@ -86,11 +76,7 @@ TEST(CatenaryAutoSpans, AnExplicitCountIsUnchanged) {
 }
 
 TEST(CatenaryAutoSpans, BadInputNamesTheKeyAndWhatIsAccepted) {
-  struct Case {
-    std::vector<std::string> overrides;
-    std::vector<std::string> fragments;
-  };
-  const std::vector<Case> cases{
+  const std::vector<test::InputErrorCase> cases{
       {{"catenary.spans=auto", "analysis={type: static}"},
        {"catenary.spans", "sizes the line to a dynamic run", "'static'"}},
       {{"catenary.spans=auto", "pantographs=[]"},
@@ -106,13 +92,8 @@ TEST(CatenaryAutoSpans, BadInputNamesTheKeyAndWhatIsAccepted) {
       {{"catenary.spans=auto", "pantographs[0].speed_kmh=3e7", "analysis.duration=1000"},
        {"catenary.spans", "at most 10000"}},
   };
-  for (const Case& c : cases) {
-    const std::string message = error_with(c.overrides);
-    EXPECT_NE(message.find("catenary_pantograph.yaml"), std::string::npos) << message;
-    for (const std::string& fragment : c.fragments)
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "--set " << c.overrides.back() << ": '" << fragment << "' not in: " << message;
-  }
+  test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); },
+                            "catenary_pantograph.yaml", cases);
 }
 
 }  // namespace

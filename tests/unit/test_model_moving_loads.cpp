@@ -10,6 +10,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/model/scene_reader.hpp"
+#include "input_errors.hpp"
 
 namespace {
 
@@ -34,13 +35,7 @@ std::vector<std::int64_t> ids_from(std::int64_t first, std::int64_t last) {
 
 // The message of the InputError that reading the good scene with `overrides` throws.
 std::string error_with(const std::vector<std::string>& overrides) {
-  try {
-    read_scene(moving_load_scene, overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
+  return test::input_error_message([&] { read_scene(moving_load_scene, overrides); });
 }
 
 TEST(MovingLoads, PathSpeedStartAndDefaultsFromTheScene) {
