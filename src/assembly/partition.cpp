@@ -32,6 +32,22 @@ void dual_graph(const model::Model& model, std::vector<idx_t>& xadj, std::vector
   }
 }
 
+// True if every vertex of the CSR graph is reachable from vertex 0 (breadth first).
+bool is_connected(const std::vector<idx_t>& xadj, const std::vector<idx_t>& adjncy) {
+  const size_t n = xadj.size() - 1;
+  if (n == 0) return true;
+  std::vector<char> seen(n, 0);
+  std::vector<idx_t> queue{0};
+  seen[0] = 1;
+  for (size_t head = 0; head < queue.size(); ++head)
+    for (idx_t k = xadj[queue[head]]; k < xadj[queue[head] + 1]; ++k)
+      if (!seen[adjncy[k]]) {
+        seen[adjncy[k]] = 1;
+        queue.push_back(adjncy[k]);
+      }
+  return queue.size() == n;
+}
+
 }  // namespace
 
 std::vector<int> partition_elements(const model::Model& model, int n_parts) {
@@ -49,17 +65,14 @@ std::vector<int> partition_elements(const model::Model& model, int n_parts) {
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 1;  // reproducible partitions
-  options[METIS_OPTION_CONTIG] = 1;
+  // Contiguous parts where the element graph allows them: METIS refuses CONTIG on a
+  // disconnected graph (a pantograph touches the wire only through its moving contact,
+  // which is no element) and prints an error to stdout, so ask only when connected.
+  options[METIS_OPTION_CONTIG] = is_connected(xadj, adjncy) ? 1 : 0;
   std::vector<idx_t> part(n_el, 0);
-  int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr,
-                                   nullptr, &nparts, nullptr, nullptr, options, &objval,
-                                   part.data());
-  if (status != METIS_OK) {
-    // CONTIG fails on disconnected element graphs; retry without it.
-    options[METIS_OPTION_CONTIG] = 0;
-    status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr,
-                                 nullptr, &nparts, nullptr, nullptr, options, &objval, part.data());
-  }
+  const int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr,
+                                         nullptr, nullptr, &nparts, nullptr, nullptr, options,
+                                         &objval, part.data());
   if (status != METIS_OK)
     throw Error("METIS_PartGraphKway failed with status " + std::to_string(status) + " for " +
                 std::to_string(n_el) + " elements into " + std::to_string(n_parts) + " parts");
