@@ -106,6 +106,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
+  // M + (1+α)(γh C + βh² K) keeps a nonzero diagonal (mass, or stiffness at a massless
+  // node) unless multipliers add zero diagonal rows: then it needs a pivoting factorisation.
+  settings.pivoting = s.algebraic->active() ? Pivoting::needed : Pivoting::not_needed;
   // Damping makes the matrix non-symmetric in general.
   s.newton = std::make_unique<ReusableNewton>(
       system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,

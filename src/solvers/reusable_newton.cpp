@@ -17,7 +17,7 @@ ReusableNewton::ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& p
   CATENA_PETSC(SNESCreate(comm, snes_.out()));
   CATENA_PETSC(SNESSetFunction(snes_.get(), r, form_function, this));
   CATENA_PETSC(SNESSetJacobian(snes_.get(), J, J, form_jacobian, this));
-  configure_direct_newton(snes_.get(), prefix, symmetry);
+  configure_direct_newton(snes_.get(), prefix, symmetry, settings.pivoting);
   CATENA_PETSC(SNESSetConvergenceTest(snes_.get(), converged, this, nullptr));
   // Our convergence test owns the iteration limit.
   CATENA_PETSC(SNESSetTolerances(snes_.get(), PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT,

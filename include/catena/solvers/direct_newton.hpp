@@ -2,8 +2,9 @@
 // The Newton configuration shared by Catena's nonlinear solvers (statics, HHT, IRK stages):
 // SNES newtonls with full steps (a residual-norm line search rejects good steps in stiff
 // axial/bending problems; callers cut the load or time step instead), no divergence
-// tolerance, KSPPREONLY with a MUMPS factorisation (LDLᵀ when the Jacobian is symmetric,
-// else LU) with null-pivot detection, options prefix `prefix`, SNESSetFromOptions last.
+// tolerance, KSPPREONLY with a direct factorisation (LDLᵀ when the Jacobian is symmetric,
+// else LU; MUMPS with null-pivot detection unless `Pivoting` below allows PETSc's own),
+// options prefix `prefix`, SNESSetFromOptions last.
 #include <petscsnes.h>
 
 #include <string>
@@ -14,13 +15,27 @@ namespace catena::solvers {
 
 enum class JacobianSymmetry { symmetric, general };
 
-// Logically collective on the SNES.
-void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry);
+// Whether the factorisation must pivot. MUMPS always does (threshold partial pivoting,
+// null-pivot detection, any rank count). On one rank, PETSc's own LU with a
+// nested-dissection ordering factors and solves the banded, ladder-like matrices of lines
+// and catenaries 4–5 times faster than MUMPS (docs/performance.md, "Direct solver"), but
+// it does not pivot: a zero pivot fails the factorisation (the Newton solve then fails and
+// the caller cuts the step). `not_needed` is for matrices whose diagonal cannot vanish:
+// the HHT Newton matrix M + c_C C + c_K K of a system without Lagrange multipliers (no
+// zero diagonal block). The options database still decides last
+// (-<prefix>pc_factor_mat_solver_type mumps).
+enum class Pivoting { needed, not_needed };
 
-// Collective. A KSPPREONLY + MUMPS factorisation (LDLᵀ or LU) with null-pivot detection
-// and options prefix `prefix`, KSPSetFromOptions applied. Set further MUMPS defaults
-// (e.g. enable_mumps_exact_inertia) before calling.
-KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry);
+// Logically collective on the SNES.
+void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry,
+                             Pivoting pivoting = Pivoting::needed);
+
+// Collective. A KSPPREONLY direct factorisation (LDLᵀ or LU; MUMPS with null-pivot
+// detection, or PETSc's own on one rank when `pivoting` allows) with options prefix
+// `prefix`, KSPSetFromOptions applied. Set further MUMPS defaults (e.g.
+// enable_mumps_exact_inertia) before calling.
+KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
+                            Pivoting pivoting = Pivoting::needed);
 
 // Relative Newton update at which an iterate is converged to round-off (SNES stol).
 inline constexpr double kNewtonStepTolerance = 1e-12;

@@ -53,6 +53,7 @@ struct NewtonSettings {
   bool full_newton = false;
   double refresh_contraction = 0.3;     // refresh a stale tangent above this rate
   double divergence_contraction = 0.9;  // fail above this rate with a fresh tangent
+  Pivoting pivoting = Pivoting::needed;  // may the factorisation skip pivoting (direct_newton.hpp)
 };
 
 class ReusableNewton {
