@@ -9,7 +9,7 @@
 //  - Statistics against hand-computed values: F0 + A sin(2π f t) over a section of 10 whole
 //    periods plus one zero sample has mean F0 and σ = A G(f) √(2500/5001); the sampled
 //    peaks hit sin = ±1 exactly. Contact loss counts raw samples ≤ 0 in the section only;
-//    uplift uses registration points inside the section, at section samples only.
+//    uplift uses registration points inside the section, while the pantograph passes them.
 //    Tolerance 1e-9 relative (sums of 5001 O(100) terms).
 //  - Input errors: coarse sampling (naming the interval and the largest admissible one),
 //    an empty or reversed section, a cutoff above Nyquist.
@@ -221,20 +221,30 @@ TEST(ContactStatistics, ContactLossCountsRawZerosInsideTheSectionOnly) {
   EXPECT_NEAR(s.contact_loss_percent, 3.8, 1e-12);
 }
 
-TEST(ContactStatistics, UpliftAtSupportsInsideTheSectionWhileThePantographIsThere) {
-  const PantographRecord p = sine_record(115.0, 0.0, 1.0);  // section samples 2500 … 7500
+TEST(ContactStatistics, UpliftAtSupportsInsideTheSectionWhileThePantographPassesThem) {
+  // Contact position 0.5 k m at sample k; section samples 2500 … 7500.
+  const PantographRecord p = sine_record(115.0, 0.0, 1.0);
+  // Supports at 1250 (the section's start), 2000, 3750 (its end) and 4000 m: each one's
+  // window is the pantograph between its neighbours.
   RegistrationPoint inside{2000.0, std::vector<double>(10000, 5.3)};
-  inside.z[4000] = 5.35;  // +0.05 m while the pantograph is in the section
-  inside.z[9000] = 5.5;   // +0.2 m after it left: not counted
-  RegistrationPoint edge{1250.0, std::vector<double>(10000, 5.3)};
-  edge.z[2500] = 5.36;  // the section is closed: its end points belong to it
+  inside.z[4000] = 5.35;  // +0.05 m with the head at 2000 m
+  inside.z[9000] = 5.5;   // +0.2 m with the head at 4500 m, past the next support: not counted
+  RegistrationPoint start{1250.0, std::vector<double>(10000, 5.3)};
+  start.z[2500] = 5.36;  // the section is closed: its end points belong to it
+  RegistrationPoint end{3750.0, std::vector<double>(10000, 5.3)};
+  end.z[7600] = 5.37;  // +0.07 m with the head 50 m past it (outside the section): counted
   RegistrationPoint outside{4000.0, std::vector<double>(10000, 5.3)};
   outside.z[5000] = 6.3;  // reference x outside the section: ignored
-  const std::vector<RegistrationPoint> supports{inside, edge, outside};
+  const std::vector<RegistrationPoint> supports{inside, start, end, outside};
   const auto s = contact_statistics(p, supports, section_options(1250.0, 3750.0));
-  EXPECT_EQ(s.n_supports, 2u);
+  EXPECT_EQ(s.n_supports, 3u);
   ASSERT_TRUE(s.max_uplift_at_support.has_value());
-  EXPECT_NEAR(*s.max_uplift_at_support, 0.06, 1e-12);
+  EXPECT_NEAR(*s.max_uplift_at_support, 0.07, 1e-12);
+  // Without the end support the largest is the start's, inside its window.
+  const std::vector<RegistrationPoint> no_end{inside, start, outside};
+  const auto s2 = contact_statistics(p, no_end, section_options(1250.0, 3750.0));
+  ASSERT_TRUE(s2.max_uplift_at_support.has_value());
+  EXPECT_NEAR(*s2.max_uplift_at_support, 0.06, 1e-12);
 
   const std::vector<RegistrationPoint> far{outside};
   const auto none = contact_statistics(p, far, section_options(1250.0, 3750.0));

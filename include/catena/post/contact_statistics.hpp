@@ -13,7 +13,12 @@
 //      F_m + 3σ and minimum F_m − 3σ, actual maximum and minimum — all of the FILTERED
 //      force; the contact-loss percentage counts section samples whose RAW force is ≤ 0.
 //   4. Uplift at support: z(t) − z(first sample) of every registration (steady-arm) point
-//      whose reference x lies in the section, over the section samples; the largest.
+//      whose reference x lies in the section, while the pantograph passes it — over the
+//      samples whose contact position lies between the neighbouring registration points
+//      (the line's ends where there is none) — the largest. Not the section samples only:
+//      a support keeps rising just after the head has passed it, and the peak at the
+//      section's last support would be cut. (With several pantographs, each pantograph's
+//      uplift is attributed to it only if they run more than a span apart.)
 //
 // Pure functions of their arguments: no files, no MPI. SI units throughout.
 #include <cstddef>
@@ -64,7 +69,8 @@ struct ContactStatistics {
   double min = 0.0;                   // N, filtered force
   double contact_loss_percent = 0.0;  // %, section samples with raw force ≤ 0
   std::size_t n_supports = 0;         // registration points whose reference x is in the section
-  // m, largest z − z[0] of those points over the section samples; none if n_supports == 0.
+  // m, largest z − z[0] of those points while the pantograph passes them (step 4 above);
+  // none if n_supports == 0.
   std::optional<double> max_uplift_at_support;
 };
 
