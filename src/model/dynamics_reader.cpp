@@ -112,6 +112,18 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
       linear_algebra.fail("unknown stage linear algebra '" + o.linear_algebra + "';" +
                           did_you_mean(o.linear_algebra, choices) +
                           " accepted: auto, decoupled, coupled");
+    // Where the decoupled solve is not exact (solvers/tableau_decomposition.hpp): the
+    // solver checks again from the tableau itself; here the message can name the line.
+    std::string why;
+    if (o.newton == "full")
+      why = "full Newton linearises every stage at its own state (no Kronecker form)";
+    else if (o.type == "lobatto_iiia")
+      why = "lobatto_iiia's A is singular (its explicit first stage)";
+    else if (o.type == "sdirk")
+      why = "sdirk's A has a triple eigenvalue (not diagonalisable)";
+    if (o.linear_algebra == "decoupled" && !why.empty())
+      linear_algebra.fail("linear_algebra: decoupled is not exact here: " + why +
+                          "; use auto or coupled");
   } else {
     fail_if_present(linear_algebra, "'linear_algebra' applies to the implicit Runge-Kutta types "
                                     "(gauss, radau, lobatto_iiia, lobatto_iiic, sdirk), not to " +

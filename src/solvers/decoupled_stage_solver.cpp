@@ -1,5 +1,6 @@
 #include "catena/solvers/decoupled_stage_solver.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -170,7 +171,8 @@ struct DecoupledStageSolver::Impl {
     auto* self = static_cast<Impl*>(ctx);
     return self->guard->run([&] {
       CATENA_PETSC(PCSetFailedReason(pc, PC_NOERROR));
-      self->factor();
+      // Already factored for this assembly if real_block() asked first.
+      if (!self->factored) self->factor();
     });
   }
 
@@ -289,6 +291,18 @@ void DecoupledStageSolver::assemble(const StageMatrixParts& parts) {
   // refactors every block (PCSetUp compares the operator's state with its own).
   CATENA_PETSC(MatAssemblyBegin(m.shell.get(), MAT_FINAL_ASSEMBLY));
   CATENA_PETSC(MatAssemblyEnd(m.shell.get(), MAT_FINAL_ASSEMBLY));
+}
+
+KSP DecoupledStageSolver::real_block(double lambda) {
+  Impl& m = *impl_;
+  for (Block& block : m.blocks) {
+    if (block.where.size != 1) continue;
+    const double mu = m.form.D(block.where.offset, block.where.offset);
+    if (std::abs(mu - lambda) > 1e-14 * std::abs(lambda)) continue;
+    if (!m.factored) m.factor();
+    return m.failure.empty() ? block.ksp.get() : nullptr;
+  }
+  return nullptr;
 }
 
 const std::string& DecoupledStageSolver::failure() const { return impl_->failure; }

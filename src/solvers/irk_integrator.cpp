@@ -69,6 +69,10 @@ struct IrkIntegrator::Impl {
   std::unique_ptr<DecoupledStageSolver> decoupled;
   VecHandle row_scale;
   double row_scale_factor = 0.0;
+  // The h and tangent the decoupled blocks were last assembled with (their real block is
+  // the Radau IIA estimate's filter matrix when these match the estimate's).
+  double blocks_h = -1.0;
+  long blocks_tangent = -1;
   VecHandle x, r;
   std::unique_ptr<ReusableNewton> newton;
   long tangent_serial = 0;  // bumped whenever K, C change
@@ -192,6 +196,8 @@ struct IrkIntegrator::Impl {
     } else if (decoupled) {
       if (refresh) evaluate_start_tangent();
       decoupled->assemble({K.get(), C.get(), block_diagonal_part(), constraint_row_vector(), h});
+      blocks_h = h;
+      blocks_tangent = tangent_serial;
       return;
     } else {
       if (refresh) evaluate_start_tangent();
@@ -247,7 +253,12 @@ struct IrkIntegrator::Impl {
       // Full Newton keeps no tangent at the step start: take one for the filter.
       evaluate_start_tangent();
     }
-    if (estimate_h != h || estimate_tangent != tangent_serial) {
+    // Decoupled: the filter M + hγ0 C + (hγ0)² K is the real block of the stage solve (γ0
+    // is A's real eigenvalue), factored already when it was built for this h and tangent.
+    KSP filter = nullptr;
+    if (decoupled && blocks_h == h && blocks_tangent == tangent_serial)
+      filter = decoupled->real_block(T.gamma0);
+    if (!filter && (estimate_h != h || estimate_tangent != tangent_serial)) {
       CATENA_PETSC(MatCopy(mass.get(), E.get(), SAME_NONZERO_PATTERN));
       CATENA_PETSC(MatAXPY(E.get(), g, C.get(), SAME_NONZERO_PATTERN));
       CATENA_PETSC(MatAXPY(E.get(), g * g, K.get(), SAME_NONZERO_PATTERN));
@@ -256,14 +267,18 @@ struct IrkIntegrator::Impl {
       estimate_tangent = tangent_serial;
       ++estimate_factorizations;
     }
+    if (!filter) filter = estimate_ksp.get();
     // rhs = M r_v − g K r_u
     CATENA_PETSC(MatMult(mass.get(), rv.get(), rhs.get()));
     CATENA_PETSC(MatMult(K.get(), ru.get(), scratch.get()));
     CATENA_PETSC(VecAXPY(rhs.get(), -g, scratch.get()));
-    CATENA_PETSC(KSPSolve(estimate_ksp.get(), rhs.get(), xv.get()));
+    CATENA_PETSC(KSPSolve(filter, rhs.get(), xv.get()));
     ++estimate_solves;
-    const MumpsStatus mumps = mumps_status(estimate_ksp.get());
-    if (mumps.infog1 < 0 || mumps.null_pivots > 0) return 1e10;  // reject: h will shrink
+    const MumpsStatus mumps = mumps_status(filter);
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    CATENA_PETSC(KSPGetConvergedReason(filter, &reason));
+    if (mumps.infog1 < 0 || mumps.null_pivots > 0 || reason < 0)
+      return 1e10;  // reject: h will shrink
     CATENA_PETSC(VecWAXPY(xu.get(), g, xv.get(), ru.get()));
     return weighted_error_norm(tol, xu.get(), q0.get(), q1.get());
   }

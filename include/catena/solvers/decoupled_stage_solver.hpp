@@ -72,6 +72,12 @@ class DecoupledStageSolver {
   // that the PC factors them at its next setup (not here).
   void assemble(const StageMatrixParts& parts);
 
+  // Collective. The KSP of the real block with eigenvalue λ (to 1e-14 relative), factored
+  // for the last assemble(): the filter matrix M′ + hλ C + h²λ² K for other solves with it
+  // (Radau IIA's error estimate, λ = γ0). Null if there is no such block or its
+  // factorisation failed.
+  KSP real_block(double lambda);
+
   // Not collective. The last failure (empty after a successful setup and apply).
   const std::string& failure() const;
   // Collective. y = J⁻¹ r with the current factorisations (what the PC applies); returns

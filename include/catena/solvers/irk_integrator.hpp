@@ -26,7 +26,9 @@
 // Embedded error estimate (Radau IIA, odd s; docs/tableaus.md): with d = b̂ − b,
 //   r_u = h² Σ_j (Aᵀd)_j K_j,   r_v = h (γ0 a0 + Σ_j d_j K_j),
 //   (M + hγ0 C + (hγ0)² K) x_v = M r_v − hγ0 K r_u,   x_u = r_u + hγ0 x_v,
-// ‖x_u‖ = O(h^{s+1}) in the weighted norm — one more n-sized factorisation per matrix.
+// ‖x_u‖ = O(h^{s+1}) in the weighted norm — one more n-sized factorisation per matrix
+// with the coupled stage solve; none with the decoupled one, whose real block (γ0 is A's
+// real eigenvalue) is that filter matrix.
 //
 // Dense output: the collocation polynomial (Gauss, Radau IIA s ≥ 2, Lobatto IIIA), which
 // is continuous at the step ends; cubic Hermite for the others (Radau IIA s = 1, Lobatto
