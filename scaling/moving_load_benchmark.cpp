@@ -16,10 +16,15 @@
 //   mpirun -n 1 build/scaling/moving_load_benchmark
 //   mpirun -n 2 build/scaling/moving_load_benchmark -integrator radau -steps 40 -dt 1e-3
 //   mpirun -n 2 build/scaling/moving_load_benchmark -integrator hht -alpha 0 -newton full
+//   mpirun -n 1 build/scaling/moving_load_benchmark -integrator radau -linear_algebra coupled
+// Factorisation and solve times per step are the MatLUFactorNum and MatSolve events; "ms
+// each" divides them by the counters (one stage-system factorisation or solve, which the
+// decoupled IRK does as one MUMPS factorisation or solve per block).
 // Options: -length m (10000) -element m (0.25) -force N (120) -speed m/s (80) -start m
 // (middle span's mid-point) -steps n (100) -dt s (1e-3) -integrator hht|radau (hht)
 // -alpha (-0.1, hht) -newton simplified|full (simplified) -newton_rtol (1e-10)
-// -newton_atol N (1e-8; the round-off floor is added, see Options) -repeat n (20, unit costs);
+// -newton_atol N (1e-8; the round-off floor is added, see Options) -repeat n (20, unit costs)
+// -linear_algebra auto|decoupled|coupled (auto; radau's stage solve, docs/integrators.md);
 // PETSc options with the integrators' prefixes (-hht_, -irk_) apply as in `catena run`.
 #include <petscksp.h>
 
@@ -36,6 +41,7 @@
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/direct_newton.hpp"
 #include "catena/solvers/integrator_factory.hpp"
+#include "catena/solvers/irk_integrator.hpp"
 #include "catena/solvers/static_solver.hpp"
 #include "catena/solvers/transient_solver.hpp"
 
@@ -51,7 +57,7 @@ struct Options {
   // (round_off_floor.hpp): on this line, positions of up to 1e4 m differenced over 0.25 m
   // elements leave |f| ≈ 0.027 N, far above 1e-8 N.
   double newton_rtol = 1e-10, newton_atol = 1e-8;
-  std::string integrator = "hht", newton = "simplified";
+  std::string integrator = "hht", newton = "simplified", linear_algebra = "auto";
 };
 
 std::string option_text(const char* name, const std::string& fallback) {
@@ -80,6 +86,7 @@ Options read_options() {
   o.repeat = static_cast<int>(std::max<PetscInt>(repeat, 1));
   o.integrator = option_text("-integrator", o.integrator);
   o.newton = option_text("-newton", o.newton);
+  o.linear_algebra = option_text("-linear_algebra", o.linear_algebra);
   const int n_spans = static_cast<int>(o.length / o.span + 0.5);
   if (o.start < 0.0) o.start = (n_spans / 2 + 0.5) * o.span;
   return o;
@@ -113,7 +120,8 @@ std::string line_scene(const Options& o) {
     << "\n    start: " << o.start << "\n"
     << "integrator: {type: " << o.integrator << (o.integrator == "hht" ? ", alpha: " : ", stages: ")
     << (o.integrator == "hht" ? o.alpha : 3.0) << ", dt: " << o.dt << ", newton: " << o.newton
-    << ", newton_rtol: " << o.newton_rtol << ", newton_atol: " << o.newton_atol << "}\n";
+    << ", newton_rtol: " << o.newton_rtol << ", newton_atol: " << o.newton_atol
+    << (o.integrator == "hht" ? "" : ", linear_algebra: " + o.linear_algebra) << "}\n";
   return s.str();
 }
 
@@ -176,7 +184,7 @@ int main(int argc, char** argv) {
                              "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
                              "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
                              "[-force N] [-speed m/s] [-start m] [-newton_rtol r] "
-                             "[-newton_atol N] [-repeat n]\n");
+                             "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled]\n");
   CATENA_PETSC(PetscLogDefaultBegin());
   MPI_Comm comm = PETSC_COMM_WORLD;
   const int rank = catena::mpi_rank(comm), size = catena::mpi_size(comm);
@@ -273,9 +281,18 @@ int main(int argc, char** argv) {
   const double t_step = rest_seconds / n_rest;
   const double accounted = force.seconds + jacobian.seconds + factor.seconds + solve.seconds;
   const auto each = [](const EventTotals& e) { return e.count > 0 ? e.seconds / e.count : 0.0; };
+  // Per stage-system factorisation or solve (the decoupled IRK's are one per block).
+  const auto per_count = [](const EventTotals& e, long count) {
+    return count > 0 ? e.seconds / static_cast<double>(count) : 0.0;
+  };
+  const double factor_each = per_count(factor, total.factorizations - k1.factorizations);
+  const double solve_each = per_count(solve, total.linear_solves - k1.linear_solves);
+  const auto* irk = dynamic_cast<const catena::solvers::IrkIntegrator*>(integrator.get());
+  const std::string method =
+      integrator->name() + (irk ? (irk->decoupled() ? "/decoupled" : "/coupled") : "");
   const double ratio = t_step / (t_residual + t_solve);
   // The same with the unit costs seen inside the run (this method's own solve pair).
-  const double ratio_in_run = t_step / (each(force) + each(solve));
+  const double ratio_in_run = t_step / (each(force) + solve_each);
 
   if (rank == 0) {
     const double ms = 1e3;
@@ -287,7 +304,7 @@ int main(int argc, char** argv) {
     std::printf(
         "  %s, dt %g s, %d steps (%ld rejected); load %g N upward at %g m/s from "
         "x = %g m\n",
-        integrator->name().c_str(), o.dt, static_cast<int>(timer.seconds.size()),
+        method.c_str(), o.dt, static_cast<int>(timer.seconds.size()),
         report.steps_rejected, o.force, o.speed, o.start);
     std::printf(
         "  static equilibrium %.2f s (%d load steps, %d Newton iterations); set_state "
@@ -306,12 +323,12 @@ int main(int argc, char** argv) {
     std::printf("    matrix builds        %7.3f  %8.2f  %10.2f   (SNESJacobianEval - CatTangent)\n",
                 build.count / n_rest, ms * each(build), ms * build.seconds / n_rest);
     std::printf("    factorisations       %7.3f  %8.2f  %10.2f   (MatLUFactorNum)\n",
-                per_step(total.factorizations, k1.factorizations), ms * each(factor),
+                per_step(total.factorizations, k1.factorizations), ms * factor_each,
                 ms * factor.seconds / n_rest);
     std::printf(
         "    triangular solves    %7.3f  %8.2f  %10.2f   (MatSolve, a forward + backward "
         "pair)\n",
-        per_step(total.linear_solves, k1.linear_solves), ms * each(solve),
+        per_step(total.linear_solves, k1.linear_solves), ms * solve_each,
         ms * solve.seconds / n_rest);
     std::printf("    other (vector ops, mass products, SNES)     %10.2f\n",
                 ms * (t_step - accounted / n_rest));
@@ -329,13 +346,13 @@ int main(int argc, char** argv) {
     // s, unit HHT solve pair s, in-run residual s, in-run solve pair s, both ratios.
     std::printf(
         "CSV,%s,%d,%lld,%g,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.3f,%.3f\n",
-        integrator->name().c_str(), size, static_cast<long long>(system.dof_map().n_global()), o.dt,
+        method.c_str(), size, static_cast<long long>(system.dof_map().n_global()), o.dt,
         n_rest + 1, per_step(total.newton_iterations, k1.newton_iterations),
         per_step(total.residual_evaluations, k1.residual_evaluations),
         per_step(total.jacobian_evaluations, k1.jacobian_evaluations),
         per_step(total.factorizations, k1.factorizations),
         per_step(total.linear_solves, k1.linear_solves), t_step, timer.seconds.front(), t_residual,
-        t_solve, each(force), each(solve), ratio, ratio_in_run);
+        t_solve, each(force), solve_each, ratio, ratio_in_run);
   }
   return 0;
 }

@@ -3,6 +3,8 @@
 # project machine has 2 cores) and prints the reports; copy the numbers into
 # docs/performance.md with this command line. Extra arguments go to every run, e.g.
 #   scaling/run_moving_load.sh -steps 50 -dt 5e-4
+#   scaling/run_moving_load.sh -steps 40 -linear_algebra coupled   # radau's stage solve
+#                                       (auto = decoupled; hht ignores it)
 # BUILD_DIR selects the build tree (default: build).
 set -euo pipefail
 cd "$(dirname "$0")/.."

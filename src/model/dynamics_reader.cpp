@@ -36,7 +36,7 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
                  "error_estimate", "newton", "newton_rtol", "newton_atol",
-                 "max_newton_iterations"});
+                 "max_newton_iterations", "linear_algebra"});
   static const std::vector<std::string> types{"hht",          "gauss",        "radau",
                                               "radau_iia",    "lobatto_iiia", "lobatto_iiic",
                                               "sdirk",        "petsc"};
@@ -103,6 +103,31 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
     o.newton = newton.text_or(o.newton);
     if (o.newton != "simplified" && o.newton != "full")
       newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
+  }
+  const Field linear_algebra = in.child("linear_algebra");
+  if (family) {
+    o.linear_algebra = linear_algebra.text_or(o.linear_algebra);
+    static const std::vector<std::string> choices{"auto", "decoupled", "coupled"};
+    if (std::find(choices.begin(), choices.end(), o.linear_algebra) == choices.end())
+      linear_algebra.fail("unknown stage linear algebra '" + o.linear_algebra + "';" +
+                          did_you_mean(o.linear_algebra, choices) +
+                          " accepted: auto, decoupled, coupled");
+    // Where the decoupled solve is not exact (solvers/tableau_decomposition.hpp): the
+    // solver checks again from the tableau itself; here the message can name the line.
+    std::string why;
+    if (o.newton == "full")
+      why = "full Newton linearises every stage at its own state (no Kronecker form)";
+    else if (o.type == "lobatto_iiia")
+      why = "lobatto_iiia's A is singular (its explicit first stage)";
+    else if (o.type == "sdirk")
+      why = "sdirk's A has a triple eigenvalue (not diagonalisable)";
+    if (o.linear_algebra == "decoupled" && !why.empty())
+      linear_algebra.fail("linear_algebra: decoupled is not exact here: " + why +
+                          "; use auto or coupled");
+  } else {
+    fail_if_present(linear_algebra, "'linear_algebra' applies to the implicit Runge-Kutta types "
+                                    "(gauss, radau, lobatto_iiia, lobatto_iiic, sdirk), not to " +
+                                        o.type);
   }
   o.newton_rtol = in.child("newton_rtol")
                       .real_or(o.newton_rtol, RealRange::between(0.0, false, 1e-3, true, ""));

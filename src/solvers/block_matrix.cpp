@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/solvers/interleaved_vectors.hpp"
 
 namespace catena::solvers {
 
@@ -146,27 +147,11 @@ VecHandle BlockMatrix::create_vector() const {
 }
 
 void BlockMatrix::split(Vec block, const std::vector<Vec>& parts) const {
-  const PetscScalar* b = nullptr;
-  CATENA_PETSC(VecGetArrayRead(block, &b));
-  for (int i = 0; i < s_; ++i) {
-    PetscScalar* p = nullptr;
-    CATENA_PETSC(VecGetArrayWrite(parts[static_cast<size_t>(i)], &p));
-    for (PetscInt l = 0; l < n_owned_; ++l) p[l] = b[l * s_ + i];
-    CATENA_PETSC(VecRestoreArrayWrite(parts[static_cast<size_t>(i)], &p));
-  }
-  CATENA_PETSC(VecRestoreArrayRead(block, &b));
+  split_interleaved(block, parts);
 }
 
 void BlockMatrix::join(const std::vector<Vec>& parts, Vec block) const {
-  PetscScalar* b = nullptr;
-  CATENA_PETSC(VecGetArrayWrite(block, &b));
-  for (int i = 0; i < s_; ++i) {
-    const PetscScalar* p = nullptr;
-    CATENA_PETSC(VecGetArrayRead(parts[static_cast<size_t>(i)], &p));
-    for (PetscInt l = 0; l < n_owned_; ++l) b[l * s_ + i] = p[l];
-    CATENA_PETSC(VecRestoreArrayRead(parts[static_cast<size_t>(i)], &p));
-  }
-  CATENA_PETSC(VecRestoreArrayWrite(block, &b));
+  join_interleaved(parts, block);
 }
 
 }  // namespace catena::solvers

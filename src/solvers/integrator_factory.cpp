@@ -40,6 +40,12 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
   i.atol = o.newton_atol;
   i.max_newton_iterations = o.max_newton_iterations;
   i.full_newton = o.newton == "full";
+  if (o.linear_algebra == "decoupled")
+    i.linear_algebra = StageLinearAlgebra::decoupled;
+  else if (o.linear_algebra == "coupled")
+    i.linear_algebra = StageLinearAlgebra::coupled;
+  else
+    i.linear_algebra = StageLinearAlgebra::automatic;
   return std::make_unique<IrkIntegrator>(system, i);
 }
 

@@ -9,8 +9,10 @@
 #include "catena/solvers/algebraic_part.hpp"
 #include "catena/solvers/block_matrix.hpp"
 #include "catena/solvers/consistent_acceleration.hpp"
+#include "catena/solvers/decoupled_stage_solver.hpp"
 #include "catena/solvers/direct_newton.hpp"
 #include "catena/solvers/hermite_interpolation.hpp"
+#include "catena/solvers/interleaved_vectors.hpp"
 #include "catena/solvers/mumps_status.hpp"
 #include "catena/solvers/reusable_newton.hpp"
 #include "catena/solvers/round_off_floor.hpp"
@@ -61,7 +63,16 @@ struct IrkIntegrator::Impl {
   // equations at (q1, v1), as their stage multipliers converge at low order or not at all
   // (Gauss: the error grows like 1/h; docs/integrators.md).
   std::unique_ptr<AccelerationSolver> end_multipliers;
+  // Exactly one of the two stage solvers: the coupled s·n matrix, or the decoupled blocks
+  // (with `row_scale`, the constraint rows' scaling d as a vector, when constrained).
   std::unique_ptr<BlockMatrix> block;
+  std::unique_ptr<DecoupledStageSolver> decoupled;
+  VecHandle row_scale;
+  double row_scale_factor = 0.0;
+  // The h and tangent the decoupled blocks were last assembled with (their real block is
+  // the Radau IIA estimate's filter matrix when these match the estimate's).
+  double blocks_h = -1.0;
+  long blocks_tangent = -1;
   VecHandle x, r;
   std::unique_ptr<ReusableNewton> newton;
   long tangent_serial = 0;  // bumped whenever K, C change
@@ -137,7 +148,7 @@ struct IrkIntegrator::Impl {
   }
 
   void residual(Vec xk, Vec rk) {
-    block->split(xk, raw(Kst));
+    split_interleaved(xk, raw(Kst));
     stage_states();
     stage_scale = 0.0;
     for (int i = 0; i < s; ++i) {
@@ -148,7 +159,7 @@ struct IrkIntegrator::Impl {
       algebraic->scale_rows(F[i].get(), constraint_row_scale());
     }
     counters.residual_evaluations += s;
-    block->join(raw(F), rk);
+    join_interleaved(raw(F), rk);
   }
 
   BlockCoefficients coefficients() const {
@@ -171,7 +182,7 @@ struct IrkIntegrator::Impl {
 
   void build(Vec xk, bool refresh, Mat) {
     if (options.full_newton) {
-      block->split(xk, raw(Kst));
+      split_interleaved(xk, raw(Kst));
       stage_states();
       std::vector<Mat> k_rows, c_rows;
       for (int i = 0; i < s; ++i) {
@@ -182,11 +193,30 @@ struct IrkIntegrator::Impl {
       }
       counters.jacobian_evaluations += s;
       block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
+    } else if (decoupled) {
+      if (refresh) evaluate_start_tangent();
+      decoupled->assemble({K.get(), C.get(), block_diagonal_part(), constraint_row_vector(), h});
+      blocks_h = h;
+      blocks_tangent = tangent_serial;
+      return;
     } else {
       if (refresh) evaluate_start_tangent();
       block->assemble(K.get(), C.get(), block_diagonal_part(), coefficients());
     }
     algebraic->scale_rows(block->matrix(), constraint_row_scale(), s);
+  }
+
+  // The constraint rows' scaling as a vector d (1 on nodal rows), or null unconstrained.
+  Vec constraint_row_vector() {
+    if (!algebraic->active()) return nullptr;
+    const double factor = constraint_row_scale();
+    if (!row_scale) row_scale = system.create_vector();
+    if (factor != row_scale_factor) {
+      CATENA_PETSC(VecSet(row_scale.get(), 1.0));
+      algebraic->scale_rows(row_scale.get(), factor);
+      row_scale_factor = factor;
+    }
+    return row_scale.get();
   }
 
   void predict() {
@@ -204,7 +234,7 @@ struct IrkIntegrator::Impl {
         algebraic->take_algebraic(Kst[i].get(), q0.get());  // constant λ
       }
     }
-    block->join(raw(Kst), x.get());
+    join_interleaved(raw(Kst), x.get());
   }
 
   // The Radau IIA estimate x_u (docs/tableaus.md), in the weighted norm.
@@ -223,7 +253,12 @@ struct IrkIntegrator::Impl {
       // Full Newton keeps no tangent at the step start: take one for the filter.
       evaluate_start_tangent();
     }
-    if (estimate_h != h || estimate_tangent != tangent_serial) {
+    // Decoupled: the filter M + hγ0 C + (hγ0)² K is the real block of the stage solve (γ0
+    // is A's real eigenvalue), factored already when it was built for this h and tangent.
+    KSP filter = nullptr;
+    if (decoupled && blocks_h == h && blocks_tangent == tangent_serial)
+      filter = decoupled->real_block(T.gamma0);
+    if (!filter && (estimate_h != h || estimate_tangent != tangent_serial)) {
       CATENA_PETSC(MatCopy(mass.get(), E.get(), SAME_NONZERO_PATTERN));
       CATENA_PETSC(MatAXPY(E.get(), g, C.get(), SAME_NONZERO_PATTERN));
       CATENA_PETSC(MatAXPY(E.get(), g * g, K.get(), SAME_NONZERO_PATTERN));
@@ -232,14 +267,18 @@ struct IrkIntegrator::Impl {
       estimate_tangent = tangent_serial;
       ++estimate_factorizations;
     }
+    if (!filter) filter = estimate_ksp.get();
     // rhs = M r_v − g K r_u
     CATENA_PETSC(MatMult(mass.get(), rv.get(), rhs.get()));
     CATENA_PETSC(MatMult(K.get(), ru.get(), scratch.get()));
     CATENA_PETSC(VecAXPY(rhs.get(), -g, scratch.get()));
-    CATENA_PETSC(KSPSolve(estimate_ksp.get(), rhs.get(), xv.get()));
+    CATENA_PETSC(KSPSolve(filter, rhs.get(), xv.get()));
     ++estimate_solves;
-    const MumpsStatus mumps = mumps_status(estimate_ksp.get());
-    if (mumps.infog1 < 0 || mumps.null_pivots > 0) return 1e10;  // reject: h will shrink
+    const MumpsStatus mumps = mumps_status(filter);
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    CATENA_PETSC(KSPGetConvergedReason(filter, &reason));
+    if (mumps.infog1 < 0 || mumps.null_pivots > 0 || reason < 0)
+      return 1e10;  // reject: h will shrink
     CATENA_PETSC(VecWAXPY(xu.get(), g, xv.get(), ru.get()));
     return weighted_error_norm(tol, xu.get(), q0.get(), q1.get());
   }
@@ -279,16 +318,37 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     system.jacobian({m.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
                     m.mass_coupling.get());
   }
-  m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
-  m.x = m.block->create_vector();
-  m.r = m.block->create_vector();
+  // Decoupled where the transformation is exact: simplified Newton (one K, C for every
+  // stage) and an A with distinct nonzero eigenvalues.
+  std::string why_not;
+  std::optional<TableauDecomposition> form;
+  if (options.full_newton)
+    why_not = "full Newton linearises every stage at its own state (no Kronecker form)";
+  else
+    form = decompose_butcher_matrix(m.T.A, &why_not);
+  if (options.linear_algebra == StageLinearAlgebra::decoupled && !form)
+    throw InputError({"", 0, "integrator.linear_algebra"},
+                     "linear_algebra: decoupled is not exact for " + m.T.name + ": " + why_not +
+                         "; use coupled (or auto)");
+  const Mat pattern = m.algebraic->active() ? m.mass_coupling.get() : m.mass.get();
+  if (form && options.linear_algebra != StageLinearAlgebra::coupled)
+    m.decoupled = std::make_unique<DecoupledStageSolver>(pattern, m.T.A, m.A2, *form, "irk_");
+  else
+    m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
+  m.x = create_interleaved_vector(m.q0.get(), m.s);
+  m.r = create_interleaved_vector(m.q0.get(), m.s);
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
   m.newton = std::make_unique<ReusableNewton>(
-      system.comm(), m.block->matrix(), m.r.get(), "irk_", JacobianSymmetry::general, settings,
-      [&m](Vec xk, Vec rk) { m.residual(xk, rk); },
+      system.comm(), m.decoupled ? m.decoupled->operator_matrix() : m.block->matrix(), m.r.get(),
+      "irk_", JacobianSymmetry::general, settings, [&m](Vec xk, Vec rk) { m.residual(xk, rk); },
       [&m](Vec xk, bool refresh, Mat J) { m.build(xk, refresh, J); });
+  if (m.decoupled) {
+    m.decoupled->install(m.newton->ksp(), m.newton->callback_guard());
+    DecoupledStageSolver* solver = m.decoupled.get();
+    m.newton->set_linear_solve_check([solver] { return solver->failure(); });
+  }
   if (has_embedded_estimate())
     m.estimate_ksp = create_direct_ksp(system.comm(), "irk_estimate_", JacobianSymmetry::general);
 }
@@ -306,6 +366,7 @@ int IrkIntegrator::estimate_order() const {
   return has_embedded_estimate() ? impl_->T.embedded_order + 1 : 0;
 }
 const ButcherTableau& IrkIntegrator::tableau() const { return impl_->T; }
+bool IrkIntegrator::decoupled() const { return static_cast<bool>(impl_->decoupled); }
 
 void IrkIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   Impl& m = *impl_;

@@ -164,6 +164,14 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
       invalidate_tangent();
     }
   }
+  if (its > 0 && linear_check_) {
+    const std::string why = linear_check_();
+    if (!why.empty()) {
+      result.converged = false;
+      failure_ = why;
+      invalidate_tangent();
+    }
+  }
   if (!result.converged) {
     if (failure_.empty()) {
       std::ostringstream os;

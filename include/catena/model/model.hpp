@@ -171,6 +171,8 @@ struct IntegratorOptions {
   // auto: embedded where the method has one (Radau IIA odd s, HHT), else step doubling.
   std::string error_estimate = "auto";  // auto | embedded | step_doubling
   std::string newton = "simplified";    // simplified (frozen Jacobian) | full
+  // IRK stage Newton: auto (decoupled where exact) | decoupled | coupled
+  std::string linear_algebra = "auto";
   double newton_rtol = 1e-10;  // Newton residual tolerance, relative to the force scale
   double newton_atol = 1e-8;   // N
   int max_newton_iterations = 10;

@@ -87,6 +87,15 @@ class ReusableNewton {
   const NewtonCounters& counters() const { return counters_; }
   KSP ksp() const;
 
+  // For an owner that puts its own linear solver into the KSP (a PCSHELL, e.g. the
+  // decoupled IRK stage solve): its callbacks store their exceptions in this guard, which
+  // solve() rethrows after SNESSolve returns; `check` (not collective, same answer on every
+  // rank) is asked after every solve and returns why the linear solves failed, or nothing
+  // (MUMPS's status is read here only when the KSP's own PC is the factorisation).
+  using LinearSolveCheck = std::function<std::string()>;
+  CallbackGuard& callback_guard() { return guard_; }
+  void set_linear_solve_check(LinearSolveCheck check) { linear_check_ = std::move(check); }
+
  private:
   NewtonResult solve_once(Vec x, double atol, bool full_newton);
   static PetscErrorCode form_function(SNES, Vec x, Vec r, void* ctx);
@@ -97,6 +106,7 @@ class ReusableNewton {
   NewtonSettings settings_;
   Residual residual_fn_;
   MatrixBuilder builder_;
+  LinearSolveCheck linear_check_;
   Vec residual_;
   VecHandle guess_;  // the initial guess, kept for a retry (created at the first need)
   SnesHandle snes_;
