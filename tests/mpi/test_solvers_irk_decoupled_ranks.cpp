@@ -20,23 +20,7 @@ namespace solvers = catena::solvers;
 namespace {
 
 model::Model pendulum(bool driven_pivot) {
-  model::Model m;
-  m.gravity = Vec3(0, 0, -9.81);
-  const auto nodes = catena::test::add_line(
-      m, {0, 0, 0}, {1.2, 0, 0}, 16, model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}});
-  catena::test::set_reference_frames(m);
-  if (!driven_pivot) {
-    catena::test::pin(m, nodes.front());
-    return m;
-  }
-  model::Constraint c;
-  c.node_a = nodes.front();
-  c.type = model::ConstraintType::prescribed;
-  c.amplitude = Vec3(0.05, 0, 0);
-  c.frequency = 2.0;
-  c.velocity = Vec3(-2.0 * M_PI * 2.0 * 0.05, 0, 0);
-  m.constraints.push_back(c);
-  return m;
+  return catena::test::cable_pendulum(16, driven_pivot);
 }
 
 struct Final {

@@ -40,23 +40,7 @@ namespace {
 // The pendulum of meshes/cable_pendulum.yaml; its pivot eliminated, or a constraint
 // driven along x(t) = A (sin ωt − ωt) (zero velocity and acceleration at the start).
 model::Model pendulum(bool driven_pivot) {
-  model::Model m;
-  m.gravity = Vec3(0, 0, -9.81);
-  const auto nodes = catena::test::add_line(
-      m, {0, 0, 0}, {1.2, 0, 0}, 8, model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}});
-  catena::test::set_reference_frames(m);
-  if (!driven_pivot) {
-    catena::test::pin(m, nodes.front());
-    return m;
-  }
-  model::Constraint c;
-  c.node_a = nodes.front();
-  c.type = model::ConstraintType::prescribed;
-  c.amplitude = Vec3(0.05, 0, 0);
-  c.frequency = 2.0;
-  c.velocity = Vec3(-2.0 * M_PI * 2.0 * 0.05, 0, 0);
-  m.constraints.push_back(c);
-  return m;
+  return catena::test::cable_pendulum(8, driven_pivot);
 }
 
 struct Method {

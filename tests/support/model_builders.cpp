@@ -1,6 +1,8 @@
 #include "model_builders.hpp"
 
+#include <cmath>
 #include <variant>
+#include <vector>
 
 namespace catena::test {
 
@@ -43,5 +45,28 @@ void set_reference_frames(model::Model& m) {
 
 void pin(model::Model& m, int node) { m.supports.push_back({node, 0x7u}); }
 void clamp(model::Model& m, int node) { m.supports.push_back({node, 0xFFFu}); }
+
+model::Model cable_pendulum(int n_elements, bool driven_pivot) {
+  model::Model m;
+  m.gravity = Vec3(0, 0, -9.81);
+  model::CableProps cable;
+  cable.EA = 1260.0;
+  cable.EI = 8.505e-3;
+  cable.mass_per_length = 9.972;
+  const std::vector<int> nodes = add_line(m, {0, 0, 0}, {1.2, 0, 0}, n_elements, cable);
+  set_reference_frames(m);
+  if (!driven_pivot) {
+    pin(m, nodes.front());
+    return m;
+  }
+  model::Constraint c;
+  c.node_a = nodes.front();
+  c.type = model::ConstraintType::prescribed;
+  c.amplitude = Vec3(0.05, 0, 0);
+  c.frequency = 2.0;
+  c.velocity = Vec3(-2.0 * M_PI * 2.0 * 0.05, 0, 0);
+  m.constraints.push_back(c);
+  return m;
+}
 
 }  // namespace catena::test

@@ -16,6 +16,12 @@ std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_e
 void set_reference_frames(model::Model& m);
 
 void pin(model::Model& m, int node);    // fix x, y, z
+
+// The flexible pendulum of meshes/cable_pendulum.yaml (Berzeri et al.: 1.2 m, EA 1260 N,
+// EI 8.505e-3 N·m², 9.972 kg/m, gravity −z) in n_elements cables: its pivot pinned, or
+// (driven_pivot) held by a prescribed-motion constraint along x(t) = A (sin ωt − ωt),
+// A = 0.05 m, f = 2 Hz (zero velocity and acceleration at the start).
+model::Model cable_pendulum(int n_elements, bool driven_pivot);
 void clamp(model::Model& m, int node);  // fix all 12 nodal DOFs (trimmed to the node's)
 
 }  // namespace catena::test
