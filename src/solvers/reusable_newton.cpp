@@ -153,7 +153,10 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   result.residual_norm = norm;
   result.max_contraction = max_contraction_;
   result.converged = reason > 0;
-  if (its > 0) {
+  // A factorisation that fails at the first solve after a rebuild stops SNES before it
+  // counts an iteration: check the factorisation then too.
+  const bool factored = its > 0 || reason == SNES_DIVERGED_LINEAR_SOLVE;
+  if (factored) {
     const MumpsStatus mumps = mumps_status(ksp());
     if (mumps.infog1 < 0 || mumps.null_pivots > 0) {
       std::ostringstream os;
@@ -164,13 +167,26 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
       invalidate_tangent();
     }
   }
-  if (its > 0 && linear_check_) {
+  if (factored && linear_check_) {
     const std::string why = linear_check_();
     if (!why.empty()) {
       result.converged = false;
       failure_ = why;
       invalidate_tangent();
     }
+  }
+  if (!result.converged && failure_.empty() && reason == SNES_DIVERGED_LINEAR_SOLVE) {
+    // E.g. a zero pivot of PETSc's own LU (direct_newton.hpp, Pivoting::not_needed).
+    PC pc = nullptr;
+    CATENA_PETSC(KSPGetPC(ksp(), &pc));
+    PCFailedReason pc_reason = PC_NOERROR;
+    CATENA_PETSC(PCGetFailedReason(pc, &pc_reason));
+    KSPConvergedReason ksp_reason = KSP_CONVERGED_ITERATING;
+    CATENA_PETSC(KSPGetConvergedReason(ksp(), &ksp_reason));
+    std::ostringstream os;
+    os << "the linear solve of the Newton matrix failed (KSP reason "
+       << KSPConvergedReasons[ksp_reason] << ", PC " << PCFailedReasons[pc_reason] << ")";
+    failure_ = os.str();
   }
   if (!result.converged) {
     if (failure_.empty()) {
