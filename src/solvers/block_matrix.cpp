@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "catena/assembly/petsc_call.hpp"
-#include "catena/solvers/interleaved_vectors.hpp"
 
 namespace catena::solvers {
 
@@ -144,14 +143,6 @@ VecHandle BlockMatrix::create_vector() const {
   VecHandle v;
   CATENA_PETSC(MatCreateVecs(B_.get(), v.out(), nullptr));
   return v;
-}
-
-void BlockMatrix::split(Vec block, const std::vector<Vec>& parts) const {
-  split_interleaved(block, parts);
-}
-
-void BlockMatrix::join(const std::vector<Vec>& parts, Vec block) const {
-  join_interleaved(parts, block);
 }
 
 }  // namespace catena::solvers

@@ -43,11 +43,9 @@ class BlockMatrix {
   void assemble_rows(const std::vector<Mat>& K_rows, const std::vector<Mat>& C_rows, Mat M,
                      const BlockCoefficients& coefficients);
 
-  // Collective. A vector laid out as B's rows.
+  // Collective. A vector laid out as B's rows (split and join it with
+  // interleaved_vectors.hpp).
   VecHandle create_vector() const;
-  // Not collective. Copies between the block vector and its s parts (n-vectors).
-  void split(Vec block, const std::vector<Vec>& parts) const;
-  void join(const std::vector<Vec>& parts, Vec block) const;
 
  private:
   int s_;
