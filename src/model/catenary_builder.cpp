@@ -285,7 +285,7 @@ class CatenaryAssembler {
   // The contact wire as a path for moving contacts, and the evaluation section's range
   // along it (arc length on the reference geometry: x unless the wire is staggered).
   void add_path(const CatenaryLayout& layout) {
-    model_.paths.push_back(ElementPath{"contact_wire", layout.contact_wire.elements});
+    model_.paths.push_back(ElementPath{kContactWirePath, layout.contact_wire.elements});
     if (!d_.evaluation_spans) return;
     const auto [first, last] = *d_.evaluation_spans;
     model_.evaluation_start = contact_.arc_at_support[static_cast<std::size_t>(first - 1)];

@@ -56,6 +56,9 @@ struct MessengerSupportDesign {
   double damping = 0.0;    // N·s/m
 };
 
+// The name of the path the builder makes along the contact wire (pantographs run on it).
+inline constexpr const char* kContactWirePath = "contact_wire";
+
 struct CatenaryDesign {
   int dimension = 3;                 // 2 or 3
   std::vector<double> span_lengths;  // m

@@ -8,27 +8,9 @@
 #include "did_you_mean.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
+#include "speed_reader.hpp"
 
 namespace catena::model::detail {
-namespace {
-
-constexpr double kMetresPerSecondPerKmh = 1.0 / 3.6;
-
-// m/s from exactly one of `speed` (m/s) and `speed_kmh` (km/h).
-double read_speed(const Field& entry) {
-  const Field speed = entry.child("speed"), speed_kmh = entry.child("speed_kmh");
-  if (speed.present() && speed_kmh.present())
-    speed_kmh.fail("both 'speed' (" + speed.value_text() + " m/s) and 'speed_kmh' (" +
-                   speed_kmh.value_text() + " km/h) are given; expected exactly one of them");
-  if (!speed.present() && !speed_kmh.present())
-    entry.fail(
-        "missing required key 'speed' (m/s, a finite number >= 0); or give 'speed_kmh' "
-        "(km/h) instead");
-  if (speed.present()) return speed.real(RealRange::non_negative("m/s"));
-  return speed_kmh.real(RealRange::non_negative("km/h")) * kMetresPerSecondPerKmh;
-}
-
-}  // namespace
 
 void read_moving_loads(const Field& moving_loads, SceneBuild& build) {
   Model& model = build.model;

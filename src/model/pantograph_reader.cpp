@@ -8,6 +8,7 @@
 
 #include "did_you_mean.hpp"
 #include "line_path_reader.hpp"
+#include "speed_reader.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -115,11 +116,7 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       m.paths.push_back(own);
       c.path = static_cast<int>(m.paths.size()) - 1;
     }
-    const Field speed = entry.child("speed"), speed_kmh = entry.child("speed_kmh");
-    if (speed.present() == speed_kmh.present())
-      entry.fail("give exactly one of speed (m/s) and speed_kmh (km/h)");
-    c.speed = speed.present() ? speed.real(RealRange::non_negative("m/s"))
-                              : speed_kmh.real(RealRange::non_negative("km/h")) / 3.6;
+    c.speed = read_speed(entry);
     double path_length = 0.0;
     path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, path_length);
     // A start outside [0, path length] is a pantograph that reaches (or has left) the wire

@@ -2,17 +2,11 @@
 
 #include <algorithm>
 
+#include "catenary_builder.hpp"
 #include "number_format.hpp"
+#include "speed_reader.hpp"
 
 namespace catena::model::detail {
-namespace {
-
-constexpr double kMetresPerSecondPerKmh = 1.0 / 3.6;
-
-// The catenary builder names its contact-wire path so (pantograph_reader looks it up).
-constexpr const char* kContactWirePath = "contact_wire";
-
-}  // namespace
 
 RunReach read_run_reach(const Field& scene, const Field& why) {
   const Field analysis = scene.child("analysis");
@@ -27,12 +21,7 @@ RunReach read_run_reach(const Field& scene, const Field& why) {
   bool any = false;
   for (const Field& entry : scene.child("pantographs").items()) {
     if (!entry.is_map() || entry.child("path").text_or("") != kContactWirePath) continue;
-    const Field speed = entry.child("speed"), speed_kmh = entry.child("speed_kmh");
-    if (speed.present() == speed_kmh.present())
-      entry.fail("give exactly one of speed (m/s) and speed_kmh (km/h)");
-    const double v = speed.present()
-                         ? speed.real(RealRange::non_negative("m/s"))
-                         : speed_kmh.real(RealRange::non_negative("km/h")) * kMetresPerSecondPerKmh;
+    const double v = read_speed(entry);
     const double start = entry.child("start").real_or(0.0, RealRange::any("m"));
     const double farthest = std::max(start, start + v * reach.duration);
     if (!any || farthest > reach.farthest) {
