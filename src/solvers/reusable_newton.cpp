@@ -124,6 +124,33 @@ NewtonResult ReusableNewton::solve(Vec x, double atol) {
   return result;
 }
 
+std::string ReusableNewton::linear_failure(SNESConvergedReason reason, PetscInt its) const {
+  // A factorisation that fails at the first solve after a rebuild stops SNES before it
+  // counts an iteration; with no iteration and no such stop, nothing was factored.
+  if (its == 0 && reason != SNES_DIVERGED_LINEAR_SOLVE) return {};
+  std::ostringstream os;
+  const MumpsStatus mumps = mumps_status(ksp());
+  if (mumps.infog1 < 0 || mumps.null_pivots > 0) {
+    os << "the Newton matrix could not be factored (MUMPS INFOG(1) = " << mumps.infog1
+       << ", null pivots " << mumps.null_pivots << ")";
+    return os.str();
+  }
+  if (linear_check_) {
+    if (std::string why = linear_check_(); !why.empty()) return why;
+  }
+  if (reason != SNES_DIVERGED_LINEAR_SOLVE) return {};
+  // E.g. a zero pivot of PETSc's own LU (direct_newton.hpp, Pivoting::not_needed).
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp(), &pc));
+  PCFailedReason pc_reason = PC_NOERROR;
+  CATENA_PETSC(PCGetFailedReason(pc, &pc_reason));
+  KSPConvergedReason ksp_reason = KSP_CONVERGED_ITERATING;
+  CATENA_PETSC(KSPGetConvergedReason(ksp(), &ksp_reason));
+  os << "the linear solve of the Newton matrix failed (KSP reason "
+     << KSPConvergedReasons[ksp_reason] << ", PC " << PCFailedReasons[pc_reason] << ")";
+  return os.str();
+}
+
 NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   full_newton_now_ = full_newton;
   atol_ = atol;
@@ -145,48 +172,16 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   CATENA_PETSC(SNESGetIterationNumber(snes_.get(), &its));
   PetscReal norm = 0.0;
   CATENA_PETSC(SNESGetFunctionNorm(snes_.get(), &norm));
-  PetscInt linear = 0;
-  CATENA_PETSC(SNESGetLinearSolveIterations(snes_.get(), &linear));
   counters_.iterations += its;
   counters_.linear_solves += its;
   result.iterations = static_cast<int>(its);
   result.residual_norm = norm;
   result.max_contraction = max_contraction_;
   result.converged = reason > 0;
-  // A factorisation that fails at the first solve after a rebuild stops SNES before it
-  // counts an iteration: check the factorisation then too.
-  const bool factored = its > 0 || reason == SNES_DIVERGED_LINEAR_SOLVE;
-  if (factored) {
-    const MumpsStatus mumps = mumps_status(ksp());
-    if (mumps.infog1 < 0 || mumps.null_pivots > 0) {
-      std::ostringstream os;
-      os << "the Newton matrix could not be factored (MUMPS INFOG(1) = " << mumps.infog1
-         << ", null pivots " << mumps.null_pivots << ")";
-      result.converged = false;
-      failure_ = os.str();
-      invalidate_tangent();
-    }
-  }
-  if (factored && linear_check_) {
-    const std::string why = linear_check_();
-    if (!why.empty()) {
-      result.converged = false;
-      failure_ = why;
-      invalidate_tangent();
-    }
-  }
-  if (!result.converged && failure_.empty() && reason == SNES_DIVERGED_LINEAR_SOLVE) {
-    // E.g. a zero pivot of PETSc's own LU (direct_newton.hpp, Pivoting::not_needed).
-    PC pc = nullptr;
-    CATENA_PETSC(KSPGetPC(ksp(), &pc));
-    PCFailedReason pc_reason = PC_NOERROR;
-    CATENA_PETSC(PCGetFailedReason(pc, &pc_reason));
-    KSPConvergedReason ksp_reason = KSP_CONVERGED_ITERATING;
-    CATENA_PETSC(KSPGetConvergedReason(ksp(), &ksp_reason));
-    std::ostringstream os;
-    os << "the linear solve of the Newton matrix failed (KSP reason "
-       << KSPConvergedReasons[ksp_reason] << ", PC " << PCFailedReasons[pc_reason] << ")";
-    failure_ = os.str();
+  if (const std::string why = linear_failure(reason, its); !why.empty()) {
+    result.converged = false;
+    failure_ = why;
+    invalidate_tangent();
   }
   if (!result.converged) {
     if (failure_.empty()) {

@@ -98,6 +98,9 @@ class ReusableNewton {
 
  private:
   NewtonResult solve_once(Vec x, double atol, bool full_newton);
+  // Collective. After SNESSolve: why its linear solves failed (the factorisation's status,
+  // the owner's check, a failed PC), or "".
+  std::string linear_failure(SNESConvergedReason reason, PetscInt its) const;
   static PetscErrorCode form_function(SNES, Vec x, Vec r, void* ctx);
   static PetscErrorCode form_jacobian(SNES, Vec x, Mat J, Mat P, void* ctx);
   static PetscErrorCode converged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm,
