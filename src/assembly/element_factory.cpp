@@ -52,8 +52,9 @@ Kernel make_element_kernel(const model::Model& model, int index) {
       [&](const auto& p) -> std::unique_ptr<elements::Element> {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, model::CableProps>) {
-          const elements::CableSection s{p.EA, p.EI, p.mass_per_length, p.damping_time,
-                                         p.prestrain};
+          const elements::CableSection s{p.EA,           p.EI,           p.mass_per_length,
+                                         p.damping_time, p.prestrain,    p.tension_only,
+                                         p.prestrain_with_loads};
           return with_rayleigh(std::make_unique<elements::AncfCable>(length, s, model.gravity,
                                                                      desc.distributed_load),
                                p.rayleigh, model, desc.nodes);

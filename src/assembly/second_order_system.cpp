@@ -477,7 +477,7 @@ void SecondOrderSystem::owned_node_values(Vec q_global, std::vector<double>& pos
 bool SecondOrderSystem::has_slack_prestrain() const {
   for (const auto& e : model_->elements)
     if (const auto* c = std::get_if<model::CableProps>(&e.props);
-        c && c->prestrain < elements::AncfCable::kPathPrestrain)
+        c && !c->prestrain_with_loads && c->prestrain < elements::AncfCable::kPathPrestrain)
       return true;
   return false;
 }

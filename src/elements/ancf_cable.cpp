@@ -67,8 +67,8 @@ AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gra
 
 void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   const double L = length_;
-  const double a = 1.0 + path_prestrain(section_.prestrain, s.path);
-  const double EA = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
+  const double a = 1.0 + section_prestrain(section_, s.path);
+  const double EA_taut = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
   const bool damped = tau > 0.0 && !s.v.empty();
   const Blocks e = gather(s.q);
   Blocks ev;
@@ -117,21 +117,25 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
     const double norm_u = u.norm();
     const Vec3 t = u / norm_u;
     const double eps = a * norm_u - 1.0;
+    // A slack tension-only point keeps kSlackStiffness of EA and no damping (the law is
+    // continuous at ε = 0, its tangent jumps there, as the bar's does).
+    const bool slack = section_.tension_only && eps < 0.0;
+    const double EA = slack ? kSlackStiffness * EA_taut : EA_taut;
     PointTangent pt;
     pt.fu = EA * eps * t;
     const Mat3 P = (I - t * t.transpose()) / norm_u;  // ∂t/∂u
     double eps_rate = 0.0;
     Vec3 u_rate = Vec3::Zero();
-    if (damped) {
+    if (damped && !slack) {
       for (int i = 0; i < 4; ++i) u_rate += h.ds[i] * ev[i];
       eps_rate = a * t.dot(u_rate);
       pt.fu += EA * tau * eps_rate * t;
     }
     if (r.stiffness) {
       pt.Huu = EA * (a * t * t.transpose() + eps * P);
-      if (damped) pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
+      if (damped && !slack) pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
     }
-    if (r.damping && tau > 0.0) pt.Cuu = EA * tau * a * t * t.transpose();
+    if (r.damping && tau > 0.0 && !slack) pt.Cuu = EA * tau * a * t * t.transpose();
     accumulate(h, kAxialWeights[k] * L, pt, false);
   }
 
@@ -199,14 +203,20 @@ double AncfCable::path_prestrain(double prestrain, const LoadPath& path) {
   return held * path.prestrain + path.release * (prestrain - held);
 }
 
+double AncfCable::section_prestrain(const CableSection& section, const LoadPath& path) {
+  return section.prestrain_with_loads ? section.prestrain * path.loads
+                                      : path_prestrain(section.prestrain, path);
+}
+
 SectionResult AncfCable::section_result(const LocalState& s) const {
   const Blocks e = gather(s.q);
   const HermiteAt h = hermite_at(0.5 * length_, length_);
   Vec3 u = Vec3::Zero();
   for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
-  const double a = 1.0 + path_prestrain(section_.prestrain, s.path);
+  const double a = 1.0 + section_prestrain(section_, s.path);
   const double eps = a * u.norm() - 1.0;
-  return {section_.EA * eps, eps};
+  const double EA = section_.tension_only && eps < 0.0 ? kSlackStiffness * section_.EA : section_.EA;
+  return {EA * eps, eps};
 }
 
 }  // namespace catena::elements

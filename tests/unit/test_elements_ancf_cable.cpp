@@ -133,3 +133,51 @@ TEST(AncfCable, ConstantCurvatureBendingEnergyMatchesArc) {
   const double moment = tb.cross(QB)[2];
   EXPECT_NEAR(moment, s.EI / rho, 1e-3 * s.EI / rho);
 }
+
+// A tension-only (dropper) cable shortened uniformly: the force is the slack residue
+// kSlackStiffness·EA·ε, without damping, and the tangent matches finite differences on
+// both sides of ε = 0 (away from the kink).
+TEST(AncfCable, TensionOnlyCableCarriesOnlyTheSlackResidueInCompression) {
+  CableSection s = kSection;
+  s.tension_only = true;
+  const double L = 1.0;
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero());
+  for (const double stretch : {0.97, 1.02}) {
+    const std::vector<double> q = {0, 0, 0, 0, 0, -stretch, 0, 0, -stretch * L, 0, 0, -stretch};
+    const double eps = stretch * (1 + s.prestrain) - 1;
+    const double EA = eps < 0.0 ? AncfCable::kSlackStiffness * s.EA : s.EA;
+    // A velocity that shortens it further: damping acts only while taut.
+    const std::vector<double> v = {0, 0, 0, 0, 0, 0.1, 0, 0, 0.1, 0, 0, 0.1};
+    const auto f = catena::test::element_force(cable, q, v, 1.0);
+    const double rate = -0.1 * (1 + s.prestrain);  // ε̇ = a·t·u̇ along −z
+    const double N = EA * (eps + (eps < 0.0 ? 0.0 : s.damping_time * rate));
+    EXPECT_NEAR(f[8], -N, 1e-9 * std::abs(s.EA * eps)) << "stretch " << stretch;
+    EXPECT_NEAR(cable.section_result({q, {}, {}}).axial_force, EA * eps, 1e-6 * std::abs(EA * eps));
+    std::mt19937 rng(3);
+    const auto check = catena::test::check_element_jacobians(
+        cable, perturbed(q, 1e-4, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng), 1.0);
+    EXPECT_LT(check.stiffness, 1e-6) << "stretch " << stretch;
+    EXPECT_LT(check.damping, 1e-6) << "stretch " << stretch;
+  }
+}
+
+// prestrain_with_loads: along the static load path the prestrain is ε_p·loads, whatever
+// the path's tensioning and release factors; at the path's end it is ε_p, as for any cable.
+TEST(AncfCable, PrestrainPutOnWithTheLoads) {
+  CableSection s = kSection;
+  s.damping_time = 0.0;
+  s.prestrain = 0.4;  // a dropper shortened to L/1.4 by shape finding
+  s.prestrain_with_loads = true;
+  const double L = 1.0;
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero());
+  const std::vector<double> q = {0, 0, 0, 1, 0, 0, L, 0, 0, 1, 0, 0};  // mesh length
+  for (const double loads : {0.0, 0.25, 1.0}) {
+    const catena::elements::LoadPath path(1.0, loads, 0.0);
+    EXPECT_DOUBLE_EQ(AncfCable::section_prestrain(s, path), s.prestrain * loads);
+    EXPECT_NEAR(cable.section_result({q, {}, path}).axial_force, s.EA * s.prestrain * loads,
+                1e-9 * s.EA) << "loads " << loads;
+  }
+  s.prestrain_with_loads = false;  // a wire: tensioned first (path.prestrain), loads aside
+  EXPECT_DOUBLE_EQ(AncfCable::section_prestrain(s, catena::elements::LoadPath(1.0, 0.0, 0.0)),
+                   s.prestrain);
+}

@@ -34,6 +34,12 @@ struct CableSection {
   double mass_per_length = 0.0;
   double damping_time = 0.0;
   double prestrain = 0.0;  // ε_p: unstretched length = L / (1 + ε_p)
+  // Slack in compression: where ε < 0 the axial force is kSlackStiffness·EA·ε, without
+  // damping (a dropper cable).
+  bool tension_only = false;
+  // Along the static load path, ε_p is put on with the loads (ε_p·loads), not before them
+  // (see LoadPath): a dropper's prestrain is its shape-found length, not a tension.
+  bool prestrain_with_loads = false;
 };
 
 class AncfCable final : public Element {
@@ -55,6 +61,16 @@ class AncfCable final : public Element {
   static constexpr double kPathPrestrain = 1.0e-3;
   // Prestrain at a point of the load path: ε_t·p + r·(ε_p − ε_t), ε_t = max(ε_p, kPathPrestrain).
   static double path_prestrain(double prestrain, const LoadPath& path);
+  // The section's prestrain at a point of the load path (path_prestrain, or ε_p·loads
+  // when it is put on with the loads).
+  static double section_prestrain(const CableSection& section, const LoadPath& path);
+
+  // Axial stiffness left to a slack tension-only cable, as a fraction of EA. Not zero: a
+  // slack dropper's interior nodes would have no stiffness along the dropper, and a static
+  // solve with a slack dropper (elasticity) a singular matrix. At 1e-4 a dropper of
+  // 1e5 N/m shortened by 5 cm pushes with 0.5 N, below any force the contact-force
+  // statistics resolve (docs/catenary.md, "Droppers as cables").
+  static constexpr double kSlackStiffness = 1.0e-4;
 
  private:
 
