@@ -37,6 +37,36 @@ CurvatureSquared curvature_squared(double g, double p, double c) {
 
 using Blocks = std::array<Vec3, 4>;
 
+// The axial law per unit EA: N/EA = G(ε) + τ W(ε) ε̇. Linear (G = ε, W = 1), or
+// tension-only: G = (1 − r) m(ε) + r ε with m a C¹ smoothed max(ε, 0) (quadratic
+// (ε + δ)²/(4δ) for |ε| < δ) and r = kSlackStiffness, W = m'(ε), so that damping fades with
+// the tension. A sharp switch (the bar's) makes Newton cycle at a point hovering at ε = 0
+// (the residual stagnates); the smoothing moves N by at most EA·δ/4.
+struct AxialLaw {
+  struct At {
+    double G, dG, W, dW;
+  };
+  bool tension_only;
+
+  explicit AxialLaw(bool tension_only_) : tension_only(tension_only_) {}
+
+  At at(double eps) const {
+    if (!tension_only) return {eps, 1.0, 1.0, 0.0};
+    constexpr double d = AncfCable::kSlackBand;
+    constexpr double r = AncfCable::kSlackStiffness;
+    double m = 0.0, dm = 0.0, ddm = 0.0;
+    if (eps >= d) {
+      m = eps;
+      dm = 1.0;
+    } else if (eps > -d) {
+      m = (eps + d) * (eps + d) / (4.0 * d);
+      dm = (eps + d) / (2.0 * d);
+      ddm = 1.0 / (2.0 * d);
+    }
+    return {(1.0 - r) * m + r * eps, (1.0 - r) * dm + r, dm, ddm};
+  }
+};
+
 Blocks gather(std::span<const double> x) {
   Blocks b;
   for (int i = 0; i < 4; ++i) b[i] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
@@ -68,7 +98,7 @@ AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gra
 void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   const double L = length_;
   const double a = 1.0 + section_prestrain(section_, s.path);
-  const double EA_taut = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
+  const double EA = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
   const bool damped = tau > 0.0 && !s.v.empty();
   const Blocks e = gather(s.q);
   Blocks ev;
@@ -109,7 +139,10 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
         for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
   };
 
-  // Axial strain and its rate (Kelvin–Voigt): N = EA (ε + τ ε̇), ε = a|u| − 1.
+  // Axial strain and its rate (Kelvin–Voigt): N = EA (ε + τ ε̇), ε = a|u| − 1; for a
+  // tension-only section N = EA (G(ε) + τ W(ε) ε̇) (AxialLaw). In general form,
+  // H_uu = t (∂N/∂u)ᵀ + N ∂t/∂u with ∂ε/∂u = a t, ∂ε̇/∂u = a (∂t/∂u) u̇.
+  const AxialLaw law(section_.tension_only);
   for (int k = 0; k < 3; ++k) {
     const HermiteAt h = hermite_at(kAxialPoints[k] * L, L);
     Vec3 u = Vec3::Zero();
@@ -117,25 +150,23 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
     const double norm_u = u.norm();
     const Vec3 t = u / norm_u;
     const double eps = a * norm_u - 1.0;
-    // A slack tension-only point keeps kSlackStiffness of EA and no damping (the law is
-    // continuous at ε = 0, its tangent jumps there, as the bar's does).
-    const bool slack = section_.tension_only && eps < 0.0;
-    const double EA = slack ? kSlackStiffness * EA_taut : EA_taut;
-    PointTangent pt;
-    pt.fu = EA * eps * t;
+    const AxialLaw::At g = law.at(eps);
     const Mat3 P = (I - t * t.transpose()) / norm_u;  // ∂t/∂u
     double eps_rate = 0.0;
     Vec3 u_rate = Vec3::Zero();
-    if (damped && !slack) {
+    if (damped) {
       for (int i = 0; i < 4; ++i) u_rate += h.ds[i] * ev[i];
       eps_rate = a * t.dot(u_rate);
-      pt.fu += EA * tau * eps_rate * t;
     }
+    const double N = EA * (g.G + tau * g.W * eps_rate);
+    PointTangent pt;
+    pt.fu = N * t;
     if (r.stiffness) {
-      pt.Huu = EA * (a * t * t.transpose() + eps * P);
-      if (damped && !slack) pt.Huu += EA * tau * (a * t * (P * u_rate).transpose() + eps_rate * P);
+      Vec3 dN = EA * (g.dG + tau * g.dW * eps_rate) * a * t;
+      if (damped) dN += EA * tau * g.W * a * (P * u_rate);
+      pt.Huu = t * dN.transpose() + N * P;
     }
-    if (r.damping && tau > 0.0 && !slack) pt.Cuu = EA * tau * a * t * t.transpose();
+    if (r.damping && tau > 0.0) pt.Cuu = EA * tau * g.W * a * t * t.transpose();
     accumulate(h, kAxialWeights[k] * L, pt, false);
   }
 
@@ -215,8 +246,7 @@ SectionResult AncfCable::section_result(const LocalState& s) const {
   for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
   const double a = 1.0 + section_prestrain(section_, s.path);
   const double eps = a * u.norm() - 1.0;
-  const double EA = section_.tension_only && eps < 0.0 ? kSlackStiffness * section_.EA : section_.EA;
-  return {EA * eps, eps};
+  return {section_.EA * AxialLaw(section_.tension_only).at(eps).G, eps};
 }
 
 }  // namespace catena::elements

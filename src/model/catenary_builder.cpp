@@ -162,17 +162,38 @@ class CatenaryAssembler {
       last_element_id = std::max(last_element_id, element.id);
     std::size_t n_elements = contact_.elements.size() + messenger_.elements.size() +
                              contact_.joints.size() + messenger_.joints.size();
-    for (const auto& p : d_.droppers.positions) n_elements += p.size();
+    std::size_t n_droppers = 0;
+    for (const auto& p : d_.droppers.positions) n_droppers += p.size();
+    n_elements += n_droppers * static_cast<std::size_t>(elements_per_dropper());
     next_element_id_ =
         reserve_ids(last_element_id, static_cast<std::int64_t>(n_elements), entry_, "element");
-    const auto n_new =
-        static_cast<std::int64_t>(contact_.positions.size() + messenger_.positions.size());
+    const std::size_t n_dropper_nodes =
+        cable_droppers() ? n_droppers * static_cast<std::size_t>(d_.droppers.cable_elements + 1)
+                         : 0;
+    const auto n_new = static_cast<std::int64_t>(contact_.positions.size() +
+                                                 messenger_.positions.size() + n_dropper_nodes);
     std::int64_t id = reserve_ids(last_id, n_new, entry_, "node");
     contact_base_ = static_cast<int>(model_.nodes.size());
     for (const Vec3& x : contact_.positions) build_.add_node(Node{id++, x}, origin_);
     messenger_base_ = static_cast<int>(model_.nodes.size());
     for (const Vec3& x : messenger_.positions) build_.add_node(Node{id++, x}, origin_);
+    dropper_base_ = static_cast<int>(model_.nodes.size());
+    if (!cable_droppers()) return;
+    // Each cable dropper's own nodes, top to bottom: its ends coincide with the wire nodes
+    // they are hinged to (see add_cable_dropper).
+    const int n = d_.droppers.cable_elements;
+    for (std::size_t span = 0; span < d_.span_lengths.size(); ++span)
+      for (std::size_t k = 0; k < d_.droppers.positions[span].size(); ++k) {
+        const Vec3 top = messenger_.positions[static_cast<std::size_t>(messenger_.stations[span][k + 1])];
+        const Vec3 bottom = contact_.positions[static_cast<std::size_t>(contact_.stations[span][k + 1])];
+        for (int j = 0; j <= n; ++j)
+          build_.add_node(Node{id++, top + (bottom - top) * (static_cast<double>(j) / n)}, origin_);
+      }
   }
+
+  bool cable_droppers() const { return d_.droppers.model == DropperModel::cable; }
+  // Elements per dropper: the bar, or the cable elements and the two hinges.
+  int elements_per_dropper() const { return cable_droppers() ? d_.droppers.cable_elements + 2 : 1; }
 
   void add_element(ElementDesc element) {
     element.id = next_element_id_++;
@@ -195,35 +216,93 @@ class CatenaryAssembler {
 
   void add_droppers(CatenaryLayout& layout) {
     const DropperDesign& dd = d_.droppers;
-    ElementDesc element;
-    element.set = "droppers";
+    int chain = dropper_base_;  // the next cable dropper's top node
     for (std::size_t span = 0; span < d_.span_lengths.size(); ++span) {
       for (std::size_t k = 0; k < dd.positions[span].size(); ++k) {
         const int lower = contact_node(contact_.stations[span][k + 1]);
         const int upper = messenger_node(messenger_.stations[span][k + 1]);
-        BarProps bar;
-        // A stiffness fixes EA/l0; until shape finding sets l0 it is the mesh length.
-        bar.EA = dd.stiffness > 0.0 ? dd.stiffness * d_.system_height : dd.EA;
-        bar.mass_per_length = dd.mass_per_length;
-        bar.damping = dd.damping;
-        bar.tension_only = dd.tension_only;
-        element.props = bar;
-        element.nodes = {upper, lower};
         CatenaryDropper dropper;
-        dropper.element = static_cast<int>(model_.elements.size());
+        dropper.mesh_length = (model_.nodes[static_cast<std::size_t>(upper)].position -
+                               model_.nodes[static_cast<std::size_t>(lower)].position)
+                                  .norm();
+        if (cable_droppers()) {
+          add_cable_dropper(upper, lower, chain, dropper);
+          chain += dd.cable_elements + 1;
+        } else {
+          add_bar_dropper(upper, lower, dropper);
+        }
         dropper.contact_node = lower;
         dropper.messenger_node = upper;
         dropper.span = static_cast<int>(span);
         dropper.design_z = design_height(d_.presag, dd.positions[span][k], d_.span_lengths[span]);
         dropper.stiffness = dd.stiffness;
         layout.droppers.push_back(dropper);
-        add_element(element);
         if (dd.clamp_mass > 0.0) {
           model_.point_masses.push_back(PointMass{lower, dd.clamp_mass});
           model_.point_masses.push_back(PointMass{upper, dd.clamp_mass});
         }
       }
     }
+  }
+
+  // Mesh-length EA: a stiffness fixes EA/l0; until shape finding sets l0 it is the mesh
+  // length (system_height).
+  double dropper_mesh_EA() const {
+    const DropperDesign& dd = d_.droppers;
+    return dd.stiffness > 0.0 ? dd.stiffness * d_.system_height : dd.EA;
+  }
+
+  void add_bar_dropper(int upper, int lower, CatenaryDropper& dropper) {
+    const DropperDesign& dd = d_.droppers;
+    BarProps bar;
+    bar.EA = dropper_mesh_EA();
+    bar.mass_per_length = dd.mass_per_length;
+    bar.damping = dd.damping;
+    bar.tension_only = dd.tension_only;
+    ElementDesc element;
+    element.set = "droppers";
+    element.props = bar;
+    element.nodes = {upper, lower};
+    dropper.element = static_cast<int>(model_.elements.size());
+    dropper.elements = {dropper.element};
+    add_element(element);
+  }
+
+  // Cable elements from `top` (coinciding with the messenger node `upper`) down to
+  // top + n (coinciding with the contact-wire node `lower`), then a hinge at each end: a
+  // stiff spring on the positions, so that the dropper's slopes stay its own (ANCF slopes
+  // are shared at a node, and the dropper meets the wires at a right angle).
+  void add_cable_dropper(int upper, int lower, int top, CatenaryDropper& dropper) {
+    const DropperDesign& dd = d_.droppers;
+    const int n = dd.cable_elements;
+    const double mesh_length = dropper.mesh_length;
+    CableProps cable;
+    cable.EA = dropper_mesh_EA();
+    cable.EI = dd.EI;
+    cable.mass_per_length = dd.mass_per_length;
+    // The dropper's damping c (N·s/m, along it) as Kelvin–Voigt: EA·τ/l0 = c; shape
+    // finding keeps it so when it changes l0 or EA.
+    cable.damping_time = dd.damping * mesh_length / cable.EA;
+    cable.tension_only = dd.tension_only;
+    cable.prestrain_with_loads = true;  // shape finding sets it: L/l0 − 1
+    ElementDesc element;
+    element.set = "droppers";
+    element.props = cable;
+    for (int j = 0; j < n; ++j) {
+      element.nodes = {top + j, top + j + 1};
+      dropper.elements.push_back(static_cast<int>(model_.elements.size()));
+      add_element(element);
+    }
+    dropper.element = dropper.elements.back();
+    ElementDesc hinge;
+    hinge.set = "dropper_hinges";
+    SpringProps spring;
+    spring.stiffness = Vec3::Constant(kDropperHingeStiffnessFactor * cable.EA / (mesh_length / n));
+    hinge.props = spring;
+    hinge.nodes = {upper, top};
+    add_element(hinge);
+    hinge.nodes = {top + n, lower};
+    add_element(hinge);
   }
 
   void add_joints(const std::string& set, const WirePlan& plan, int base, double EA) {
@@ -246,6 +325,8 @@ class CatenaryAssembler {
         fixed[contact_node(static_cast<int>(i))] = planar;
       for (std::size_t i = 0; i < messenger_.positions.size(); ++i)
         fixed[messenger_node(static_cast<int>(i))] = planar;
+      for (int node = dropper_base_; node < static_cast<int>(model_.nodes.size()); ++node)
+        fixed[node] = planar;  // cable droppers' own nodes
     }
     const std::size_t n_supports = support_x_.size();
     for (const std::size_t end : {std::size_t{0}, n_supports - 1}) {
@@ -300,6 +381,7 @@ class CatenaryAssembler {
   WirePlan contact_, messenger_;
   int origin_ = 0;
   int contact_base_ = 0, messenger_base_ = 0;
+  int dropper_base_ = 0;  // the first cable-dropper node (none for bars)
   std::int64_t next_element_id_ = 0;  // the next element id handed out
 };
 

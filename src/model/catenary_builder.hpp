@@ -10,12 +10,15 @@
 //   contact wire straight at z = 0 between supports, messenger straight at
 //   z = system_height, both at y = ±stagger alternating at the supports (3D) or y = 0.
 // Both wires are straight in every span because ANCF slopes are continuous at a node. The
-// droppers are vertical bars in the reference configuration; their unstretched lengths
-// (the pre-sag shape) come from shape finding.
+// droppers are vertical bars, or vertical chains of cable elements hinged to the wires, in
+// the reference configuration; their unstretched lengths (the pre-sag shape) come from
+// shape finding.
 //
 // Numbering: new node ids follow the largest id in the model (explicit and line nodes),
-// contact-wire nodes first, then messenger nodes, each in x order; new element ids follow
-// the largest element id, in the order contact wire, messenger, droppers, joints.
+// contact-wire nodes first, then messenger nodes, each in x order, then the cable
+// droppers' own nodes (droppers in x order, each top to bottom); new element ids follow
+// the largest element id, in the order contact wire, messenger, droppers (a cable
+// dropper: its elements top to bottom, then its two hinges), joints.
 #include <optional>
 #include <utility>
 #include <vector>
@@ -33,7 +36,15 @@ struct WireDesign {
   Rayleigh rayleigh;             // proportional damping (none by default)
 };
 
+// How droppers are modelled (`droppers.model`): a two-node tension-only bar, its mass
+// lumped at its ends, or a chain of ANCF cable elements with distributed mass, slack in
+// compression, hinged to the wires (docs/catenary.md).
+enum class DropperModel { bar, cable };
+
 struct DropperDesign {
+  DropperModel model = DropperModel::bar;
+  int cable_elements = 0;     // per dropper, cable model only
+  double EI = 0.0;            // N·m², cable model only
   std::vector<std::vector<double>> positions;  // m from the span's start, per span
   double EA = 0.0;                             // N; 0 when `stiffness` is given
   double stiffness = 0.0;        // N/m (EA = stiffness × unstretched length); 0 when EA is
@@ -79,6 +90,12 @@ struct CatenaryDesign {
 // multiple of the wire's axial stiffness EA/h of its shortest element (h): its stretch
 // under the wire tension is 1 % of one element's.
 inline constexpr double kJointStiffnessFactor = 100.0;
+
+// The same for the hinges that join a cable dropper's end nodes to the wires, as a
+// multiple of the dropper's EA/h (h its element length): stiffer than the wires' joints
+// because a hinge is in series with the whole dropper, whose stiffness is a design value;
+// the two hinges lower it by 2/factor (0.02 %).
+inline constexpr double kDropperHingeStiffnessFactor = 1.0e4;
 
 // Not collective. The contact wire's design height at distance s from the start of a span
 // of length L: the pre-sag parabola −4·presag·(s/L)·(1 − s/L), 0 at the supports.

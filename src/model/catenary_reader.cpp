@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "catenary_builder.hpp"
+#include "did_you_mean.hpp"
 #include "rayleigh_reader.hpp"
 #include "run_reach.hpp"
 
@@ -148,10 +149,37 @@ std::vector<std::vector<double>> read_dropper_positions(const Field& positions,
   return out;
 }
 
+// `model: bar` (default) or `cable` with `elements` and `EI`; a cable dropper needs a
+// mass: its interior nodes have no other inertia (a massless cable dropper is a bar).
+void read_dropper_model(const Field& droppers, DropperDesign& d) {
+  const Field model = droppers.child("model");
+  const std::string name = model.text_or("bar");
+  static const std::vector<std::string> choices{"bar", "cable"};
+  if (std::find(choices.begin(), choices.end(), name) == choices.end())
+    model.fail("unknown dropper model '" + name + "';" + did_you_mean(name, choices) +
+               " accepted: bar (a tension-only bar, mass lumped at its ends), cable (ANCF "
+               "cable elements, distributed mass)");
+  d.model = name == "cable" ? DropperModel::cable : DropperModel::bar;
+  const Field elements = droppers.child("elements");
+  const Field EI = droppers.child("EI");
+  if (d.model == DropperModel::bar) {
+    for (const Field& only_cable : {elements, EI})
+      if (only_cable.present())
+        only_cable.fail("applies to cable droppers only; add 'model: cable' or remove the key");
+    return;
+  }
+  d.cable_elements = static_cast<int>(elements.integer_or(2, IntRange::between(1, 100)));
+  d.EI = EI.real(RealRange::positive("N*m^2"));
+  if (!(d.mass_per_length > 0.0))
+    droppers.child("mass_per_length")
+        .fail("cable droppers need a mass per length > 0 kg/m (the cable's interior nodes "
+              "have no other inertia); give the dropper wire's mass or use 'model: bar'");
+}
+
 DropperDesign read_droppers(const Field& droppers, const std::vector<double>& spans) {
   droppers.expect_map("the droppers {positions, EA or stiffness, ...}");
-  droppers.check_keys(
-      {"positions", "EA", "stiffness", "mass_per_length", "damping", "tension_only", "clamp_mass"});
+  droppers.check_keys({"positions", "model", "elements", "EI", "EA", "stiffness",
+                       "mass_per_length", "damping", "tension_only", "clamp_mass"});
   DropperDesign d;
   d.positions = read_dropper_positions(droppers.child("positions"), spans);
   const Field EA = droppers.child("EA");
@@ -170,6 +198,7 @@ DropperDesign read_droppers(const Field& droppers, const std::vector<double>& sp
   d.damping = droppers.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
   d.tension_only = droppers.child("tension_only").boolean_or(true);
   d.clamp_mass = droppers.child("clamp_mass").real_or(0.0, RealRange::non_negative("kg"));
+  read_dropper_model(droppers, d);
   return d;
 }
 

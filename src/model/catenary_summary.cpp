@@ -101,6 +101,23 @@ Messenger messenger_supports(const Model& m, const CatenaryLayout& c) {
   return out;
 }
 
+// What a dropper is made of, bar or cable chain (EI 0 for a bar); damping in N·s/m along
+// the dropper (a cable's Kelvin–Voigt time as c = EA·τ/l0).
+struct DropperProperties {
+  bool tension_only = false;
+  double EA = 0.0, EI = 0.0, mass_per_length = 0.0, damping = 0.0;
+};
+
+DropperProperties dropper_properties(const Model& m, const CatenaryDropper& d) {
+  const ElementDesc& element = m.elements[static_cast<std::size_t>(d.element)];
+  if (const auto* bar = std::get_if<BarProps>(&element.props))
+    return {bar->tension_only, bar->EA, 0.0, bar->mass_per_length, bar->damping};
+  const auto& cable = std::get<CableProps>(element.props);
+  const double l0 = d.mesh_length / (1.0 + cable.prestrain);
+  return {cable.tension_only, cable.EA, cable.EI, cable.mass_per_length,
+          cable.EA * cable.damping_time / l0};
+}
+
 }  // namespace
 
 void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
@@ -133,29 +150,37 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   t.row("contact wire", wire_text(m, c.contact_wire), 4);
   t.row("messenger", wire_text(m, c.messenger), 4);
 
-  // Droppers: bars, read back from their elements.
+  // Droppers, read back from their elements (bars or cable chains).
   bool all_tension_only = true, any_tension_only = false;
-  std::vector<double> dropper_mass, dropper_damping, stiffness, EA, clamps;
+  std::vector<double> dropper_mass, dropper_damping, stiffness, EA, EI, clamps;
   for (const CatenaryDropper& d : c.droppers) {
-    const BarProps& bar = std::get<BarProps>(m.elements[static_cast<std::size_t>(d.element)].props);
-    all_tension_only = all_tension_only && bar.tension_only;
-    any_tension_only = any_tension_only || bar.tension_only;
-    dropper_mass.push_back(bar.mass_per_length);
-    dropper_damping.push_back(bar.damping);
+    const DropperProperties p = dropper_properties(m, d);
+    all_tension_only = all_tension_only && p.tension_only;
+    any_tension_only = any_tension_only || p.tension_only;
+    dropper_mass.push_back(p.mass_per_length);
+    dropper_damping.push_back(p.damping);
     if (d.stiffness > 0.0)
       stiffness.push_back(d.stiffness);  // the design's EA/l0
     else
-      EA.push_back(bar.EA);
+      EA.push_back(p.EA);
+    if (p.EI > 0.0) EI.push_back(p.EI);
     clamps.push_back(point_mass_at(m, d.contact_node));
     clamps.push_back(point_mass_at(m, d.messenger_node));
   }
+  const bool cables = !EI.empty();
   const std::string behaviour =
-      all_tension_only   ? "tension-only (slack in compression, sharp switch)"
+      all_tension_only
+          ? (cables ? "tension-only (slack in compression, smoothed; residue 1e-6 EA)"
+                    : "tension-only (slack in compression, sharp switch)")
       : any_tension_only ? "partly tension-only"
                          : "carrying compression too (tension_only: false)";
+  const std::string kind =
+      cables ? cat(plural(static_cast<long long>(c.droppers.size()), "cable"), " of ",
+                   plural(static_cast<long long>(c.droppers.front().elements.size()), "element"),
+                   " (ANCF, EI ", range_text(EI, "N*m^2"), ", distributed mass, hinged to the wires)")
+             : cat(plural(static_cast<long long>(c.droppers.size()), "bar"), " (axial force only)");
   t.row("droppers",
-        cat(plural(static_cast<long long>(c.droppers.size()), "bar"), " (axial force only), ",
-            behaviour, ", ",
+        cat(kind, ", ", behaviour, ", ",
             stiffness.empty() ? cat("EA ", range_text(EA, "N"))
                               : cat("stiffness ", range_text(stiffness, "N/m")),
             ", ", range_text(dropper_mass, "kg/m"), ", damping ",
@@ -203,7 +228,10 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   notes.left_out.push_back(
       "steady-arm rotation: a steady arm is a vertical spring (with a point mass) on the "
       "contact wire");
-  notes.left_out.push_back("dropper bending: droppers are bars (axial force only)");
+  if (!cables)
+    notes.left_out.push_back(
+        "dropper bending and distributed mass: droppers are bars (axial force only, mass "
+        "lumped at the ends; droppers.model: cable models both)");
   if (c.dimension == 2)
     notes.left_out.push_back(
         "out-of-plane (y) motion: dimension 2 fixes every wire node's y and slope y");

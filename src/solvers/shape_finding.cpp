@@ -29,13 +29,30 @@ void set_wire_prestrain(model::Model& m, const model::CatenaryWire& wire, double
     std::get<CableProps>(m.elements[static_cast<std::size_t>(e)].props).prestrain = prestrain;
 }
 
+// A cable dropper's chain (top to bottom) given the unstretched length l0: prestrain
+// L/l0 − 1 (L its mesh length), EA = stiffness·l0 when the stiffness is the design value,
+// and the Kelvin–Voigt time that keeps its damping c = EA·τ/l0 (N·s/m) as built.
+void set_cable_dropper_length(model::Model& m, const model::CatenaryDropper& d, double l0) {
+  for (const int e : d.elements) {
+    auto& cable = std::get<CableProps>(m.elements[static_cast<std::size_t>(e)].props);
+    const double damping = cable.EA * cable.damping_time * (1.0 + cable.prestrain) / d.mesh_length;
+    if (d.stiffness > 0.0) cable.EA = d.stiffness * l0;
+    cable.prestrain = d.mesh_length / l0 - 1.0;
+    cable.damping_time = damping * l0 / cable.EA;
+  }
+}
+
 void apply(const Unknowns& u, model::Model& m) {
   const CatenaryLayout& layout = *m.catenary;
   for (std::size_t i = 0; i < layout.droppers.size(); ++i) {
     const model::CatenaryDropper& d = layout.droppers[i];
-    auto& bar = std::get<BarProps>(m.elements[static_cast<std::size_t>(d.element)].props);
-    bar.unstretched_length = u.lengths[i];
-    if (d.stiffness > 0.0) bar.EA = d.stiffness * u.lengths[i];
+    auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
+    if (auto* bar = std::get_if<BarProps>(&props)) {
+      bar->unstretched_length = u.lengths[i];
+      if (d.stiffness > 0.0) bar->EA = d.stiffness * u.lengths[i];
+    } else {
+      set_cable_dropper_length(m, d, u.lengths[i]);
+    }
   }
   for (std::size_t j = 0; j < layout.registrations.size(); ++j) {
     const model::CatenaryRegistration& r = layout.registrations[j];
@@ -50,17 +67,27 @@ double wire_EA(const model::Model& m, const model::CatenaryWire& wire) {
   return std::get<CableProps>(m.elements[static_cast<std::size_t>(wire.elements.front())].props).EA;
 }
 
-// EA of dropper i when its unstretched length is l0.
-double dropper_EA(const model::Model& m, const model::CatenaryDropper& d, double l0) {
-  return d.stiffness > 0.0
-             ? d.stiffness * l0
-             : std::get<BarProps>(m.elements[static_cast<std::size_t>(d.element)].props).EA;
+// A dropper's section, bar or cable: EA (N) and mass per unstretched length (kg/m).
+struct DropperSection {
+  double EA = 0.0, mass_per_length = 0.0;
+};
+
+DropperSection dropper_section(const model::Model& m, const model::CatenaryDropper& d) {
+  const auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
+  if (const auto* bar = std::get_if<BarProps>(&props)) return {bar->EA, bar->mass_per_length};
+  const auto& cable = std::get<CableProps>(props);
+  return {cable.EA, cable.mass_per_length};
 }
 
-// Half a dropper's weight (N): what the bar lumps on each of its nodes.
+// EA of dropper i when its unstretched length is l0.
+double dropper_EA(const model::Model& m, const model::CatenaryDropper& d, double l0) {
+  return d.stiffness > 0.0 ? d.stiffness * l0 : dropper_section(m, d).EA;
+}
+
+// Half a dropper's weight (N): what a bar lumps on each of its nodes, and what a vertical
+// cable dropper's weight puts on each end.
 double half_weight(const model::Model& m, const model::CatenaryDropper& d, double l0) {
-  const auto& bar = std::get<BarProps>(m.elements[static_cast<std::size_t>(d.element)].props);
-  return 0.5 * bar.mass_per_length * l0 * m.gravity.norm();
+  return 0.5 * dropper_section(m, d).mass_per_length * l0 * m.gravity.norm();
 }
 
 std::string describe_dropper(const model::Model& m, std::size_t i) {

@@ -25,7 +25,7 @@ catena::model::Model pendulum() {
   catena::model::Model m;
   m.gravity = Vec3(0, 0, -9.81);
   const auto nodes = catena::test::add_line(m, {0, 0, 0}, {1.2, 0, 0}, 8,
-                                            catena::model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}});
+                                            catena::model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}, false, false});
   catena::test::set_reference_frames(m);
   catena::test::pin(m, nodes.front());
   return m;

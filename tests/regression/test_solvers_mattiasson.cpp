@@ -29,7 +29,7 @@ Tip cantilever_tip(Kind kind, double load_parameter, int n_elements) {
   const double L = 2.0, EI = 50.0, EA = 1e8 * EI / (L * L);
   model::Model m;
   m.gravity = Vec3::Zero();
-  model::ElementProps props = model::CableProps{EA, EI, 1.0, 0.0, 0.0, {}};
+  model::ElementProps props = model::CableProps{EA, EI, 1.0, 0.0, 0.0, {}, false, false};
   if (kind == Kind::beam) {
     model::BeamProps b;
     b.EA = EA;

@@ -180,3 +180,44 @@ TEST(ShapeFinding, PantographsAndMovingLoadsDoNotChangeTheLengths) {
   // The pantograph is still in the model, and lifts the wire where it stands.
   ASSERT_EQ(loaded.model.contacts.size(), 1u);
 }
+
+// droppers.model: cable with the same stiffness and mass as a bar model: shape finding
+// reaches the design heights within 1 mm in an independent static solve, each chain's
+// unstretched length L/(1 + ε_p) is the reported one, its EA is stiffness·l0, and the
+// lengths and the droppers' pull on the contact wire equal the bars' (the static
+// problems differ only in where the droppers' weight acts: lumped at the ends, or along
+// the chain, which hangs straight).
+TEST(ShapeFinding, CableDroppersMatchBarDroppersOfTheSameMass) {
+  const std::vector<std::string> mass{"catenary.droppers.mass_per_length=0.089"};
+  std::vector<std::string> cable = mass;
+  cable.insert(cable.end(), {"catenary.droppers.model=cable", "catenary.droppers.EI=0.02",
+                             "catenary.droppers.elements=3"});
+  const Shaped bars = shape(mass);
+  const Shaped cables = shape(cable);
+  expect_design_heights(cables, 1e-3);
+  const CatenaryLayout& c = *cables.model.catenary;
+  ASSERT_EQ(cables.report.dropper_lengths.size(), bars.report.dropper_lengths.size());
+  double worst_length = 0.0, worst_force = 0.0;
+  for (std::size_t i = 0; i < c.droppers.size(); ++i) {
+    const double l0 = cables.report.dropper_lengths[i];
+    for (const int e : c.droppers[i].elements) {
+      const auto& props = std::get<CableProps>(cables.model.elements[e].props);
+      EXPECT_NEAR(c.droppers[i].mesh_length / (1.0 + props.prestrain), l0, 1e-12);
+      EXPECT_DOUBLE_EQ(props.EA, 1.0e5 * l0);
+    }
+    worst_length = std::max(worst_length, std::abs(l0 - bars.report.dropper_lengths[i]));
+    // The lowest cable element's mid-point force less the weight of the chain's lowest
+    // sixth (3 elements) is the pull on the contact wire; the bar's force less nothing,
+    // its lower half-weight being lumped on the wire node: compare both with the
+    // contact-wire node's share, i.e. the bar force plus half the weight minus a sixth.
+    const double weight = 0.089 * l0 * 9.81;
+    const double cable_pull = cables.statics.axial_force[c.droppers[i].element] - weight / 6.0;
+    const double bar_pull = bars.statics.axial_force[bars.model.catenary->droppers[i].element] -
+                            weight / 2.0;
+    worst_force = std::max(worst_force, std::abs(cable_pull - bar_pull));
+    EXPECT_NEAR(cable_pull, bar_pull, 0.05) << "dropper " << i;
+  }
+  std::printf("  cable vs bar droppers: lengths within %.3g mm, pull within %.3g N\n",
+              1e3 * worst_length, worst_force);
+  EXPECT_LT(worst_length, 1e-4);
+}

@@ -161,6 +161,32 @@ TEST(AncfCable, TensionOnlyCableCarriesOnlyTheSlackResidueInCompression) {
   }
 }
 
+// Inside the smoothing band |ε| < kSlackBand the law is C¹: the force is between the slack
+// residue and EA·ε, and the tangent (damping included) matches finite differences.
+TEST(AncfCable, TensionOnlyLawIsSmoothAcrossTheSlackBand) {
+  CableSection s = kSection;
+  s.tension_only = true;
+  s.prestrain = 0.0;
+  const double L = 1.0, d = AncfCable::kSlackBand;
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero());
+  for (const double eps : {-0.5 * d, 0.0, 0.5 * d}) {
+    const double stretch = 1.0 + eps;
+    const std::vector<double> q = {0, 0, 0, 0, 0, -stretch, 0, 0, -stretch * L, 0, 0, -stretch};
+    const double N = cable.section_result({q, {}, {}}).axial_force;
+    const double smooth = (eps + d) * (eps + d) / (4.0 * d);
+    EXPECT_NEAR(N, s.EA * ((1 - AncfCable::kSlackStiffness) * smooth + AncfCable::kSlackStiffness * eps),
+                1e-9 * s.EA * d) << "eps " << eps;
+    EXPECT_GT(N, AncfCable::kSlackStiffness * s.EA * eps);
+    std::mt19937 rng(5);
+    // Perturbations far below the band keep every sampling point inside it.
+    const auto check = catena::test::check_element_jacobians(
+        cable, perturbed(q, 1e-7, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng), 1.0,
+        1e-9);
+    EXPECT_LT(check.stiffness, 1e-5) << "eps " << eps;
+    EXPECT_LT(check.damping, 1e-5) << "eps " << eps;
+  }
+}
+
 // prestrain_with_loads: along the static load path the prestrain is ε_p·loads, whatever
 // the path's tensioning and release factors; at the path's end it is ε_p, as for any cable.
 TEST(AncfCable, PrestrainPutOnWithTheLoads) {

@@ -286,10 +286,80 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
       {{"catenary.evaluation_spans=[3, 2]"}, {"catenary.evaluation_spans[1]", "comes before"}},
       {{"catenary.stitch=true"}, {"catenary.stitch", "stitch wires are not modelled"}},
       {{"catenary.droppers.spacing=5"}, {"catenary.droppers.spacing", "unknown key"}},
+      {{"catenary.droppers.model=rope"}, {"catenary.droppers.model", "accepted: bar"}},
+      {{"catenary.droppers.EI=0.02"}, {"catenary.droppers.EI", "cable droppers only"}},
+      {{"catenary.droppers.elements=2"}, {"catenary.droppers.elements", "cable droppers only"}},
+      {{"catenary.droppers.model=cable", "catenary.droppers.mass_per_length=0.1"},
+       {"catenary.droppers.EI", "missing required key"}},
+      {{"catenary.droppers.model=cable", "catenary.droppers.EI=0.02"},
+       {"catenary.droppers.mass_per_length", "need a mass per length > 0"}},
+      {{"catenary.droppers.model=cable", "catenary.droppers.EI=0.02",
+        "catenary.droppers.mass_per_length=0.1", "catenary.droppers.elements=0"},
+       {"catenary.droppers.elements", "in [1, 100]"}},
       {{"gravity=[0, -9.81, 0]"}, {"catenary", "gravity must point along -z"}},
   };
   test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); },
                             "catenary_3span.yaml", cases);
+}
+
+// droppers.model: cable. Each dropper is a vertical chain of `elements` cable elements
+// with its own nodes (ends coinciding with the wire nodes, held in the plane in 2D),
+// hinged to the wires by two springs; EA from the stiffness at mesh length, tension-only,
+// prestrain put on with the loads, damping as a Kelvin–Voigt time c·L/EA.
+TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
+  const int per = 3;
+  const Model m = read_scene(scene_file, {"catenary.droppers.model=cable",
+                                          "catenary.droppers.EI=0.02",
+                                          "catenary.droppers.mass_per_length=0.089",
+                                          "catenary.droppers.damping=50",
+                                          "catenary.droppers.elements=" + std::to_string(per)});
+  const CatenaryLayout& c = *m.catenary;
+  const int wire_elements = n_spans * elements_per_span;
+  const int n_droppers = n_spans * droppers_per_span;
+  EXPECT_EQ(m.nodes.size(), 2u * (wire_elements + 1) + n_droppers * (per + 1));
+  EXPECT_EQ(count_kind(m, 0), 2 * wire_elements + n_droppers * per);  // cables
+  EXPECT_EQ(count_kind(m, 2), 0);                                     // no bars
+  EXPECT_EQ(count_kind(m, 3), 2 * n_droppers);                        // hinges
+  ASSERT_EQ(c.droppers.size(), static_cast<std::size_t>(n_droppers));
+  for (const CatenaryDropper& d : c.droppers) {
+    ASSERT_EQ(d.elements.size(), static_cast<std::size_t>(per));
+    EXPECT_EQ(d.element, d.elements.back());
+    EXPECT_NEAR(d.mesh_length, 1.2, 1e-12);
+    const Vec3 top = m.nodes[d.messenger_node].position;
+    const Vec3 bottom = m.nodes[d.contact_node].position;
+    for (std::size_t j = 0; j < d.elements.size(); ++j) {
+      const ElementDesc& e = m.elements[d.elements[j]];
+      EXPECT_EQ(e.set, "droppers");
+      const auto& cable = std::get<CableProps>(e.props);
+      EXPECT_TRUE(cable.tension_only);
+      EXPECT_TRUE(cable.prestrain_with_loads);
+      EXPECT_DOUBLE_EQ(cable.EA, 1e5 * 1.2);
+      EXPECT_DOUBLE_EQ(cable.EI, 0.02);
+      EXPECT_NEAR(cable.damping_time, 50.0 * 1.2 / (1e5 * 1.2), 1e-15);
+      EXPECT_NEAR(element_length(m, d.elements[j]), 1.2 / per, 1e-12);
+      // A chain from the messenger node down to the contact-wire node.
+      const Vec3 expected = top + (bottom - top) * (static_cast<double>(j) / per);
+      EXPECT_LT((m.nodes[e.nodes[0]].position - expected).norm(), 1e-12);
+      if (j > 0) {
+        EXPECT_EQ(e.nodes[0], m.elements[d.elements[j - 1]].nodes[1]);
+      }
+      EXPECT_EQ(mask_of(m, e.nodes[0]), fix_y | fix_slope_y) << "2D: in the plane";
+    }
+    // The hinges: springs from each wire node to the coincident chain end.
+    int hinges = 0;
+    for (const ElementDesc& e : m.elements) {
+      if (e.set != "dropper_hinges") continue;
+      const int top_end = m.elements[d.elements.front()].nodes[0];
+      const int bottom_end = m.elements[d.elements.back()].nodes[1];
+      if ((e.nodes[0] == d.messenger_node && e.nodes[1] == top_end) ||
+          (e.nodes[0] == bottom_end && e.nodes[1] == d.contact_node)) {
+        ++hinges;
+        // Far stiffer than the dropper's elements (the hinge is in series with them).
+        EXPECT_GE(std::get<SpringProps>(e.props).stiffness.z(), 1e3 * 1e5 * 1.2 / (1.2 / per));
+      }
+    }
+    EXPECT_EQ(hinges, 2);
+  }
 }
 
 }  // namespace

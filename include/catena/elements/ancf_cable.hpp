@@ -34,8 +34,8 @@ struct CableSection {
   double mass_per_length = 0.0;
   double damping_time = 0.0;
   double prestrain = 0.0;  // ε_p: unstretched length = L / (1 + ε_p)
-  // Slack in compression: where ε < 0 the axial force is kSlackStiffness·EA·ε, without
-  // damping (a dropper cable).
+  // Slack in compression: where ε < −kSlackBand the axial force is kSlackStiffness·EA·ε,
+  // without damping (a dropper cable); smoothed across |ε| < kSlackBand.
   bool tension_only = false;
   // Along the static load path, ε_p is put on with the loads (ε_p·loads), not before them
   // (see LoadPath): a dropper's prestrain is its shape-found length, not a tension.
@@ -67,10 +67,14 @@ class AncfCable final : public Element {
 
   // Axial stiffness left to a slack tension-only cable, as a fraction of EA. Not zero: a
   // slack dropper's interior nodes would have no stiffness along the dropper, and a static
-  // solve with a slack dropper (elasticity) a singular matrix. At 1e-4 a dropper of
-  // 1e5 N/m shortened by 5 cm pushes with 0.5 N, below any force the contact-force
-  // statistics resolve (docs/catenary.md, "Droppers as cables").
-  static constexpr double kSlackStiffness = 1.0e-4;
+  // solve with a slack dropper (elasticity) a singular matrix. Small enough that a slack
+  // dropper stays straight: at 1e-6 a dropper of 1e5 N/m shortened by 10 cm pushes with
+  // 10 mN, far below its Euler load (π²EI/l² ≈ 0.5 N for EI = 0.02 N·m², l = 0.6 m), and
+  // below any force the contact-force statistics resolve (docs/catenary.md).
+  static constexpr double kSlackStiffness = 1.0e-6;
+  // Strain half-band over which the tension-only law is smoothed (C¹, see ancf_cable.cpp):
+  // at ε = 0 a dropper of EA = 6e4 N carries EA·δ/4 = 0.3 N instead of 0.
+  static constexpr double kSlackBand = 2.0e-5;
 
  private:
 

@@ -10,9 +10,15 @@
 
 namespace catena::model {
 
-// One dropper: a bar (BarProps) from the messenger down to the contact wire.
+// One dropper from the messenger down to the contact wire: a bar (BarProps), or a chain
+// of cable elements (CableProps, tension_only, prestrain_with_loads) hinged to the wires
+// at its own end nodes.
 struct CatenaryDropper {
-  int element = 0;         // into Model::elements (a BarProps element)
+  // Into Model::elements: the bar, or the lowest cable element (whose axial force is the
+  // pull on the contact wire); `elements` lists all of them, top to bottom.
+  int element = 0;
+  std::vector<int> elements;
+  double mesh_length = 0.0;  // m, messenger node to contact-wire node in the reference
   int contact_node = 0;    // its lower node, on the contact wire
   int messenger_node = 0;  // its upper node, on the messenger
   int span = 0;            // 0-based span number

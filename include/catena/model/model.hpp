@@ -42,12 +42,12 @@ struct CableProps {
   // Prestrain ε_p: the element's unstretched length is L_mesh / (1 + ε_p). Set from the
   // scene's `tension` (ε_p = T/EA), `prestrain` or `unstretched_length`.
   double prestrain = 0.0;
+  Rayleigh rayleigh;             // proportional damping α M + β K_ref
   // Droppers as cables (catenary builder): no compression beyond a slack residue
   // (elements::AncfCable::kSlackStiffness), and the prestrain, a length found by shape
   // finding rather than a tension, put on with the loads along the static load path.
   bool tension_only = false;
   bool prestrain_with_loads = false;
-  Rayleigh rayleigh;             // proportional damping α M + β K_ref (last: aggregates)
 };
 
 // ANCF beam with torsion (see elements/ancf_beam.hpp for the formulation).
