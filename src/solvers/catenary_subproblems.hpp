@@ -57,8 +57,9 @@ double corrected_prestrain(double prestrain, double mean_force, double tension, 
 // Not collective. The sag strain of a wire (`cables`, in path order) in `snapshot`: the
 // length of its deformed node polyline less its end-to-end chord, over its reference
 // length. For a stitch wire N/EA − ε is not its sag strain: its ends ride on the messenger,
-// whose kink at the support draws them together (by about a θ²/4 for slopes ±θ, 17 mm on
-// an 18 m stitch, more than its sag adds), so its sag is measured from its shape.
+// whose kink at the support draws them together (by about a θ²/4 for slopes ±θ: 13.6 mm
+// for an 18 m stitch on the EN 50318 messenger, more than its sag adds), so its sag is
+// measured from its shape.
 double sag_strain(const model::Model& model, const StaticSnapshot& snapshot,
                   const std::vector<int>& cables);
 
