@@ -36,8 +36,8 @@ struct WirePart {
 WirePart extract_wires(const model::Model& m, const std::vector<const model::CatenaryWire*>& wires,
                        std::size_t stitch_from) {
   WirePart part;
-  part.model.name =
-      m.name + " (" + wires.front()->name + (wires.size() > 1 ? " and more" : "") + " alone)";
+  part.model.name = m.name + " (" + wires.front()->name +
+                    (wires.size() > 1 ? " with the stitch wires" : "") + " alone)";
   part.model.gravity = m.gravity;
   part.model.static_options = m.static_options;
   part.part_node.assign(m.nodes.size(), -1);
