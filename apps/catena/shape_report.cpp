@@ -26,6 +26,12 @@ void print_report(std::FILE* out, const model::Model& m, const solvers::ShapeFin
                "(design %.6g N, %.6g N)\n",
                r.contact_wire_tension, r.messenger_tension, layout.contact_wire.tension,
                layout.messenger.tension);
+  if (!r.stitch_tensions.empty()) {
+    const auto [lo, hi] = std::minmax_element(r.stitch_tensions.begin(), r.stitch_tensions.end());
+    std::fprintf(out,
+                 "  stitch wires (mean axial force): %.1f N to %.1f N (design %.6g N), %zu wires\n",
+                 *lo, *hi, layout.stitch_wires.front().wire.tension, r.stitch_tensions.size());
+  }
   double lo = 0.0, hi = 0.0;
   bool any = false;
   for (std::size_t j = 0; j < layout.registrations.size(); ++j) {

@@ -1,24 +1,26 @@
 #pragma once
 // The geometry of a simple catenary (one tension section) from its design data: nodes,
-// cable elements for the contact wire and the messenger, dropper bars, clamp and
-// steady-arm masses, supports, elastic supports, the contact-wire path, the registration
-// nodes and Model::catenary. The design is read and range-checked by catenary_reader; what
-// is built, and why, is in docs/catenary.md.
+// cable elements for the contact wire, the messenger and the optional stitch wires,
+// dropper bars, clamp and steady-arm masses, supports, elastic supports, the contact-wire
+// path, the registration nodes and Model::catenary. The design is read and range-checked
+// by catenary_reader; what is built, and why, is in docs/catenary.md.
 //
 // Geometry (reference configuration, stress-free apart from the cables' prestrain):
 //   x along the track from the first support (x = 0), z up, y lateral;
 //   contact wire straight at z = 0 between supports, messenger straight at
-//   z = system_height, both at y = ±stagger alternating at the supports (3D) or y = 0.
+//   z = system_height, both at y = ±stagger alternating at the supports (3D) or y = 0;
+//   a stitch wire straight between its two clamp points on the messenger.
 // Both wires are straight in every span because ANCF slopes are continuous at a node. The
 // droppers are vertical bars, or vertical chains of cable elements hinged to the wires, in
 // the reference configuration; their unstretched lengths (the pre-sag shape) come from
 // shape finding.
 //
 // Numbering: new node ids follow the largest id in the model (explicit and line nodes),
-// contact-wire nodes first, then messenger nodes, each in x order, then the cable
-// droppers' own nodes (droppers in x order, each top to bottom); new element ids follow
-// the largest element id, in the order contact wire, messenger, droppers (a cable
-// dropper: its elements top to bottom, then its two hinges), joints.
+// contact-wire nodes first, then messenger nodes, then the stitch wires' (stitch by
+// stitch), each in x order, then the cable droppers' own nodes (droppers in x order, each
+// top to bottom); new element ids follow the largest element id, in the order contact
+// wire, messenger, stitch wires, droppers (a cable dropper: its elements top to bottom,
+// then its two hinges), joints, stitch joints.
 #include <optional>
 #include <utility>
 #include <vector>
@@ -40,6 +42,13 @@ struct WireDesign {
 // lumped at its ends, or a chain of ANCF cable elements with distributed mass, slack in
 // compression, hinged to the wires (docs/catenary.md).
 enum class DropperModel { bar, cable };
+
+// A stitch wire at every intermediate support (`catenary.stitch`): clamped to the
+// messenger at x_support ± length/2, carrying the droppers strictly between the clamps.
+struct StitchDesign {
+  double length = 0.0;  // m, between the two clamps
+  WireDesign wire;      // its tension is the installation tension in the static state
+};
 
 struct DropperDesign {
   DropperModel model = DropperModel::bar;
@@ -82,13 +91,15 @@ struct CatenaryDesign {
   DropperDesign droppers;
   SteadyArmDesign steady_arms;
   MessengerSupportDesign messenger_supports;
+  std::optional<StitchDesign> stitch;                   // none: no stitch wires
   std::optional<std::pair<int, int>> evaluation_spans;  // 1-based, first ≤ last
   std::optional<AutoSpanCount> auto_spans;              // `spans: auto` (else the scene's count)
 };
 
-// Stiffness of the spring that joins the two nodes of a wire at a staggered support, as a
-// multiple of the wire's axial stiffness EA/h of its shortest element (h): its stretch
-// under the wire tension is 1 % of one element's.
+// Stiffness of the spring that joins the two nodes of a wire at a staggered support (and a
+// stitch wire's end to its messenger node), as a multiple of the wire's axial stiffness
+// EA/h of its shortest element (h): its stretch under the wire tension is 1 % of one
+// element's.
 inline constexpr double kJointStiffnessFactor = 100.0;
 
 // The same for the hinges that join a cable dropper's end nodes to the wires, as a
@@ -100,6 +111,10 @@ inline constexpr double kDropperHingeStiffnessFactor = 1.0e4;
 // Not collective. The contact wire's design height at distance s from the start of a span
 // of length L: the pre-sag parabola −4·presag·(s/L)·(1 − s/L), 0 at the supports.
 double design_height(double presag, double s, double span_length);
+
+// Not collective. The number of elements between two stations `gap` apart: the fewest no
+// longer than h.
+int elements_in_gap(double gap, double h);
 
 // Not collective. Adds the catenary to build.model (see the file comment). `entry` is the
 // scene's `catenary` map, which messages about the generated nodes and elements point at.

@@ -20,15 +20,21 @@ constexpr std::int64_t kDefaultRunOutSpans = 2;
 
 const std::vector<std::string>& catenary_keys() {
   static const std::vector<std::string> keys{
-      "dimension", "spans",       "span_length",        "span_lengths",    "system_height",
-      "presag",    "stagger",     "element_length",     "contact_wire",    "messenger",
-      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans", "run_out_spans"};
+      "dimension", "spans",       "span_length",        "span_lengths",     "system_height",
+      "presag",    "stagger",     "element_length",     "contact_wire",     "messenger",
+      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans", "run_out_spans",
+      "stitch"};
   return keys;
 }
 
-WireDesign read_wire(const Field& wire, const char* what) {
-  wire.expect_map(what);
-  wire.check_keys({"EA", "EI", "mass_per_length", "tension", "damping_time", "rayleigh"});
+const std::vector<std::string>& wire_keys() {
+  static const std::vector<std::string> keys{"EA",      "EI",           "mass_per_length",
+                                             "tension", "damping_time", "rayleigh"};
+  return keys;
+}
+
+// A wire's section, tension and damping from a map already checked for its keys.
+WireDesign read_wire_values(const Field& wire) {
   WireDesign w;
   w.EA = wire.child("EA").real(RealRange::positive("N"));
   w.EI = wire.child("EI").real(RealRange::positive("N*m^2"));
@@ -40,6 +46,46 @@ WireDesign read_wire(const Field& wire, const char* what) {
   return w;
 }
 
+WireDesign read_wire(const Field& wire, const char* what) {
+  wire.expect_map(what);
+  wire.check_keys(wire_keys());
+  return read_wire_values(wire);
+}
+
+// The longest stitch accepted (exclusive): each clamp, length/2 from its support, must lie
+// inside the adjacent span, and the two stitch wires of a span between two intermediate
+// supports must not meet.
+double longest_stitch(const std::vector<double>& spans) {
+  double longest = std::min(2.0 * spans.front(), 2.0 * spans.back());
+  for (std::size_t span = 1; span + 1 < spans.size(); ++span)
+    longest = std::min(longest, spans[span]);
+  return longest;
+}
+
+StitchDesign read_stitch(const Field& stitch, const std::vector<double>& spans) {
+  stitch.expect_map(
+      "the stitch wires {length, EA, EI, mass_per_length, tension} (one at every "
+      "intermediate support)");
+  std::vector<std::string> keys = wire_keys();
+  keys.emplace_back("length");
+  stitch.check_keys(keys);
+  if (spans.size() < 2)
+    stitch.fail(
+        "stitch wires hang at the intermediate supports, and a single span has none; "
+        "remove the key or give two spans or more");
+  StitchDesign s;
+  const Field length = stitch.child("length");
+  s.length = length.real(RealRange::positive("m"));
+  const double longest = longest_stitch(spans);
+  if (!(s.length < longest))
+    length.fail("a stitch wire of " + format_number(s.length) + " m does not fit: expected < " +
+                format_number(longest) +
+                " m, so that each clamp (length/2 from its support) lies inside the adjacent "
+                "span and the stitch wires at the two ends of a span do not meet");
+  s.wire = read_wire_values(stitch);
+  return s;
+}
+
 // `spans: auto`: the spans up to the one holding the farthest point a pantograph reaches,
 // plus `run_out_spans` more (default 2), so that the far anchor and the reflections from it
 // stay away from the last contact point.
@@ -48,8 +94,8 @@ std::vector<double> auto_span_lengths(const Field& c, const Field& scene,
   const Field spans = c.child("spans");
   const Field span_length = c.child("span_length");
   if (c.child("span_lengths").present())
-    c.child("span_lengths").fail(
-        "give either 'span_lengths' (a list) or 'spans: auto' with 'span_length', not both");
+    c.child("span_lengths")
+        .fail("give either 'span_lengths' (a list) or 'spans: auto' with 'span_length', not both");
   if (!span_length.present())
     spans.fail("'auto' needs 'span_length' (m): the run's reach is cut into spans of that length");
   const double length = span_length.real(RealRange::positive("m"));
@@ -78,8 +124,9 @@ std::vector<double> read_span_lengths(const Field& c, const Field& scene,
   const Field run_out = c.child("run_out_spans");
   const bool automatic = spans.present() && spans.is_scalar() && spans.text() == "auto";
   if (run_out.present() && !automatic)
-    run_out.fail("'run_out_spans' goes with 'spans: auto' (the spans added after the run's "
-                 "reach); with a span count or 'span_lengths' remove it");
+    run_out.fail(
+        "'run_out_spans' goes with 'spans: auto' (the spans added after the run's "
+        "reach); with a span count or 'span_lengths' remove it");
   if (automatic) return auto_span_lengths(c, scene, why);
   const Field span_length = c.child("span_length");
   const Field span_lengths = c.child("span_lengths");
@@ -255,10 +302,6 @@ std::pair<int, int> read_evaluation_spans(const Field& field, int n_spans) {
 void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build) {
   if (!catenary.present()) return;
   catenary.expect_map("a catenary (a map of design data, see docs/scene.md)");
-  if (const Field stitch = catenary.child("stitch"); stitch.present())
-    stitch.fail(
-        "stitch wires are not modelled (the builder makes a simple catenary: "
-        "contact wire, messenger, droppers); remove the key");
   catenary.check_keys(catenary_keys());
 
   const Vec3 g = build.model.gravity;
@@ -303,6 +346,8 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   if (has_intermediate_supports || arms.present()) d.steady_arms = read_steady_arms(arms);
   if (has_intermediate_supports || messenger_supports.present())
     d.messenger_supports = read_messenger_supports(messenger_supports);
+  if (const Field stitch = catenary.child("stitch"); stitch.present())
+    d.stitch = read_stitch(stitch, d.span_lengths);
   if (const Field spans = catenary.child("evaluation_spans"); spans.present())
     d.evaluation_spans = read_evaluation_spans(spans, static_cast<int>(d.span_lengths.size()));
 

@@ -76,6 +76,27 @@ std::string spans_text(const std::vector<double>& spans) {
   return cat(text, " m");
 }
 
+// The stitch wires: how many, their length between clamps, the droppers they carry, their
+// cables (all of them, one section) and how they are attached.
+std::string stitch_text(const Model& m, const CatenaryLayout& c) {
+  CatenaryWire all{"stitch_wires", {}, c.stitch_wires.front().wire.tension};
+  std::vector<double> lengths;
+  for (const CatenaryStitch& s : c.stitch_wires) {
+    all.elements.insert(all.elements.end(), s.wire.elements.begin(), s.wire.elements.end());
+    lengths.push_back((m.nodes[static_cast<std::size_t>(s.clamp_nodes[1])].position -
+                       m.nodes[static_cast<std::size_t>(s.clamp_nodes[0])].position)
+                          .norm());
+  }
+  const auto carried = std::count_if(c.droppers.begin(), c.droppers.end(),
+                                     [](const CatenaryDropper& d) { return d.stitch >= 0; });
+  return cat(std::to_string(c.stitch_wires.size()), " (one per intermediate support), ",
+             range_text(lengths, "m"), " between the clamps, carrying ",
+             plural(static_cast<long long>(carried), "dropper"),
+             ", ends hinged to the "
+             "messenger (springs, set stitch_joints); ",
+             wire_text(m, all));
+}
+
 struct Messenger {
   int n_fixed = 0;  // intermediate supports held in z
   std::vector<double> stiffness, damping;
@@ -125,21 +146,23 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   const std::size_t n_spans = c.support_x.size() - 1;
   std::vector<double> spans;
   for (std::size_t j = 0; j < n_spans; ++j) spans.push_back(c.support_x[j + 1] - c.support_x[j]);
-  t.row("catenary", cat(std::to_string(c.dimension), "D simple catenary, ",
-                        plural(static_cast<long long>(n_spans), "span"), " over ",
-                        format_number(c.support_x.back()), " m, ",
-                        plural(static_cast<long long>(c.droppers.size()), "dropper"), ", ",
-                        plural(static_cast<long long>(c.registrations.size()), "steady arm"),
-                        "; stitch wires are not modelled"));
+  t.row("catenary",
+        cat(std::to_string(c.dimension), "D simple catenary, ",
+            plural(static_cast<long long>(n_spans), "span"), " over ",
+            format_number(c.support_x.back()), " m, ",
+            plural(static_cast<long long>(c.droppers.size()), "dropper"), ", ",
+            plural(static_cast<long long>(c.registrations.size()), "steady arm"), ", ",
+            c.stitch_wires.empty()
+                ? std::string("no stitch wires")
+                : plural(static_cast<long long>(c.stitch_wires.size()), "stitch wire")));
   double stagger = 0.0;
   for (const int n : m.registration_nodes)
     stagger = std::max(stagger, std::abs(m.nodes[static_cast<std::size_t>(n)].position.y()));
   if (c.auto_spans) {
     const AutoSpanCount& a = *c.auto_spans;
     t.row("span count",
-          cat("auto: pantograph '", a.pantograph, "' reaches ", format_number(a.reach),
-              " m in ", format_number(a.duration), " s, + ",
-              plural(a.run_out_spans, "run-out span")),
+          cat("auto: pantograph '", a.pantograph, "' reaches ", format_number(a.reach), " m in ",
+              format_number(a.duration), " s, + ", plural(a.run_out_spans, "run-out span")),
           4);
   }
   t.row("spans",
@@ -149,6 +172,7 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
         4);
   t.row("contact wire", wire_text(m, c.contact_wire), 4);
   t.row("messenger", wire_text(m, c.messenger), 4);
+  if (!c.stitch_wires.empty()) t.row("stitch wires", stitch_text(m, c), 4);
 
   // Droppers, read back from their elements (bars or cable chains).
   bool all_tension_only = true, any_tension_only = false;
@@ -165,7 +189,7 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
       EA.push_back(p.EA);
     if (p.EI > 0.0) EI.push_back(p.EI);
     clamps.push_back(point_mass_at(m, d.contact_node));
-    clamps.push_back(point_mass_at(m, d.messenger_node));
+    clamps.push_back(point_mass_at(m, d.upper_node));
   }
   const bool cables = !EI.empty();
   const std::string behaviour =
@@ -221,7 +245,8 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   }
   t.row("anchors", "both wires pinned (x, y, z) at the first and last support", 4);
 
-  notes.left_out.push_back("stitch wires (not modelled)");
+  if (c.stitch_wires.empty() && !c.registrations.empty())
+    notes.left_out.push_back("stitch wires (catenary.stitch not given)");
   notes.left_out.push_back(
       "anchor spans and balance weights: the wire ends are pinned, their tensions set "
       "through the prestrain");

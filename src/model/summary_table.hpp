@@ -48,8 +48,8 @@ struct SummaryNotes {
 };
 
 // Not collective. Rows describing model.catenary (which must be set): spans, dimension,
-// element length, wires, droppers, clamp masses, steady arms, messenger supports,
-// damping; and its left-out items.
+// element length, wires, stitch wires, droppers, clamp masses, steady arms, messenger
+// supports, damping; and its left-out items.
 void describe_catenary(const Model& model, SummaryTable& table, SummaryNotes& notes);
 
 // Not collective. Rows for the moving loads and pantographs (path, speed, forces, stages,

@@ -14,19 +14,30 @@ namespace {
 constexpr unsigned kFixPosition = 0b111u;  // x, y, z
 constexpr int kMaxTensionSolves = 8;
 
-// One wire of the catenary as a model of its own: its cables and the joints between its
-// nodes, with the supports, elastic supports, point masses and nodal loads on those
-// nodes (not the steady-arm preloads: they are what shape finding sizes).
-struct WirePart {
-  model::Model model;
-  std::vector<int> part_node;  // per model node: its index in the part, −1 if absent
-  std::vector<int> cables;     // the wire's cable elements, indices in the part
-  double EA = 0.0;             // N, of the wire's section
+// A wire of a part: its cable elements (indices in the part), section and design tension.
+struct PartWire {
+  std::vector<int> cables;
+  double EA = 0.0;         // N
+  double tension = 0.0;    // N
+  bool ends_move = false;  // a stitch wire: its sag strain is measured (sag_strain)
 };
 
-WirePart extract_wire(const model::Model& m, const model::CatenaryWire& wire) {
+// Wires of the catenary as a model of their own: their cables and the joints between their
+// nodes (staggered supports, stitch-wire ends), with the supports, elastic supports, point
+// masses and nodal loads on those nodes (not the steady-arm preloads: they are what shape
+// finding sizes).
+struct WirePart {
+  model::Model model;
+  std::vector<int> part_node;   // per model node: its index in the part, −1 if absent
+  std::vector<PartWire> wires;  // in the order extracted
+};
+
+// `stitch_from`: the wires from this position on are stitch wires.
+WirePart extract_wires(const model::Model& m, const std::vector<const model::CatenaryWire*>& wires,
+                       std::size_t stitch_from) {
   WirePart part;
-  part.model.name = m.name + " (" + wire.name + " alone)";
+  part.model.name = m.name + " (" + wires.front()->name +
+                    (wires.size() > 1 ? " with the stitch wires" : "") + " alone)";
   part.model.gravity = m.gravity;
   part.model.static_options = m.static_options;
   part.part_node.assign(m.nodes.size(), -1);
@@ -40,13 +51,22 @@ WirePart extract_wire(const model::Model& m, const model::CatenaryWire& wire) {
     for (int& node : element.nodes) node = part.part_node[static_cast<std::size_t>(node)];
     return element;
   };
-  for (const int e : wire.elements)
-    for (const int node : m.elements[static_cast<std::size_t>(e)].nodes) add_node(node);
-  for (const int e : wire.elements) {
-    part.cables.push_back(static_cast<int>(part.model.elements.size()));
-    part.model.elements.push_back(remap(m.elements[static_cast<std::size_t>(e)]));
+  for (const model::CatenaryWire* wire : wires)
+    for (const int e : wire->elements)
+      for (const int node : m.elements[static_cast<std::size_t>(e)].nodes) add_node(node);
+  for (const model::CatenaryWire* wire : wires) {
+    PartWire w;
+    w.tension = wire->tension;
+    w.ends_move = part.wires.size() >= stitch_from;
+    for (const int e : wire->elements) {
+      w.cables.push_back(static_cast<int>(part.model.elements.size()));
+      part.model.elements.push_back(remap(m.elements[static_cast<std::size_t>(e)]));
+    }
+    w.EA = std::get<model::CableProps>(
+               part.model.elements[static_cast<std::size_t>(w.cables.front())].props)
+               .EA;
+    part.wires.push_back(std::move(w));
   }
-  part.EA = std::get<model::CableProps>(part.model.elements.front().props).EA;
   const auto in_part = [&](int node) {
     return part.part_node[static_cast<std::size_t>(node)] >= 0;
   };
@@ -81,25 +101,39 @@ WirePart extract_wire(const model::Model& m, const model::CatenaryWire& wire) {
   return part;
 }
 
-void set_prestrain(WirePart& part, double prestrain) {
-  for (const int e : part.cables)
+void set_prestrain(WirePart& part, const PartWire& wire, double prestrain) {
+  for (const int e : wire.cables)
     std::get<model::CableProps>(part.model.elements[static_cast<std::size_t>(e)].props).prestrain =
         prestrain;
 }
 
-// Solves the part, correcting the wire's prestrain until its mean axial force is
-// `tension` within tension_rtol (at most kMaxTensionSolves solves).
-StaticSnapshot solve_at_tension(MPI_Comm comm, WirePart& part, double tension, double tension_rtol,
-                                int& n_solves) {
-  double prestrain = tension / part.EA;
+double prestrain_of(const WirePart& part, const PartWire& wire) {
+  return std::get<model::CableProps>(
+             part.model.elements[static_cast<std::size_t>(wire.cables.front())].props)
+      .prestrain;
+}
+
+// Solves the part, correcting each wire's prestrain until its mean axial force is its
+// tension within tension_rtol (at most kMaxTensionSolves solves). Only the wires that are
+// off are corrected, as in the whole-structure iteration.
+StaticSnapshot solve_at_tension(MPI_Comm comm, WirePart& part, double tension_rtol, int& n_solves) {
+  for (const PartWire& w : part.wires) set_prestrain(part, w, w.tension / w.EA);
   for (int k = 0;; ++k) {
-    set_prestrain(part, prestrain);
     StaticSnapshot snapshot = solve_static_snapshot(comm, part.model);
     ++n_solves;
-    const double mean = mean_axial_force(part.model, snapshot, part.cables);
-    if (std::abs(mean - tension) <= tension_rtol * tension || k + 1 == kMaxTensionSolves)
-      return snapshot;
-    prestrain = corrected_prestrain(prestrain, mean, tension, part.EA);
+    bool converged = true;
+    std::vector<double> next;
+    for (const PartWire& w : part.wires) {
+      const double mean = mean_axial_force(part.model, snapshot, w.cables);
+      const double prestrain = prestrain_of(part, w);
+      const bool off = std::abs(mean - w.tension) > tension_rtol * w.tension;
+      converged = converged && !off;
+      const double sag =
+          w.ends_move ? sag_strain(part.model, snapshot, w.cables) : mean / w.EA - prestrain;
+      next.push_back(off ? corrected_prestrain(prestrain, mean, w.tension, w.EA, sag) : prestrain);
+    }
+    if (converged || k + 1 == kMaxTensionSolves) return snapshot;
+    for (std::size_t i = 0; i < part.wires.size(); ++i) set_prestrain(part, part.wires[i], next[i]);
   }
 }
 
@@ -136,7 +170,7 @@ void place_on_design_polyline(const model::Model& m, const std::vector<int>& ord
   }
   // A node's tangent is the mean direction of its cables (kinks only at held nodes).
   for (model::Node& node : part.model.nodes) node.tangent = Vec3::Zero();
-  for (const int e : part.cables) {
+  for (const int e : part.wires.front().cables) {
     const model::ElementDesc& element = part.model.elements[static_cast<std::size_t>(e)];
     model::Node& a = part.model.nodes[static_cast<std::size_t>(element.nodes[0])];
     model::Node& b = part.model.nodes[static_cast<std::size_t>(element.nodes[1])];
@@ -160,17 +194,38 @@ void hold_position(WirePart& part, int node) {
 
 }  // namespace
 
-double corrected_prestrain(double prestrain, double mean_force, double tension, double EA) {
-  const double sag_strain = std::max(mean_force / EA - prestrain, 0.0);
-  const double slope = EA / (1.0 + 2.0 * EA * sag_strain / std::max(mean_force, 1e-12 * EA));
+double corrected_prestrain(double prestrain, double mean_force, double tension, double EA,
+                           double sag_strain) {
+  const double sag = std::max(sag_strain, 0.0);
+  const double slope = EA / (1.0 + 2.0 * EA * sag / std::max(mean_force, 1e-12 * EA));
   return prestrain + (tension - mean_force) / slope;
+}
+
+double corrected_prestrain(double prestrain, double mean_force, double tension, double EA) {
+  return corrected_prestrain(prestrain, mean_force, tension, EA, mean_force / EA - prestrain);
+}
+
+double sag_strain(const model::Model& model, const StaticSnapshot& snapshot,
+                  const std::vector<int>& cables) {
+  double deformed = 0.0, reference = 0.0;
+  const auto node = [&](int e, std::size_t k) {
+    return static_cast<std::size_t>(model.elements[static_cast<std::size_t>(e)].nodes[k]);
+  };
+  for (const int e : cables) {
+    deformed += (snapshot.positions[node(e, 1)] - snapshot.positions[node(e, 0)]).norm();
+    reference += (model.nodes[node(e, 1)].position - model.nodes[node(e, 0)].position).norm();
+  }
+  const double chord =
+      (snapshot.positions[node(cables.back(), 1)] - snapshot.positions[node(cables.front(), 0)])
+          .norm();
+  return (deformed - chord) / reference;
 }
 
 ContactWireLoads solve_contact_wire_held(MPI_Comm comm, const model::Model& model,
                                          const std::vector<double>& dropper_weight,
                                          double tension_rtol) {
   const model::CatenaryLayout& layout = *model.catenary;
-  WirePart part = extract_wire(model, layout.contact_wire);
+  WirePart part = extract_wires(model, {&layout.contact_wire}, 1);
   const std::vector<int> order = nodes_in_order(model, layout.contact_wire.elements);
   std::map<int, double> key{
       {order.front(), model.nodes[static_cast<std::size_t>(order.front())].position.z()},
@@ -190,8 +245,7 @@ ContactWireLoads solve_contact_wire_held(MPI_Comm comm, const model::Model& mode
     if (r.load >= 0) hold_position(part, part.part_node[static_cast<std::size_t>(r.node)]);
 
   ContactWireLoads loads;
-  const StaticSnapshot snapshot =
-      solve_at_tension(comm, part, layout.contact_wire.tension, tension_rtol, loads.n_solves);
+  const StaticSnapshot snapshot = solve_at_tension(comm, part, tension_rtol, loads.n_solves);
   const auto upward_reaction = [&](int model_node) {
     return snapshot
         .reactions[static_cast<std::size_t>(part.part_node[static_cast<std::size_t>(model_node)])]
@@ -209,21 +263,22 @@ MessengerShape solve_messenger_loaded(MPI_Comm comm, const model::Model& model,
                                       const std::vector<double>& dropper_weight,
                                       double tension_rtol) {
   const model::CatenaryLayout& layout = *model.catenary;
-  WirePart part = extract_wire(model, layout.messenger);
+  std::vector<const model::CatenaryWire*> wires{&layout.messenger};
+  for (const model::CatenaryStitch& stitch : layout.stitch_wires) wires.push_back(&stitch.wire);
+  WirePart part = extract_wires(model, wires, 1);
   for (std::size_t i = 0; i < layout.droppers.size(); ++i) {
-    const int node = part.part_node[static_cast<std::size_t>(layout.droppers[i].messenger_node)];
+    const int node = part.part_node[static_cast<std::size_t>(layout.droppers[i].upper_node)];
     part.model.nodal_loads.push_back(
         model::NodalLoad{node, Vec3(0.0, 0.0, -(dropper_force[i] + dropper_weight[i]))});
   }
   MessengerShape shape;
-  const StaticSnapshot snapshot =
-      solve_at_tension(comm, part, layout.messenger.tension, tension_rtol, shape.n_solves);
+  const StaticSnapshot snapshot = solve_at_tension(comm, part, tension_rtol, shape.n_solves);
   for (const model::CatenaryDropper& d : layout.droppers)
     shape.dropper_top.push_back(snapshot.positions[static_cast<std::size_t>(
-        part.part_node[static_cast<std::size_t>(d.messenger_node)])]);
-  shape.prestrain = std::get<model::CableProps>(
-                        part.model.elements[static_cast<std::size_t>(part.cables.front())].props)
-                        .prestrain;
+        part.part_node[static_cast<std::size_t>(d.upper_node)])]);
+  shape.prestrain = prestrain_of(part, part.wires.front());
+  for (std::size_t k = 1; k < part.wires.size(); ++k)
+    shape.stitch_prestrains.push_back(prestrain_of(part, part.wires[k]));
   return shape;
 }
 

@@ -22,6 +22,7 @@ struct Unknowns {
   std::vector<double> preloads;  // N, per registration (0 where not held)
   double contact_prestrain = 0.0;
   double messenger_prestrain = 0.0;
+  std::vector<double> stitch_prestrains;  // per stitch wire
 };
 
 void set_wire_prestrain(model::Model& m, const model::CatenaryWire& wire, double prestrain) {
@@ -61,6 +62,8 @@ void apply(const Unknowns& u, model::Model& m) {
   }
   set_wire_prestrain(m, layout.contact_wire, u.contact_prestrain);
   set_wire_prestrain(m, layout.messenger, u.messenger_prestrain);
+  for (std::size_t k = 0; k < layout.stitch_wires.size(); ++k)
+    set_wire_prestrain(m, layout.stitch_wires[k].wire, u.stitch_prestrains[k]);
 }
 
 double wire_EA(const model::Model& m, const model::CatenaryWire& wire) {
@@ -147,18 +150,20 @@ Unknowns estimate_once(MPI_Comm comm, const model::Model& m, const ShapeFindingO
     const double length =
         d.stiffness > 0.0 ? gap - force / d.stiffness : gap / (1.0 + force / dropper_EA(m, d, gap));
     if (!(length > 0.0) || messenger.dropper_top[i].z() <= d.design_z)
-      throw NumericalError(
-          "shape finding: " + describe_dropper(m, i) +
-          " would need a non-positive length: the messenger, loaded by the contact wire, "
-          "hangs to z = " +
-          std::to_string(messenger.dropper_top[i].z()) +
-          " m, at or below the contact wire's design height " + std::to_string(d.design_z) +
-          " m. Raise catenary.system_height or the messenger's tension.");
+      throw NumericalError("shape finding: " + describe_dropper(m, i) +
+                           " would need a non-positive length: " +
+                           (d.stitch < 0 ? "the messenger" : "its stitch wire") +
+                           ", loaded by the contact wire, hangs to z = " +
+                           std::to_string(messenger.dropper_top[i].z()) +
+                           " m, at or below the contact wire's design height " +
+                           std::to_string(d.design_z) + " m. Raise catenary.system_height or the " +
+                           (d.stitch < 0 ? "messenger's tension." : "stitch wires' tension."));
     u.lengths.push_back(length);
   }
   u.preloads = loads.registration_force;
   u.contact_prestrain = layout.contact_wire.tension / wire_EA(m, layout.contact_wire);
   u.messenger_prestrain = messenger.prestrain;
+  u.stitch_prestrains = messenger.stitch_prestrains;
   return u;
 }
 
@@ -181,6 +186,7 @@ struct Errors {
   double max = 0.0;
   std::size_t worst = 0;  // dropper index of the largest dropper error
   double contact_tension = 0.0, messenger_tension = 0.0;
+  std::vector<double> stitch_tensions;  // N, mean axial force per stitch wire
 };
 
 Errors measure(const model::Model& m, const detail::StaticSnapshot& s) {
@@ -204,14 +210,22 @@ Errors measure(const model::Model& m, const detail::StaticSnapshot& s) {
   }
   e.contact_tension = detail::mean_axial_force(m, s, layout.contact_wire.elements);
   e.messenger_tension = detail::mean_axial_force(m, s, layout.messenger.elements);
+  for (const model::CatenaryStitch& stitch : layout.stitch_wires)
+    e.stitch_tensions.push_back(detail::mean_axial_force(m, s, stitch.wire.elements));
   return e;
 }
 
+bool tension_off(double mean, double tension, double rtol) {
+  return std::abs(mean - tension) > rtol * tension;
+}
+
 bool tensions_converged(const CatenaryLayout& layout, const Errors& e, double rtol) {
-  return std::abs(e.contact_tension - layout.contact_wire.tension) <=
-             rtol * layout.contact_wire.tension &&
-         std::abs(e.messenger_tension - layout.messenger.tension) <=
-             rtol * layout.messenger.tension;
+  bool converged = !tension_off(e.contact_tension, layout.contact_wire.tension, rtol) &&
+                   !tension_off(e.messenger_tension, layout.messenger.tension, rtol);
+  for (std::size_t k = 0; k < layout.stitch_wires.size(); ++k)
+    converged =
+        converged && !tension_off(e.stitch_tensions[k], layout.stitch_wires[k].wire.tension, rtol);
+  return converged;
 }
 
 // The iteration on `model`, which ends with the unknowns found applied to it.
@@ -247,11 +261,21 @@ ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
       char text[200];
       std::snprintf(text, sizeof text,
                     " is %.3g mm after %d iterations (tolerance %.3g mm); wire tensions "
-                    "%.6g N and %.6g N (design %.6g N and %.6g N).",
+                    "%.6g N and %.6g N (design %.6g N and %.6g N)",
                     1e3 * e.max, iteration, 1e3 * options.height_tolerance, e.contact_tension,
                     e.messenger_tension, layout.contact_wire.tension, layout.messenger.tension);
+      std::string stitch;
+      for (std::size_t k = 0; k < layout.stitch_wires.size(); ++k) {
+        char one[80];
+        std::snprintf(one, sizeof one, "%s%.6g N", k == 0 ? "; stitch wires " : ", ",
+                      e.stitch_tensions[k]);
+        stitch += one;
+      }
+      if (!layout.stitch_wires.empty())
+        stitch += " (design " + std::to_string(layout.stitch_wires.front().wire.tension) + " N)";
       throw NumericalError("shape finding did not converge: the largest height error (at " +
-                           describe_dropper(model, e.worst) + " or a registration)" + text);
+                           describe_dropper(model, e.worst) + " or a registration)" + text +
+                           stitch + ".");
     }
     if (iteration > 1 && e.max > previous_max) relaxation *= 0.5;
 
@@ -270,15 +294,21 @@ ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
                          e.registration[j];
     // Only a wire whose tension is off is corrected: a correction moves the messenger and
     // with it every dropper's error.
-    const auto off = [&](double mean, double tension) {
-      return std::abs(mean - tension) > options.tension_rtol * tension;
-    };
-    if (off(e.contact_tension, layout.contact_wire.tension))
+    const double rtol = options.tension_rtol;
+    if (tension_off(e.contact_tension, layout.contact_wire.tension, rtol))
       u.contact_prestrain = detail::corrected_prestrain(u.contact_prestrain, e.contact_tension,
                                                         layout.contact_wire.tension, EA_contact);
-    if (off(e.messenger_tension, layout.messenger.tension))
+    if (tension_off(e.messenger_tension, layout.messenger.tension, rtol))
       u.messenger_prestrain = detail::corrected_prestrain(
           u.messenger_prestrain, e.messenger_tension, layout.messenger.tension, EA_messenger);
+    // A stitch wire's sag strain is measured from its shape (catenary_subproblems.hpp).
+    for (std::size_t k = 0; k < layout.stitch_wires.size(); ++k) {
+      const model::CatenaryWire& wire = layout.stitch_wires[k].wire;
+      if (tension_off(e.stitch_tensions[k], wire.tension, rtol))
+        u.stitch_prestrains[k] = detail::corrected_prestrain(
+            u.stitch_prestrains[k], e.stitch_tensions[k], wire.tension, wire_EA(model, wire),
+            detail::sag_strain(model, snapshot, wire.elements));
+    }
   }
 
   found = u;
@@ -289,6 +319,7 @@ ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
   report.max_height_error = e.max;
   report.contact_wire_tension = e.contact_tension;
   report.messenger_tension = e.messenger_tension;
+  report.stitch_tensions = e.stitch_tensions;
   for (const model::CatenaryDropper& d : layout.droppers)
     report.dropper_forces.push_back(snapshot.axial_force[static_cast<std::size_t>(d.element)]);
   return report;

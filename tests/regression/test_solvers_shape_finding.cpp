@@ -2,7 +2,9 @@
 // catenary_3span.yaml): the found dropper lengths put the contact wire on its pre-sag
 // parabola within 1 mm in an independent static solve of the shaped model, the lengths are
 // positive and shorter than the system height, the wires carry their design tensions, and
-// the middle span's lengths agree with a hand computation (taut strings, below).
+// the middle span's lengths agree with a hand computation (taut strings, below). With
+// stitch wires (18 m, 2800 N) likewise, their tension included, and the stitch droppers'
+// lengths against a taut-string hand computation of the stitch wire.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -158,6 +160,107 @@ TEST(ShapeFinding, MiddleSpanAgreesWithATautStringHandComputation) {
   std::printf("  middle span: largest |l0 - hand computation| %.3f mm\n", 1e3 * worst);
 }
 
+// The stitch wires of test_model_catenary_builder.cpp: 18 m at x = 60 and 120 m, typical
+// Bz II 35 mm^2 data (meshes/stitched_catenary.yaml), each carrying the droppers at 5 m
+// either side of its support.
+const std::string stitch =
+    "catenary.stitch={length: 18, tension: 2800, EA: 3.5e6, EI: 11, mass_per_length: 0.31}";
+
+double mean_axial_force(const Shaped& s, const CatenaryWire& wire) {
+  double sum = 0.0, length = 0.0;
+  for (const int e : wire.elements) {
+    const std::vector<int>& n = s.model.elements[e].nodes;
+    const double l = (s.model.nodes[n[1]].position - s.model.nodes[n[0]].position).norm();
+    sum += s.statics.axial_force[e] * l;
+    length += l;
+  }
+  return sum / length;
+}
+
+TEST(ShapeFinding, StitchWiresReachTheDesignHeightsAndTheirTension) {
+  const Shaped s = shape({stitch});
+  const CatenaryLayout& c = *s.model.catenary;
+  EXPECT_LT(s.report.max_height_error, 1e-4);
+  EXPECT_LE(s.report.n_iterations, 10);
+  expect_design_heights(s, 1e-3);
+  ASSERT_EQ(s.report.stitch_tensions.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double independent = mean_axial_force(s, c.stitch_wires[k].wire);
+    std::printf("  stitch wire %zu: %.3f N (report), %.3f N (independent solve)\n", k + 1,
+                s.report.stitch_tensions[k], independent);
+    EXPECT_NEAR(s.report.stitch_tensions[k], 2800.0, 0.28);  // tension_rtol 1e-4
+    EXPECT_NEAR(independent, 2800.0, 0.28);
+  }
+  EXPECT_NEAR(s.report.messenger_tension, 16000.0, 1.6);
+  EXPECT_NEAR(s.report.contact_wire_tension, 20000.0, 2.0);
+  // Every dropper carries tension, the stitch droppers included.
+  for (const CatenaryDropper& d : c.droppers)
+    EXPECT_GT(s.statics.axial_force[d.element], 0.0)
+        << "x = " << s.model.nodes[d.contact_node].position.x();
+}
+
+// The stitch wire as a taut string: between its clamps (heights from the solve) it carries
+// its two droppers' forces plus their clamp masses and its own weight at horizontal
+// tension H ≈ T_s (its slopes are below 0.05, so H and the mean axial force differ by
+// 0.1 %), and sags below the chord by M(x)/H, M the moment of a simply supported beam of
+// the clamps' span; its bending (λ = √(EI/T_s) = 0.063 m) rounds the kink under a dropper
+// load F, which lifts the wire there by F λ/(2 H) (0.8 mm). The dropper's length is the
+// stitch's height there less the contact wire's design height less its stretch F/k. A stitch
+// dropper is about 0.3 m shorter than the same dropper hanging from the messenger: the stitch wire
+// dips below the messenger (which at the clamp is already lower than at the support) by F (a/2 − 4
+// m)/T_s.
+TEST(ShapeFinding, StitchDroppersAgreeWithATautStringHandComputation) {
+  // 0.25 m elements: the cable rounds the stitch wire's kink under a dropper over an
+  // element where its bending length is shorter (measured largest |l0 − hand computation|:
+  // 1.27 mm at 1 m, 0.51 mm at 0.5 m, 0.20 mm at 0.25 m, 0.12 mm at 0.1 m, 0.11 mm at
+  // 0.05 m; without the bending term F λ/(2H) below, 0.77 mm at 0.05 m).
+  const Shaped s = shape({stitch, "catenary.element_length=0.25"});
+  const Shaped bare = shape({"catenary.element_length=0.25"});
+  const CatenaryLayout& c = *s.model.catenary;
+  const double lambda = std::sqrt(11.0 / 2800.0);
+  const double g = 9.81, H = 2800.0, k_dropper = 1.0e5, clamp = 0.2 * g, w = 0.31 * g;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < c.stitch_wires.size(); ++k) {
+    const CatenaryStitch& wire = c.stitch_wires[k];
+    const Vec3 a = s.model.nodes[wire.clamp_nodes[0]].position;
+    const Vec3 b = s.model.nodes[wire.clamp_nodes[1]].position;
+    const double za = z_of(s.statics, wire.clamp_nodes[0]);
+    const double zb = z_of(s.statics, wire.clamp_nodes[1]);
+    const double L = b.x() - a.x();
+    std::vector<double> x, F;  // the carried droppers: distance from clamp a, load
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < c.droppers.size(); ++i) {
+      if (c.droppers[i].stitch != static_cast<int>(k)) continue;
+      index.push_back(i);
+      x.push_back(s.model.nodes[c.droppers[i].contact_node].position.x() - a.x());
+      F.push_back(s.statics.axial_force[c.droppers[i].element] + clamp);
+    }
+    ASSERT_EQ(x.size(), 2u);
+    double R_a = w * L / 2.0;
+    for (std::size_t j = 0; j < x.size(); ++j) R_a += F[j] * (L - x[j]) / L;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      double M = R_a * x[j] - w * x[j] * x[j] / 2.0;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        if (x[i] < x[j]) M -= F[i] * (x[j] - x[i]);
+      const double z_stitch = za + (zb - za) * x[j] / L - M / H + F[j] * lambda / (2.0 * H);
+      const CatenaryDropper& d = c.droppers[index[j]];
+      const double l0 = z_stitch - d.design_z - (F[j] - clamp) / k_dropper;
+      const double found = s.report.dropper_lengths[index[j]];
+      worst = std::max(worst, std::abs(found - l0));
+      EXPECT_NEAR(found, l0, 0.5e-3) << "dropper at x = " << a.x() + x[j];
+      EXPECT_LT(found, bare.report.dropper_lengths[index[j]] - 0.2) << "x = " << a.x() + x[j];
+    }
+  }
+  std::printf("  stitch droppers: largest |l0 - hand computation| %.3f mm\n", 1e3 * worst);
+}
+
+TEST(ShapeFinding, SpatialStaggeredCatenaryWithStitchWiresReachesTheDesignHeights) {
+  const Shaped s = shape({stitch, "catenary.dimension=3", "catenary.stagger=0.3"});
+  EXPECT_LT(s.report.max_height_error, 1e-4);
+  expect_design_heights(s, 1e-3);
+  for (const double t : s.report.stitch_tensions) EXPECT_NEAR(t, 2800.0, 0.28);
+}
+
 TEST(ShapeFinding, SpatialStaggeredCatenaryReachesTheDesignHeights) {
   const Shaped s = shape({"catenary.dimension=3", "catenary.stagger=0.3"});
   EXPECT_LT(s.report.max_height_error, 1e-4);
@@ -171,9 +274,9 @@ TEST(ShapeFinding, SpatialStaggeredCatenaryReachesTheDesignHeights) {
 // leaving them out, a pantograph standing in a span shortens that span's droppers).
 TEST(ShapeFinding, PantographsAndMovingLoadsDoNotChangeTheLengths) {
   const Shaped bare = shape();
-  const Shaped loaded = shape(
-      {"pantographs=[{name: p, path: contact_wire, speed: 0, start: 90, static_force: 300, "
-       "model: en50318}]"});
+  const Shaped loaded =
+      shape({"pantographs=[{name: p, path: contact_wire, speed: 0, start: 90, static_force: 300, "
+             "model: en50318}]"});
   ASSERT_EQ(bare.report.dropper_lengths.size(), loaded.report.dropper_lengths.size());
   for (std::size_t i = 0; i < bare.report.dropper_lengths.size(); ++i)
     EXPECT_NEAR(loaded.report.dropper_lengths[i], bare.report.dropper_lengths[i], 1e-9) << i;

@@ -14,7 +14,8 @@
 // On the three-span EN 50318 catenary (tests/data/good_scenes/catenary_3span.yaml, shaped
 // first): at nodes, the same uplift as two independent static solves (without and with a
 // nodal force); larger at mid-span than at the steady arm, plausible in size, linear in F
-// up to 100 N and not beyond, where tension-only droppers go slack.
+// up to 100 N and not beyond, where tension-only droppers go slack. With stitch wires the
+// same catenary is softer at the supports and its elasticity more uniform over the span.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,16 +151,18 @@ TEST(StaticElasticity, TimeDependentConstraintsStayPut) {
     EXPECT_NEAR(held.points[i].uplift / pinned.points[i].uplift, 1.0, 1e-8) << "x = " << x[i];
 }
 
+model::Model shape_catenary(const std::vector<std::string>& overrides) {
+  test::ensure_petsc();
+  const std::string scene =
+      (fs::path(CATENA_TEST_DATA) / "good_scenes" / "catenary_3span.yaml").string();
+  model::Model shaped = model::read_scene(scene, overrides);
+  solvers::find_catenary_shape(MPI_COMM_WORLD, shaped);
+  return shaped;
+}
+
 // The three-span catenary, shaped once for the tests below.
 const model::Model& shaped_catenary() {
-  static const model::Model m = [] {
-    test::ensure_petsc();
-    const std::string scene =
-        (fs::path(CATENA_TEST_DATA) / "good_scenes" / "catenary_3span.yaml").string();
-    model::Model shaped = model::read_scene(scene);
-    solvers::find_catenary_shape(MPI_COMM_WORLD, shaped);
-    return shaped;
-  }();
+  static const model::Model m = shape_catenary({});
   return m;
 }
 
@@ -172,8 +175,8 @@ int contact_node_at(const model::Model& m, double x) {
   return 0;
 }
 
-solvers::ElasticityReport catenary_elasticity(const std::vector<double>& positions, double F) {
-  const model::Model& m = shaped_catenary();
+solvers::ElasticityReport catenary_elasticity(const std::vector<double>& positions, double F,
+                                              const model::Model& m = shaped_catenary()) {
   solvers::ElasticityProbe probe;
   probe.path = m.catenary->contact_wire.elements;
   probe.positions = positions;
@@ -227,6 +230,48 @@ TEST(StaticElasticity, CatenaryMidSpanSofterThanSupportAndLinearForSmallForces) 
     EXPECT_NEAR(e[2][i] / e[0][i], 1.0, 0.01);
   }
   EXPECT_GT(e[3][0] / e[0][0], 1.1);
+}
+
+// A stitch wire (18 m, 2800 N, as in meshes/stitched_catenary.yaml) hangs the droppers
+// next to the support from a soft wire instead of from the messenger, which its support
+// holds: the contact wire there gives way more under an upward force, while mid-span, out
+// of the stitch wire's reach, hardly changes. So the elasticity at the steady arm rises and
+// the span's elasticity becomes more uniform (max/min falls) — the reason stitch wires are
+// fitted. Span 2 of the three-span catenary, a point every metre, 20 N (small enough that
+// no dropper slackens: linear to 1 % against 10 N at the steady arm, checked below).
+TEST(StaticElasticity, StitchWiresSoftenTheSupportsAndEvenTheSpan) {
+  const model::Model& bare = shaped_catenary();
+  const model::Model stitched = shape_catenary(
+      {"catenary.stitch={length: 18, tension: 2800, EA: 3.5e6, EI: 11, mass_per_length: 0.31}"});
+  std::vector<double> x;
+  for (int i = 0; i <= 60; ++i) x.push_back(60.0 + i);
+  const double F = 20.0;
+  struct Curve {
+    double support = 0.0, mid = 0.0, min = 1e9, max = 0.0;  // mm/N
+  };
+  const auto curve = [&](const model::Model& m) {
+    const solvers::ElasticityReport r = catenary_elasticity(x, F, m);
+    Curve c;
+    for (const solvers::ElasticityPoint& p : r.points) {
+      c.min = std::min(c.min, 1e3 * p.elasticity);
+      c.max = std::max(c.max, 1e3 * p.elasticity);
+    }
+    c.support = 1e3 * r.points.front().elasticity;
+    c.mid = 1e3 * r.points[30].elasticity;
+    return c;
+  };
+  const Curve without = curve(bare), with = curve(stitched);
+  for (const auto& [name, c] : {std::pair{"without", without}, std::pair{"with", with}})
+    std::printf(
+        "  %-7s stitch wires: steady arm %.4f, mid-span %.4f, min %.4f, max %.4f mm/N, "
+        "max/min %.3f, u %.3f\n",
+        name, c.support, c.mid, c.min, c.max, c.max / c.min, (c.max - c.min) / (c.max + c.min));
+  EXPECT_GT(with.support, 1.3 * without.support);
+  EXPECT_LT(with.max / with.min, 0.85 * without.max / without.min);
+  EXPECT_NEAR(with.mid / without.mid, 1.0, 0.1);
+  // 20 N measures the small-force value at the steady arm, where the stitch droppers are.
+  const double small = 1e3 * catenary_elasticity({60.0}, 10.0, stitched).points[0].elasticity;
+  EXPECT_NEAR(with.support / small, 1.0, 0.01);
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // The scene's `catenary` becomes nodes, cables, dropper bars, masses, supports, the
 // contact-wire path and Model::catenary: counts, dropper positions, element sizes, path
-// continuity, the 2D and 3D support schemes, the stagger joints, ids and the evaluation
-// range. The base scene is tests/data/good_scenes/catenary_3span.yaml, varied by --set;
-// malformed files are tests/data/bad_scenes/catenary_*.yaml (test_model_scene_errors).
+// continuity, the 2D and 3D support schemes, the stagger joints, ids, the evaluation
+// range and the stitch wires (nodes, which droppers they carry, clamps, hinges). The base scene is
+// tests/data/good_scenes/catenary_3span.yaml, varied by --set; malformed files are
+// tests/data/bad_scenes/catenary_*.yaml (test_model_scene_errors).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -101,7 +102,7 @@ TEST(CatenaryBuilder, DroppersHangFromTheMessengerAtTheirPositions) {
     const double s = offsets[i % droppers_per_span];
     EXPECT_EQ(d.span, span);
     const Vec3 bottom = m.nodes[d.contact_node].position;
-    const Vec3 top = m.nodes[d.messenger_node].position;
+    const Vec3 top = m.nodes[d.upper_node].position;
     EXPECT_NEAR(bottom.x(), 60.0 * span + s, 1e-12);
     EXPECT_NEAR(top.x(), bottom.x(), 1e-12);
     EXPECT_EQ(bottom.z(), 0.0);
@@ -116,8 +117,10 @@ TEST(CatenaryBuilder, DroppersHangFromTheMessengerAtTheirPositions) {
     EXPECT_EQ(props.unstretched_length, 0.0);  // the mesh length until shape finding
     EXPECT_DOUBLE_EQ(props.EA, 1.0e5 * 1.2);   // stiffness × that length
     EXPECT_EQ(bar.set, "droppers");
-    EXPECT_EQ(bar.nodes, (std::vector<int>{d.messenger_node, d.contact_node}));
+    EXPECT_EQ(bar.nodes, (std::vector<int>{d.upper_node, d.contact_node}));
+    EXPECT_EQ(d.stitch, -1);  // no stitch wires in the base scene
   }
+  EXPECT_TRUE(c.stitch_wires.empty());
 }
 
 TEST(CatenaryBuilder, WiresAreSplitIntoElementsOfAtMostTheElementLength) {
@@ -204,7 +207,7 @@ TEST(CatenaryBuilder, SpatialCatenaryWithStaggerJoinsTheSpansAtTheSupports) {
   EXPECT_EQ(n_joints, n_spans - 1);
   // Droppers stay vertical: both wires are staggered alike.
   for (const CatenaryDropper& d : c.droppers) {
-    const Vec3 gap = m.nodes[d.messenger_node].position - m.nodes[d.contact_node].position;
+    const Vec3 gap = m.nodes[d.upper_node].position - m.nodes[d.contact_node].position;
     EXPECT_NEAR((gap - Vec3(0, 0, 1.2)).norm(), 0.0, 1e-12);
   }
   EXPECT_EQ(m.catenary->dimension, 3);
@@ -266,6 +269,193 @@ TEST(CatenaryBuilder, NodesAndElementsNumberAfterTheScenesOwn) {
   EXPECT_EQ(m.catenary->contact_wire.elements.front(), 1);
 }
 
+// Stitch wires of 18 m at the two intermediate supports (x = 60, 120 m) of the base scene:
+// clamps at 51, 69, 111 and 129 m; the droppers at 55 m of spans 1 and 2 and at 5 m of
+// spans 2 and 3 lie between clamps.
+const std::string stitch =
+    "catenary.stitch={length: 18, tension: 2800, EA: 3.5e6, EI: 10, mass_per_length: 0.31}";
+const std::vector<double> clamp_x{51.0, 69.0, 111.0, 129.0};
+
+// The elements of a wire between stations, each gap cut into the fewest of <= 1 m.
+int elements_between(const std::vector<double>& stations) {
+  int n = 0;
+  for (std::size_t k = 1; k < stations.size(); ++k)
+    n += static_cast<int>(std::ceil(stations[k] - stations[k - 1] - 1e-12));
+  return n;
+}
+
+TEST(CatenaryBuilder, StitchWiresCarryTheDroppersBetweenTheirClamps) {
+  const Model m = read_scene(scene_file, {stitch});
+  const CatenaryLayout& c = *m.catenary;
+  ASSERT_EQ(c.stitch_wires.size(), 2u);
+  const int wire_elements = n_spans * elements_per_span;
+  // The messenger gets a station at each clamp: 1.5 + 4 m instead of 5.5 m around 51 m
+  // (and alike at the others); here that keeps its element count.
+  const int messenger_elements =
+      elements_between({0, 5, 10.5, 17, 23.5, 30, 36.5, 43, 49.5, 51, 55, 60}) +
+      elements_between({0, 5, 9, 10.5, 17, 23.5, 30, 36.5, 43, 49.5, 51, 55, 60}) +
+      elements_between({0, 5, 9, 10.5, 17, 23.5, 30, 36.5, 43, 49.5, 55, 60});
+  const int stitch_elements = elements_between({51, 55, 65, 69});  // clamps and droppers
+  EXPECT_EQ(c.messenger.elements.size(), static_cast<std::size_t>(messenger_elements));
+  EXPECT_EQ(m.nodes.size(), static_cast<std::size_t>(wire_elements + 1 + messenger_elements + 1 +
+                                                     2 * (stitch_elements + 1)));
+  EXPECT_EQ(count_kind(m, 0), wire_elements + messenger_elements + 2 * stitch_elements);
+  EXPECT_EQ(count_kind(m, 2), n_spans * droppers_per_span);  // the same droppers
+  EXPECT_EQ(count_kind(m, 3), 4);                            // a hinge at each stitch end
+
+  // Droppers strictly between the clamps hang from the stitch wire, the others from the
+  // messenger; every dropper stays vertical (2D: the stitch wire lies on the messenger).
+  std::vector<double> on_stitch;
+  for (const CatenaryDropper& d : c.droppers) {
+    const Vec3 bottom = m.nodes[d.contact_node].position;
+    const Vec3 top = m.nodes[d.upper_node].position;
+    EXPECT_NEAR((top - bottom - Vec3(0, 0, 1.2)).norm(), 0.0, 1e-12);
+    if (d.stitch < 0) continue;
+    on_stitch.push_back(bottom.x());
+    const CatenaryStitch& s = c.stitch_wires[d.stitch];
+    const double support = c.support_x[s.support];
+    EXPECT_LT(std::abs(bottom.x() - support), 9.0);
+    // The upper node is a node of that stitch wire's cables.
+    bool found = false;
+    for (const int e : s.wire.elements)
+      for (const int n : m.elements[e].nodes) found = found || n == d.upper_node;
+    EXPECT_TRUE(found) << "dropper at x = " << bottom.x();
+  }
+  EXPECT_EQ(on_stitch, (std::vector<double>{55, 65, 115, 125}));
+  EXPECT_EQ(c.droppers[8].stitch, 0);
+  EXPECT_EQ(c.droppers[9].stitch, 0);
+  EXPECT_EQ(c.droppers[17].stitch, 1);
+  EXPECT_EQ(c.droppers[18].stitch, 1);
+
+  for (std::size_t k = 0; k < c.stitch_wires.size(); ++k) {
+    const CatenaryStitch& s = c.stitch_wires[k];
+    EXPECT_EQ(s.support, static_cast<int>(k) + 1);
+    EXPECT_EQ(s.wire.tension, 2800.0);
+    EXPECT_EQ(s.wire.elements.size(), static_cast<std::size_t>(stitch_elements));
+    for (const int e : s.wire.elements) {
+      EXPECT_EQ(m.elements[e].set, "stitch_wires");
+      const CableProps& cable = std::get<CableProps>(m.elements[e].props);
+      EXPECT_DOUBLE_EQ(cable.prestrain, 2800.0 / 3.5e6);
+      EXPECT_EQ(cable.mass_per_length, 0.31);
+      EXPECT_LE(element_length(m, e), 1.0 + 1e-12);
+    }
+    // The clamps are messenger nodes at x_support -/+ 9 m; the stitch wire's end nodes
+    // coincide with them and are joined to them by springs.
+    const int first = m.elements[s.wire.elements.front()].nodes[0];
+    const int last = m.elements[s.wire.elements.back()].nodes[1];
+    EXPECT_EQ(m.nodes[s.clamp_nodes[0]].position, Vec3(clamp_x[2 * k], 0, 1.2));
+    EXPECT_EQ(m.nodes[s.clamp_nodes[1]].position, Vec3(clamp_x[2 * k + 1], 0, 1.2));
+    EXPECT_EQ(m.nodes[first].position, m.nodes[s.clamp_nodes[0]].position);
+    EXPECT_EQ(m.nodes[last].position, m.nodes[s.clamp_nodes[1]].position);
+    bool on_messenger = false;
+    for (const int e : c.messenger.elements)
+      on_messenger = on_messenger || m.elements[e].nodes[0] == s.clamp_nodes[0];
+    EXPECT_TRUE(on_messenger);
+    std::vector<std::vector<int>> joints;
+    for (const ElementDesc& e : m.elements)
+      if (e.set == "stitch_joints") joints.push_back(e.nodes);
+    EXPECT_NE(std::find(joints.begin(), joints.end(), std::vector<int>{s.clamp_nodes[0], first}),
+              joints.end());
+    EXPECT_NE(std::find(joints.begin(), joints.end(), std::vector<int>{last, s.clamp_nodes[1]}),
+              joints.end());
+    // 2D: every stitch node held out of plane, none held otherwise (not at the support).
+    for (const int e : s.wire.elements)
+      for (const int n : m.elements[e].nodes)
+        EXPECT_EQ(mask_of(m, n), fix_y | fix_slope_y) << "node " << m.nodes[n].id;
+  }
+  // Node ids: contact wire, messenger, then the stitch wires, each in x order.
+  const int first_stitch_node = m.elements[c.stitch_wires[0].wire.elements.front()].nodes[0];
+  EXPECT_EQ(first_stitch_node, wire_elements + 1 + messenger_elements + 1);
+  EXPECT_EQ(m.nodes[first_stitch_node].id, first_stitch_node + 1);
+}
+
+// 3D with stagger: the messenger kinks at the support, the stitch wire runs straight
+// between its clamps, which lie on the messenger's segments on either side; its droppers
+// are then slightly inclined (the contact wire follows the messenger's zig-zag).
+TEST(CatenaryBuilder, StaggeredStitchWireIsStraightBetweenClampsOnTheMessenger) {
+  const Model m = read_scene(scene_file, {stitch, "catenary.dimension=3", "catenary.stagger=0.3"});
+  const CatenaryLayout& c = *m.catenary;
+  ASSERT_EQ(c.stitch_wires.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const CatenaryStitch& s = c.stitch_wires[k];
+    // Messenger at the supports: +0.3 (x = 0), -0.3 (60), +0.3 (120), -0.3 (180), linear
+    // in between: 9 m from a support y is 0.3 - 0.6 * 9/60 = 0.21 from the centre line.
+    const double y = k == 0 ? -0.21 : 0.21;
+    for (const int clamp : s.clamp_nodes)
+      EXPECT_NEAR((m.nodes[clamp].position - Vec3(m.nodes[clamp].position.x(), y, 1.2)).norm(), 0.0,
+                  1e-12);
+    for (const int e : s.wire.elements)
+      for (const int n : m.elements[e].nodes) {
+        EXPECT_NEAR(m.nodes[n].position.y(), y, 1e-12);
+        EXPECT_EQ(mask_of(m, n), 0u);  // held by its hinges and its tension only
+      }
+  }
+  // The messenger supports still hold the messenger: its node at each intermediate
+  // support is held in y.
+  for (const double x : {60.0, 120.0}) {
+    bool held = false;
+    for (const int e : c.messenger.elements)
+      for (const int n : m.elements[e].nodes)
+        if (std::abs(m.nodes[n].position.x() - x) < 1e-9)
+          held = held || (mask_of(m, n) & fix_y) != 0u;
+    EXPECT_TRUE(held) << "support at x = " << x;
+  }
+  for (const CatenaryDropper& d : c.droppers) {
+    if (d.stitch < 0) continue;
+    EXPECT_NEAR(m.nodes[d.upper_node].position.x(), m.nodes[d.contact_node].position.x(), 1e-12);
+  }
+}
+
+// A dropper exactly on a clamp point hangs from the messenger (only droppers strictly
+// between the clamps hang from the stitch wire), and the messenger's station there is one.
+TEST(CatenaryBuilder, DropperOnAClampPointHangsFromTheMessenger) {
+  const Model m = read_scene(
+      scene_file,
+      {"catenary.stitch={length: 10, tension: 2800, EA: 3.5e6, EI: 10, mass_per_length: 0.31}"});
+  const CatenaryLayout& c = *m.catenary;
+  for (const CatenaryDropper& d : c.droppers) {
+    const double x = m.nodes[d.contact_node].position.x();
+    const bool on_clamp = std::abs(std::remainder(x, 60.0)) == 5.0;
+    if (on_clamp) {
+      EXPECT_EQ(d.stitch, -1) << "x = " << x;
+      EXPECT_EQ(m.nodes[d.upper_node].position, Vec3(x, 0, 1.2));
+    }
+  }
+  // No dropper strictly inside a 10 m stitch: the stitch wires carry none.
+  EXPECT_TRUE(std::all_of(c.droppers.begin(), c.droppers.end(),
+                          [](const CatenaryDropper& d) { return d.stitch < 0; }));
+  EXPECT_EQ(c.stitch_wires[0].clamp_nodes[0], c.droppers[8].upper_node);
+}
+
+// In the first and last span only one stitch wire reaches in, so there a clamp may be up
+// to the span length from its support: [20, 60] m accepts stitch wires shorter than 40 m.
+TEST(CatenaryBuilder, StitchLengthIsLimitedByTheSpansAround) {
+  const std::string scene = R"(
+catenary:
+  span_lengths: [20, 60]
+  system_height: 1.2
+  element_length: 1.0
+  contact_wire: {EA: 1.8e7, EI: 195, mass_per_length: 1.35, tension: 20000}
+  messenger: {EA: 1.2e7, EI: 131.7, mass_per_length: 1.07, tension: 16000}
+  droppers: {positions: [[0.25, 10], [5, 30]], stiffness: 1.0e5}
+  steady_arms: {stiffness: 300}
+  messenger_supports: {stiffness: 50000}
+  stitch: {length: 39, tension: 2800, EA: 3.5e6, EI: 10, mass_per_length: 0.31}
+)";
+  const Model m = parse_scene(scene, "short_first_span.yaml");
+  const CatenaryStitch& s = m.catenary->stitch_wires.at(0);
+  EXPECT_DOUBLE_EQ(m.nodes[s.clamp_nodes[0]].position.x(), 0.5);
+  EXPECT_DOUBLE_EQ(m.nodes[s.clamp_nodes[1]].position.x(), 39.5);
+  // The dropper at 0.25 m is outside the stitch, the ones at 10 m and 25 m inside it.
+  std::vector<int> stitch_of;
+  for (const CatenaryDropper& d : m.catenary->droppers) stitch_of.push_back(d.stitch);
+  EXPECT_EQ(stitch_of, (std::vector<int>{-1, 0, 0, -1}));
+  const std::string message = test::input_error_message(
+      [&] { parse_scene(scene, "short_first_span.yaml", {"catenary.stitch.length=40"}); });
+  EXPECT_NE(message.find("catenary.stitch.length"), std::string::npos) << message;
+  EXPECT_NE(message.find("40 m does not fit: expected < 40 m"), std::string::npos) << message;
+}
+
 TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
   const std::vector<test::InputErrorCase> cases{
       {{"catenary.droppers.EA=1e5"}, {"catenary.droppers", "both 'EA' and 'stiffness'"}},
@@ -284,7 +474,6 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
       {{"catenary.messenger_supports={fixed: true, stiffness: 5}"},
        {"catenary.messenger_supports.stiffness", "a fixed messenger support has no stiffness"}},
       {{"catenary.evaluation_spans=[3, 2]"}, {"catenary.evaluation_spans[1]", "comes before"}},
-      {{"catenary.stitch=true"}, {"catenary.stitch", "stitch wires are not modelled"}},
       {{"catenary.droppers.spacing=5"}, {"catenary.droppers.spacing", "unknown key"}},
       {{"catenary.droppers.model=rope"}, {"catenary.droppers.model", "accepted: bar"}},
       {{"catenary.droppers.EI=0.02"}, {"catenary.droppers.EI", "cable droppers only"}},
@@ -297,9 +486,24 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
         "catenary.droppers.mass_per_length=0.1", "catenary.droppers.elements=0"},
        {"catenary.droppers.elements", "in [1, 100]"}},
       {{"gravity=[0, -9.81, 0]"}, {"catenary", "gravity must point along -z"}},
+      // Stitch wires: every key, with the stitch of the tests above as the base.
+      {{"catenary.stitch=true"}, {"catenary.stitch", "expected the stitch wires {length"}},
+      {{stitch, "catenary.stitch.length=0"}, {"catenary.stitch.length", "> 0 [m]"}},
+      {{stitch, "catenary.stitch.length=60"},
+       {"catenary.stitch.length", "60 m does not fit: expected < 60 m", "adjacent span"}},
+      {{stitch, "catenary.spans=1"}, {"catenary.stitch", "a single span has none"}},
+      {{stitch, "catenary.stitch.length="}, {"catenary.stitch.length", "no value given"}},
+      {{stitch, "catenary.stitch.tension=0"}, {"catenary.stitch.tension", "> 0 [N]"}},
+      {{stitch, "catenary.stitch.EA=-3"}, {"catenary.stitch.EA", "> 0 [N]"}},
+      {{stitch, "catenary.stitch.EI=0"}, {"catenary.stitch.EI", "> 0 [N*m^2]"}},
+      {{stitch, "catenary.stitch.mass_per_length=0"},
+       {"catenary.stitch.mass_per_length", "> 0 [kg/m]"}},
+      {{stitch, "catenary.stitch.damping_time=-1"}, {"catenary.stitch.damping_time", ">= 0 [s]"}},
+      {{stitch, "catenary.stitch.rayleigh={alpha: 1}"}, {"catenary.stitch.rayleigh"}},
+      {{stitch, "catenary.stitch.lenght=18"}, {"catenary.stitch.lenght", "unknown key"}},
   };
-  test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); },
-                            "catenary_3span.yaml", cases);
+  test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); }, "catenary_3span.yaml",
+                            cases);
 }
 
 // droppers.model: cable. Each dropper is a vertical chain of `elements` cable elements
@@ -325,7 +529,7 @@ TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
     ASSERT_EQ(d.elements.size(), static_cast<std::size_t>(per));
     EXPECT_EQ(d.element, d.elements.back());
     EXPECT_NEAR(d.mesh_length, 1.2, 1e-12);
-    const Vec3 top = m.nodes[d.messenger_node].position;
+    const Vec3 top = m.nodes[d.upper_node].position;
     const Vec3 bottom = m.nodes[d.contact_node].position;
     for (std::size_t j = 0; j < d.elements.size(); ++j) {
       const ElementDesc& e = m.elements[d.elements[j]];
@@ -351,7 +555,7 @@ TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
       if (e.set != "dropper_hinges") continue;
       const int top_end = m.elements[d.elements.front()].nodes[0];
       const int bottom_end = m.elements[d.elements.back()].nodes[1];
-      if ((e.nodes[0] == d.messenger_node && e.nodes[1] == top_end) ||
+      if ((e.nodes[0] == d.upper_node && e.nodes[1] == top_end) ||
           (e.nodes[0] == bottom_end && e.nodes[1] == d.contact_node)) {
         ++hinges;
         // Far stiffer than the dropper's elements (the hinge is in series with them).

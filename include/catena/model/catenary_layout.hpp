@@ -1,28 +1,31 @@
 #pragma once
 // What the catenary builder (scene key `catenary`, docs/catenary.md) put into a Model:
-// which elements are the contact wire, the messenger and the droppers, where the wire
-// must be (the design heights), and which values shape finding
-// (solvers/shape_finding.hpp) may change. Plain data; indices are 0-based positions in
-// the Model's vectors. Units SI; z is up (the builder requires gravity along −z).
+// which elements are the contact wire, the messenger, the stitch wires and the droppers
+// (and which wire each dropper hangs from), where the wire must be (the design heights),
+// and which values shape finding (solvers/shape_finding.hpp) may change. Plain data;
+// indices are 0-based positions in the Model's vectors. Units SI; z is up (the builder
+// requires gravity along −z).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace catena::model {
 
-// One dropper from the messenger down to the contact wire: a bar (BarProps), or a chain
-// of cable elements (CableProps, tension_only, prestrain_with_loads) hinged to the wires
-// at its own end nodes.
+// One dropper from the messenger, or from a stitch wire, down to the contact wire: a bar
+// (BarProps), or a chain of cable elements (CableProps, tension_only,
+// prestrain_with_loads) hinged to the wires at its own end nodes.
 struct CatenaryDropper {
   // Into Model::elements: the bar, or the lowest cable element (whose axial force is the
   // pull on the contact wire); `elements` lists all of them, top to bottom.
   int element = 0;
   std::vector<int> elements;
-  double mesh_length = 0.0;  // m, messenger node to contact-wire node in the reference
-  int contact_node = 0;    // its lower node, on the contact wire
-  int messenger_node = 0;  // its upper node, on the messenger
-  int span = 0;            // 0-based span number
-  double design_z = 0.0;   // m, the contact wire's design height at the dropper
+  double mesh_length = 0.0;  // m, upper node to contact-wire node in the reference
+  int contact_node = 0;      // its lower node, on the contact wire
+  int upper_node = 0;        // its upper node, on the messenger or on stitch wire `stitch`
+  int stitch = -1;           // into CatenaryLayout::stitch_wires; −1: hangs from the messenger
+  int span = 0;              // 0-based span number
+  double design_z = 0.0;     // m, the contact wire's design height at the dropper
   // N/m: when > 0 the dropper's stiffness EA/l0 is what the design fixes, so its EA is
   // set to stiffness × unstretched length whenever the length changes; 0: EA is fixed.
   double stiffness = 0.0;
@@ -41,17 +44,27 @@ struct CatenaryRegistration {
 // A wire of the tension section: its cable elements in x order and its design tension
 // (the axial force the balance weights keep; shape finding sets the prestrain to it).
 struct CatenaryWire {
-  std::string name;           // "contact_wire" or "messenger"
+  std::string name;           // "contact_wire", "messenger" or "stitch_wires" (its set)
   std::vector<int> elements;  // into Model::elements (CableProps), in x order
   double tension = 0.0;       // N
 };
 
+// A stitch wire (Y-stitch) at an intermediate support: a cable below the messenger from a
+// clamp in the span before the support to one in the span after it, each end hinged to a
+// messenger node by a stiff spring (set `stitch_joints`); it is not held at the support.
+// It carries the droppers strictly between its clamps.
+struct CatenaryStitch {
+  CatenaryWire wire;                 // its cables in x order, its installation tension
+  int support = 0;                   // into CatenaryLayout::support_x (an intermediate one)
+  std::array<int, 2> clamp_nodes{};  // the messenger nodes its ends are joined to, x order
+};
+
 // `spans: auto`: why the line has the spans it has (the scene gave no count).
 struct AutoSpanCount {
-  double reach = 0.0;       // m, the farthest point a pantograph reaches in the run
-  std::string pantograph;   // the one that reaches it
-  double duration = 0.0;    // s, the run's analysis.duration
-  int run_out_spans = 0;    // whole spans added beyond the span that holds `reach`
+  double reach = 0.0;      // m, the farthest point a pantograph reaches in the run
+  std::string pantograph;  // the one that reaches it
+  double duration = 0.0;   // s, the run's analysis.duration
+  int run_out_spans = 0;   // whole spans added beyond the span that holds `reach`
 };
 
 struct CatenaryLayout {
@@ -61,6 +74,7 @@ struct CatenaryLayout {
   double system_height = 0.0;           // m, messenger above contact wire at the supports
   CatenaryWire contact_wire;
   CatenaryWire messenger;
+  std::vector<CatenaryStitch> stitch_wires;         // in x order; empty without `stitch`
   std::vector<CatenaryDropper> droppers;            // in x order
   std::vector<CatenaryRegistration> registrations;  // intermediate supports, in x order
   std::optional<AutoSpanCount> auto_spans;          // set when the run chose the span count

@@ -16,14 +16,14 @@ int suggested_rank_count(const Model& model);
 
 // Not collective. Multi-line summary: node, element (per kind) and DOF (per node kind:
 // beam 12, cable 6, other 3) counts, fixed and free DOFs, supports, elastic supports,
-// loads, masses, the catenary (spans, dimension, element lengths, wires, droppers, clamp
-// masses, steady arms, messenger supports), moving loads and pantographs (path, speed,
-// forces, stages, contact, when each is on its path within the analysis), sets with their
-// element counts and prestrain/tension, analysis and output settings, and the suggested
-// rank count; then "Left out:" (what the model does not represent: stitch wires, anchor
-// spans, what the scene disables such as clamp masses or damping) and "warning: " lines
-// (a pantograph or load leaving its path before the analysis ends, an evaluation section
-// not traversed within the duration). `n_ranks_running` is the size of the communicator
+// loads, masses, the catenary (spans, dimension, element lengths, wires, stitch wires,
+// droppers, clamp masses, steady arms, messenger supports), moving loads and pantographs
+// (path, speed, forces, stages, contact, when each is on its path within the analysis),
+// sets with their element counts and prestrain/tension, analysis and output settings,
+// and the suggested rank count; then "Left out:" (what the model does not represent:
+// anchor spans, what the scene leaves out or disables such as stitch wires, clamp masses
+// or damping) and "warning: " lines (a pantograph or load leaving its path before the
+// analysis ends, an evaluation section not traversed within the duration). `n_ranks_running` is the size of the communicator
 // the check runs on, shown beside the suggestion (pass 1 if unknown).
 std::string describe(const Model& model, int n_ranks_running);
 

@@ -3,17 +3,20 @@
 // unstretched lengths that put the contact wire at its design heights (the pre-sag
 // parabola) in static equilibrium, together with the steady-arm preloads that hold the
 // registration points at their design height and the wire prestrains that give each
-// wire its design tension in that equilibrium. Method and references: docs/catenary.md.
+// wire (stitch wires included) its design tension in that equilibrium. Method and
+// references: docs/catenary.md.
 //
 //   1. estimate: the contact wire alone, held at its design heights at the droppers
 //      → dropper forces F_i (support reactions) and registration forces; the messenger
-//      alone under the F_i → its shape; l0_i = gap_i / (1 + F_i/EA_i) (or gap_i − F_i/k_i);
+//      (with its stitch wires) alone under the F_i → the droppers' upper ends;
+//      l0_i = gap_i / (1 + F_i/EA_i) (or gap_i − F_i/k_i);
 //   2. correct: solve the whole structure's statics and update each length by its height
 //      error e_i = z_i − z_design,i (l0_i += e_i, the fixed point the decoupled estimate
 //      suggests), each held registration's preload by P_j −= (k_arm + k_c,j/4) e_j
 //      (k_c,j = T_c (1/a_left + 1/a_right), the contact wire's local stiffness) and the
 //      prestrain of a wire whose mean axial force is off its tension by a Newton step;
-//      repeat until max |e| < height_tolerance and both tensions are within tension_rtol.
+//      repeat until max |e| < height_tolerance and every wire's tension is within
+//      tension_rtol.
 // Every static solve is StaticSolver from the reference configuration, so the results do
 // not depend on the previous iterate's state, only on the lengths, loads and prestrains.
 #include <mpi.h>
@@ -41,6 +44,7 @@ struct ShapeFindingReport {
   double max_height_error = 0.0;              // m, max |error| over droppers and held registrations
   double contact_wire_tension = 0.0;          // N, mean axial force at the equilibrium
   double messenger_tension = 0.0;             // N
+  std::vector<double> stitch_tensions;        // N, per model::CatenaryLayout::stitch_wires
   std::vector<double> error_history;          // m, max |error| after each whole-structure solve
   int n_iterations = 0;                       // whole-structure static solves
   int n_static_solves = 0;                    // all static solves, the estimate's included
