@@ -23,9 +23,9 @@ MatHandle compact_copy(Mat A) {
     const PetscInt* cols = nullptr;
     const PetscScalar* values = nullptr;
     CATENA_PETSC(MatGetRow(A, row, &n_cols, &cols, &values));
+    const auto local = static_cast<size_t>(row - row_lo);
     for (PetscInt k = 0; k < n_cols; ++k)
-      if (values[k] != 0.0)
-        ++(cols[k] >= col_lo && cols[k] < col_hi ? d_nnz : o_nnz)[static_cast<size_t>(row - row_lo)];
+      if (values[k] != 0.0) ++(cols[k] >= col_lo && cols[k] < col_hi ? d_nnz : o_nnz)[local];
     CATENA_PETSC(MatRestoreRow(A, row, &n_cols, &cols, &values));
   }
   MatHandle B;
