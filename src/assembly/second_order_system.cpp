@@ -137,6 +137,13 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     contacts_.push_back(std::move(lc));
   }
 
+  int damps = 0;
+  for (const Kernel& k : kernels_) damps |= k.element->has_damping() ? 1 : 0;
+  for (const model::MovingContact& c : model.contacts) damps |= c.damping != 0.0 ? 1 : 0;
+  int any = 0;
+  MPI_Allreduce(&damps, &any, 1, MPI_INT, MPI_LOR, comm);
+  has_damping_ = any != 0;
+
   q_work_ = create_vector();
   v_work_ = create_vector();
   f_work_ = create_vector();

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/algebraic_part.hpp"
@@ -25,7 +26,12 @@ struct HhtIntegrator::Impl {
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   VecHandle q1, v1, a1, f1, residual, error;
+  // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
+  VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
+  // M without its stored zeros, for the product M a1 of every residual (compact_matrix.hpp);
+  // `mass` keeps the full pattern the Newton matrix is built on.
+  MatHandle mass_product;
   MatHandle coupling;  // Gᵀ (constraints only)
   std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
@@ -35,15 +41,19 @@ struct HhtIntegrator::Impl {
   Impl(assembly::SecondOrderSystem& s, const HhtOptions& o)
       : system(s), options(o), beta(0.25 * (1 - o.alpha) * (1 - o.alpha)), gamma(0.5 - o.alpha) {}
 
+  // The a1-independent parts of the Newmark formulas for the step h from (q0, v0, a0):
+  // q_known = q0 + h v0 + h²(½ − β) a0,  v_known = v0 + h(1 − γ) a0. Computed once per
+  // attempt, so that each residual evaluation makes two vector passes, not seven.
+  void start_attempt() {
+    CATENA_PETSC(VecWAXPY(q_known.get(), h, v0.get(), q0.get()));
+    CATENA_PETSC(VecAXPY(q_known.get(), h * h * (0.5 - beta), a0.get()));
+    CATENA_PETSC(VecWAXPY(v_known.get(), h * (1 - gamma), a0.get(), v0.get()));
+  }
+
   // q1, v1 from a1 (Newmark); the multiplier slots of a1 hold λ1 itself.
   void kinematics(Vec a) {
-    CATENA_PETSC(VecCopy(q0.get(), q1.get()));
-    CATENA_PETSC(VecAXPY(q1.get(), h, v0.get()));
-    CATENA_PETSC(VecAXPY(q1.get(), h * h * (0.5 - beta), a0.get()));
-    CATENA_PETSC(VecAXPY(q1.get(), h * h * beta, a));
-    CATENA_PETSC(VecCopy(v0.get(), v1.get()));
-    CATENA_PETSC(VecAXPY(v1.get(), h * (1 - gamma), a0.get()));
-    CATENA_PETSC(VecAXPY(v1.get(), h * gamma, a));
+    CATENA_PETSC(VecWAXPY(q1.get(), h * h * beta, a, q_known.get()));
+    CATENA_PETSC(VecWAXPY(v1.get(), h * gamma, a, v_known.get()));
     algebraic->take_algebraic(q1.get(), a);
     algebraic->zero_algebraic(v1.get());
   }
@@ -54,26 +64,29 @@ struct HhtIntegrator::Impl {
   void residual_at(Vec a, Vec r) {
     kinematics(a);
     system.force({q1.get(), v1.get(), {}, t0 + h}, f1.get(), &scale1);
-    CATENA_PETSC(MatMult(mass.get(), a, r));
-    CATENA_PETSC(VecAXPY(r, 1.0 + options.alpha, f1.get()));
-    CATENA_PETSC(VecAXPY(r, -options.alpha, f0.get()));
+    CATENA_PETSC(MatMult(mass_product.get(), a, r));
+    CATENA_PETSC(VecAXPBYPCZ(r, 1.0 + options.alpha, -options.alpha, 1.0, f1.get(), f0.get()));
     if (algebraic->active()) {
       algebraic->take_algebraic(r, f1.get());
       algebraic->scale_rows(r, algebraic->mass_scale() / (beta * h * h));
     }
   }
 
+  // C, or null where the system has no damping (C = 0: neither assembled nor added).
+  Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
+
   // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
   void build_matrix(Vec a, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
       kinematics(a);
-      system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), C.get());
+      system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), damping_matrix());
       ++counters.jacobian_evaluations;
       round_off.set_tangent(K.get());
     }
     const double s = 1.0 + options.alpha;
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
-    CATENA_PETSC(MatAXPY(J, s * gamma * h, C.get(), SAME_NONZERO_PATTERN));
+    if (system.has_damping())
+      CATENA_PETSC(MatAXPY(J, s * gamma * h, C.get(), SAME_NONZERO_PATTERN));
     CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
     if (algebraic->active()) {
       // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
@@ -92,12 +105,13 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   impl_ = std::make_unique<Impl>(system, options);
   Impl& s = *impl_;
   for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q_prev, &s.v_prev, &s.a_prev, &s.q1,
-                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error})
+                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known})
     *v = system.create_vector();
   for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
     *m = system.create_matrix();
   // The mass matrix is constant (ANCF): assemble it once.
   system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
+  s.mass_product = assembly::compact_copy(s.mass.get());
   // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
   CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
   s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
@@ -147,10 +161,11 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.newton->invalidate_matrix();
     s.h_matrix = h;
   }
+  s.start_attempt();
   CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
   s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
   if (!s.round_off.known()) {  // first attempt: the floor from a tangent at the start
-    s.system.tangent_parts({s.q0.get(), s.v0.get(), {}, s.t0}, s.K.get(), s.C.get());
+    s.system.tangent_parts({s.q0.get(), s.v0.get(), {}, s.t0}, s.K.get(), s.damping_matrix());
     s.round_off.set_tangent(s.K.get());
   }
   const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get()) +

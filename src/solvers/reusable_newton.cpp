@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "catena/core/error.hpp"
 #include "catena/solvers/mumps_status.hpp"
 
 namespace catena::solvers {
@@ -19,6 +20,19 @@ ReusableNewton::ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& p
   CATENA_PETSC(SNESSetJacobian(snes_.get(), J, J, form_jacobian, this));
   configure_direct_newton(snes_.get(), prefix, symmetry, settings.pivoting);
   CATENA_PETSC(SNESSetConvergenceTest(snes_.get(), converged, this, nullptr));
+  // -<prefix>newton_refresh_contraction θ overrides the refresh threshold (measured on the
+  // moving-load benchmark: docs/performance.md, "HHT step: where the time goes").
+  PetscReal theta = settings_.refresh_contraction;
+  PetscBool set = PETSC_FALSE;
+  const char* name = "-newton_refresh_contraction";
+  CATENA_PETSC(PetscOptionsGetReal(nullptr, prefix.c_str(), name, &theta, &set));
+  if (set) {
+    if (!(theta > 0.0 && theta < 1.0))
+      throw InputError({"", 0, "-" + prefix + (name + 1)},
+                       "refresh contraction " + std::to_string(theta) +
+                           " is outside the accepted range (0, 1)");
+    settings_.refresh_contraction = theta;
+  }
   // Our convergence test owns the iteration limit.
   CATENA_PETSC(SNESSetTolerances(snes_.get(), PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT,
                                  settings.max_iterations + 1, 1000000));

@@ -90,6 +90,11 @@ class SecondOrderSystem {
   // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (constant).
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
 
+  // Not collective (the same answer on every rank). False if C = ∂f/∂v is zero at every
+  // state: no kernel and no contact damps. Integrators then leave C out of their Newton
+  // matrix and pass C = null to tangent_parts, which halves a tangent refresh's assembly.
+  bool has_damping() const { return has_damping_; }
+
   // Moving contacts (model::MovingContact, pantograph heads on a wire).
   struct ContactState {
     double force = 0.0;        // N, ≥ 0 (0: no contact)
@@ -216,6 +221,7 @@ class SecondOrderSystem {
   std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
   VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   size_t max_kernel_dofs_ = 0;
+  bool has_damping_ = true;
 };
 
 }  // namespace catena::assembly

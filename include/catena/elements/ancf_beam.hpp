@@ -99,6 +99,7 @@ class AncfBeam final : public Element {
   int dofs_per_node() const override { return kDofsPerNode; }
 
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return section_.damping_time != 0.0; }
   void mass(double* M) const override;
   // Axial force EA (ε + τ ε̇) [N] and ε [−] at x = L/2.
   SectionResult section_result(const LocalState& s) const override;

@@ -52,6 +52,7 @@ class AncfCable final : public Element {
   int n_nodes() const override { return 2; }
   int dofs_per_node() const override { return 6; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return section_.damping_time != 0.0; }
   void mass(double* M) const override;
   SectionResult section_result(const LocalState& s) const override;
 

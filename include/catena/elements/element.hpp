@@ -71,6 +71,10 @@ class Element {
 
   // Not collective. Fills the requested blocks of f, K, C.
   virtual void evaluate(const LocalState& s, Request r, LocalOutput out) const = 0;
+  // Not collective. False if C = ∂f/∂v is zero at every state (no damping in this kernel),
+  // so callers may leave C out of their tangent assembly. The default (true) is always
+  // safe; kernels without damping say so.
+  virtual bool has_damping() const { return true; }
   // Constant (configuration-independent) mass matrix, row-major n_dofs()².
   virtual void mass(double* M) const = 0;
   // Resultants at the element mid-point for output.

@@ -22,6 +22,7 @@ class LinearSpring final : public Element {
   int n_nodes() const override { return 2; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return !section_.damping.isZero(0.0); }
   void mass(double* M) const override;
   SectionResult section_result(const LocalState& s) const override;
 
@@ -37,6 +38,7 @@ class GroundSpring final : public Element {
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return !section_.damping.isZero(0.0); }
   void mass(double* M) const override;
   SectionResult section_result(const LocalState& s) const override;
 

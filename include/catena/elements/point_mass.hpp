@@ -15,6 +15,7 @@ class PointMass final : public Element {
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return false; }
   void mass(double* M) const override;
   SectionResult section_result(const LocalState&) const override { return {}; }
 
@@ -30,6 +31,7 @@ class NodalForce final : public Element {
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
+  bool has_damping() const override { return false; }
   void mass(double* M) const override;
   SectionResult section_result(const LocalState&) const override { return {}; }
 

@@ -51,7 +51,8 @@ struct NewtonResult {
 struct NewtonSettings {
   int max_iterations = 10;
   bool full_newton = false;
-  double refresh_contraction = 0.3;     // refresh a stale tangent above this rate
+  // Refresh a stale tangent above this rate; -<prefix>newton_refresh_contraction overrides it.
+  double refresh_contraction = 0.3;
   double divergence_contraction = 0.9;  // fail above this rate with a fresh tangent
   Pivoting pivoting = Pivoting::needed;  // may the factorisation skip pivoting (direct_newton.hpp)
 };
