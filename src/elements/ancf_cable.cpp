@@ -40,8 +40,9 @@ using Blocks = std::array<Vec3, 4>;
 // The axial law per unit EA: N/EA = G(ε) + τ W(ε) ε̇. Linear (G = ε, W = 1), or
 // tension-only: G = (1 − r) m(ε) + r ε with m a C¹ smoothed max(ε, 0) (quadratic
 // (ε + δ)²/(4δ) for |ε| < δ) and r = kSlackStiffness, W = m'(ε), so that damping fades with
-// the tension. A sharp switch (the bar's) makes Newton cycle at a point hovering at ε = 0
-// (the residual stagnates); the smoothing moves N by at most EA·δ/4.
+// the tension. The smoothing gives the law a tangent everywhere and moves N by at most
+// EA·δ/4; it does not cure the Newton failures of slackening cable droppers (measured:
+// docs/catenary.md, "Droppers as cables").
 struct AxialLaw {
   struct At {
     double G, dG, W, dW;

@@ -105,7 +105,8 @@ inline constexpr double kJointStiffnessFactor = 100.0;
 // The same for the hinges that join a cable dropper's end nodes to the wires, as a
 // multiple of the dropper's EA/h (h its element length): stiffer than the wires' joints
 // because a hinge is in series with the whole dropper, whose stiffness is a design value;
-// the two hinges lower it by 2/factor (0.02 %).
+// the two hinges lower it by a fraction 2h/(factor·l0) (0.02 % for two elements on a
+// dropper shortened to half its mesh length).
 inline constexpr double kDropperHingeStiffnessFactor = 1.0e4;
 
 // Not collective. The contact wire's design height at distance s from the start of a span

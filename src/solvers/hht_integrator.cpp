@@ -85,8 +85,8 @@ struct HhtIntegrator::Impl {
     }
     const double s = 1.0 + options.alpha;
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
-    if (system.has_damping())
-      CATENA_PETSC(MatAXPY(J, s * gamma * h, C.get(), SAME_NONZERO_PATTERN));
+    if (const Mat damping = damping_matrix())
+      CATENA_PETSC(MatAXPY(J, s * gamma * h, damping, SAME_NONZERO_PATTERN));
     CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
     if (algebraic->active()) {
       // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
