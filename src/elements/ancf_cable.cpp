@@ -37,11 +37,13 @@ CurvatureSquared curvature_squared(double g, double p, double c) {
 
 using Blocks = std::array<Vec3, 4>;
 
-// The axial law per unit EA: N/EA = G(ε) + τ W(ε) ε̇. Linear (G = ε, W = 1), or
+// The axial law per unit EA, of the element's mean strain ε̄ (see evaluate): G(ε̄), with
+// damping τ W(ε̄) ε̇. Linear (G = ε, W = 1), or
 // tension-only: G = (1 − r) m(ε) + r ε with m a C¹ smoothed max(ε, 0) (quadratic
 // (ε + δ)²/(4δ) for |ε| < δ) and r = kSlackStiffness, W = m'(ε), so that damping fades with
 // the tension. The smoothing gives the law a tangent everywhere and moves N by at most
-// EA·δ/4; it does not cure the Newton failures of slackening cable droppers (measured:
+// EA·δ/4; on its own (with a switch per sampling point) it did not stop the Newton
+// failures of slackening cable droppers, the switch on the mean strain did (measured:
 // docs/catenary.md, "Droppers as cables").
 struct AxialLaw {
   struct At {
@@ -140,35 +142,70 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
         for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
   };
 
-  // Axial strain and its rate (Kelvin–Voigt): N = EA (ε + τ ε̇), ε = a|u| − 1; for a
-  // tension-only section N = EA (G(ε) + τ W(ε) ε̇) (AxialLaw). In general form,
-  // H_uu = t (∂N/∂u)ᵀ + N ∂t/∂u with ∂ε/∂u = a t, ∂ε̇/∂u = a (∂t/∂u) u̇.
+  // Axial strain and its rate (Kelvin–Voigt) at the Lobatto points: ε_k = a|u_k| − 1.
+  // Linear section: N_k = EA (ε_k + τ ε̇_k). Tension-only section (AxialLaw): the switch
+  // acts on the element's mean strain ε̄ = Σ w_k ε_k (Simpson's rule for its arc-length
+  // strain), the strain's variation about the mean stays elastic:
+  //   energy / (L EA/a) = Φ(ε̄) + ½ Σ w_k (ε_k − ε̄)²,  Φ' = G,
+  //   N_k = EA (G(ε̄) + ε_k − ε̄ + τ W(ε̄) ε̇_k),
+  // which is N_k = EA ε_k wherever G(ε̄) = ε̄ (taut, or a linear section). A switch per
+  // sampling point would leave a slack element's end slopes, whose strain points sit at
+  // the nodes, with no stiffness along them and almost no inertia: they flapped, and
+  // Newton cycled between the points' states (docs/catenary.md, "Droppers as cables").
+  // In terms of b = Σ_k w_k S'_k ⊗ t_k (∂ε̄/∂e = a b) and v = Σ_k w_k ε̇_k S'_k ⊗ t_k,
+  //   K = Σ_k (per point: t_k (∂N_k/∂u_k)ᵀ + N_k ∂t_k/∂u_k)
+  //       + L EA a [(G'(ε̄) − 1) b bᵀ + τ W'(ε̄) v bᵀ],
+  // with ∂N_k/∂u_k = EA a (t_k + τ W (∂t_k/∂u_k) u̇_k) and ∂t/∂u = (I − t tᵀ)/|u|.
   const AxialLaw law(section_.tension_only);
+  struct AxialPoint {
+    HermiteAt h;
+    Vec3 t, u_rate;
+    Mat3 P;
+    double eps, eps_rate;
+  };
+  std::array<AxialPoint, 3> pts;
+  double eps_mean = 0.0;
   for (int k = 0; k < 3; ++k) {
-    const HermiteAt h = hermite_at(kAxialPoints[k] * L, L);
+    AxialPoint& p = pts[k];
+    p.h = hermite_at(kAxialPoints[k] * L, L);
     Vec3 u = Vec3::Zero();
-    for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
+    for (int i = 0; i < 4; ++i) u += p.h.ds[i] * e[i];
     const double norm_u = u.norm();
-    const Vec3 t = u / norm_u;
-    const double eps = a * norm_u - 1.0;
-    const AxialLaw::At g = law.at(eps);
-    const Mat3 P = (I - t * t.transpose()) / norm_u;  // ∂t/∂u
-    double eps_rate = 0.0;
-    Vec3 u_rate = Vec3::Zero();
+    p.t = u / norm_u;
+    p.eps = a * norm_u - 1.0;
+    p.P = (I - p.t * p.t.transpose()) / norm_u;
+    p.u_rate = Vec3::Zero();
+    p.eps_rate = 0.0;
     if (damped) {
-      for (int i = 0; i < 4; ++i) u_rate += h.ds[i] * ev[i];
-      eps_rate = a * t.dot(u_rate);
+      for (int i = 0; i < 4; ++i) p.u_rate += p.h.ds[i] * ev[i];
+      p.eps_rate = a * p.t.dot(p.u_rate);
     }
-    const double N = EA * (g.G + tau * g.W * eps_rate);
+    eps_mean += kAxialWeights[k] * p.eps;
+  }
+  const AxialLaw::At law_at = law.at(eps_mean);
+  Blocks b, v;
+  for (int i = 0; i < 4; ++i) b[i] = v[i] = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const AxialPoint& p = pts[k];
+    const double N = EA * (law_at.G + p.eps - eps_mean + tau * law_at.W * p.eps_rate);
     PointTangent pt;
-    pt.fu = N * t;
+    pt.fu = N * p.t;
     if (r.stiffness) {
-      Vec3 dN = EA * (g.dG + tau * g.dW * eps_rate) * a * t;
-      if (damped) dN += EA * tau * g.W * a * (P * u_rate);
-      pt.Huu = t * dN.transpose() + N * P;
+      Vec3 dN = EA * a * p.t;
+      if (damped) dN += EA * tau * law_at.W * a * (p.P * p.u_rate);
+      pt.Huu = p.t * dN.transpose() + N * p.P;
+      for (int i = 0; i < 4; ++i) {
+        b[i] += kAxialWeights[k] * p.h.ds[i] * p.t;
+        v[i] += kAxialWeights[k] * p.eps_rate * p.h.ds[i] * p.t;
+      }
     }
-    if (r.damping && tau > 0.0) pt.Cuu = EA * tau * g.W * a * t * t.transpose();
-    accumulate(h, kAxialWeights[k] * L, pt, false);
+    if (r.damping && tau > 0.0) pt.Cuu = EA * tau * law_at.W * a * p.t * p.t.transpose();
+    accumulate(p.h, kAxialWeights[k] * L, pt, false);
+  }
+  if (r.stiffness && section_.tension_only) {
+    const double cb = L * EA * a * (law_at.dG - 1.0), cv = damped ? L * EA * a * tau * law_at.dW : 0.0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) K[i][j] += (cb * b[i] + cv * v[i]) * b[j].transpose();
   }
 
   // Bending: ½ (EI/a) κ², κ² = p/g² − c²/g³.
@@ -241,13 +278,22 @@ double AncfCable::section_prestrain(const CableSection& section, const LoadPath&
 }
 
 SectionResult AncfCable::section_result(const LocalState& s) const {
+  // A linear section reports its mid-point force EA ε_mid (at rest). A tension-only one
+  // reports the force its switch acts on, EA G(ε̄), and the mean strain ε̄: a dropper's one
+  // tension per element, the slack residue kSlackStiffness·EA·ε̄ < 0 when it is slack.
   const Blocks e = gather(s.q);
-  const HermiteAt h = hermite_at(0.5 * length_, length_);
-  Vec3 u = Vec3::Zero();
-  for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
   const double a = 1.0 + section_prestrain(section_, s.path);
-  const double eps = a * u.norm() - 1.0;
-  return {section_.EA * AxialLaw(section_.tension_only).at(eps).G, eps};
+  double eps[3], eps_mean = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const HermiteAt h = hermite_at(kAxialPoints[k] * length_, length_);
+    Vec3 u = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
+    eps[k] = a * u.norm() - 1.0;
+    eps_mean += kAxialWeights[k] * eps[k];
+  }
+  if (section_.tension_only)
+    return {section_.EA * AxialLaw(true).at(eps_mean).G, eps_mean};
+  return {section_.EA * eps[1], eps[1]};
 }
 
 }  // namespace catena::elements

@@ -187,6 +187,62 @@ TEST(AncfCable, TensionOnlyLawIsSmoothAcrossTheSlackBand) {
   }
 }
 
+// A slack tension-only cable whose strain varies along it (end slopes of 0.95 and 1.0, chord
+// 0.97): the switch acts on the mean strain ε̄ = Σ w_k ε_k (Simpson), the variation about it
+// stays elastic, N_k = EA (r ε̄ + ε_k − ε̄), r = kSlackStiffness. By hand for a straight
+// element along −z: u(L/2) = 1.5 (r_B − r_A)/L − 0.25 (r_A' + r_B'), the force on r_B is
+// −N_mid along z, and the slope-stretch stiffness at A is (1/6 + (4/6)/16) EA a L whatever
+// the tension (∂ε̄/∂r_A' = 0 along the cable): a switch per point left it at r·EA, a mode
+// with almost no inertia, and cable droppers flapped (docs/catenary.md).
+TEST(AncfCable, SlackCableKeepsItsStrainVariationElastic) {
+  CableSection s = kSection;
+  s.tension_only = true;
+  const double L = 0.5, a = 1.0 + s.prestrain;
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero());
+  const double chord = 0.97, slope_a = 0.95, slope_b = 1.0;
+  const std::vector<double> q = {0, 0, 0, 0, 0, -slope_a, 0, 0, -chord * L, 0, 0, -slope_b};
+  const double eps_a = a * slope_a - 1, eps_b = a * slope_b - 1;
+  const double eps_mid = a * (1.5 * chord - 0.25 * (slope_a + slope_b)) - 1;
+  const double eps_mean = (eps_a + 4 * eps_mid + eps_b) / 6;
+  ASSERT_LT(eps_mean, -AncfCable::kSlackBand);
+  const double r = AncfCable::kSlackStiffness;
+  std::vector<double> f(12), K(144);
+  cable.evaluate({q, {}, {}}, {true, true, false}, {f.data(), K.data(), nullptr});
+  const double N_mid = s.EA * (r * eps_mean + eps_mid - eps_mean);
+  EXPECT_NEAR(f[8], -N_mid, 1e-9 * s.EA * std::abs(eps_mid - eps_mean));
+  EXPECT_NEAR(K[5 * 12 + 5], (1.0 / 6 + 4.0 / 6 / 16) * s.EA * a * L, 1e-9 * s.EA * L);
+  const auto section = cable.section_result({q, {}, {}});
+  EXPECT_NEAR(section.axial_strain, eps_mean, 1e-14);
+  EXPECT_NEAR(section.axial_force, r * s.EA * eps_mean, 1e-9 * r * s.EA);
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 4; ++trial) {
+    const auto check = catena::test::check_element_jacobians(
+        cable, perturbed(q, 1e-3, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng), 1.0);
+    EXPECT_LT(check.stiffness, 1e-6) << "trial " << trial;
+    EXPECT_LT(check.damping, 1e-6) << "trial " << trial;
+  }
+}
+
+// A taut tension-only cable with the same uneven strain carries N_k = EA ε_k, as a linear
+// section does, and its tangent (damping included) matches finite differences.
+TEST(AncfCable, TautTensionOnlyCableMatchesTheLinearSection) {
+  CableSection s = kSection;
+  s.tension_only = true;
+  CableSection linear = kSection;
+  const double L = 0.5;
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero()), reference(L, linear, Vec3::Zero(),
+                                                                      Vec3::Zero());
+  const std::vector<double> q = {0, 0, 0, 0, 0, -1.01, 0, 0, -1.02 * L, 0, 0, -1.03};
+  const std::vector<double> v = {0, 0, 0, 0, 0, -0.1, 0, 0, -0.2, 0, 0, 0.05};
+  const auto f = catena::test::element_force(cable, q, v, 1.0);
+  const auto f_linear = catena::test::element_force(reference, q, v, 1.0);
+  for (int i = 0; i < 12; ++i) EXPECT_NEAR(f[i], f_linear[i], 1e-9 * s.EA) << "dof " << i;
+  std::mt19937 rng(13);
+  const auto check = catena::test::check_element_jacobians(cable, perturbed(q, 1e-3, rng), v, 1.0);
+  EXPECT_LT(check.stiffness, 1e-6);
+  EXPECT_LT(check.damping, 1e-6);
+}
+
 // prestrain_with_loads: along the static load path the prestrain is ε_p·loads, whatever
 // the path's tensioning and release factors; at the path's end it is ε_p, as for any cable.
 TEST(AncfCable, PrestrainPutOnWithTheLoads) {

@@ -34,8 +34,10 @@ struct CableSection {
   double mass_per_length = 0.0;
   double damping_time = 0.0;
   double prestrain = 0.0;  // ε_p: unstretched length = L / (1 + ε_p)
-  // Slack in compression: where ε < −kSlackBand the axial force is kSlackStiffness·EA·ε,
-  // without damping (a dropper cable); smoothed across |ε| < kSlackBand.
+  // Slack in compression (a dropper cable): where the element's mean strain ε̄ (Simpson's
+  // rule over its three axial points) is below −kSlackBand, its mean axial force is
+  // kSlackStiffness·EA·ε̄, without damping; smoothed across |ε̄| < kSlackBand. The strain's
+  // variation about ε̄ within the element stays elastic (ancf_cable.cpp).
   bool tension_only = false;
   // Along the static load path, ε_p is put on with the loads (ε_p·loads), not before them
   // (see LoadPath): a dropper's prestrain is its shape-found length, not a tension.
