@@ -180,6 +180,24 @@ struct IrkIntegrator::Impl {
     round_off.set_tangent(K.get());
   }
 
+  // A refreshed tangent of the simplified Newton: at the current iterate's last stage
+  // (Radau IIA, Lobatto: the step's end), not at (q0, v0) as RADAU5 does. Where a force law
+  // has a kink that the step crosses (a dropper going slack), the start's tangent is wrong
+  // for the whole step however often it is re-evaluated: with cable droppers the iteration
+  // then contracted by only 0.3–0.4 per iterate and the step was halved instead
+  // (docs/catenary.md, "Droppers as cables"). Away from kinks either point gives the
+  // simplified Newton's linear contraction, O(h) per iterate.
+  void evaluate_iterate_tangent(Vec xk) {
+    split_interleaved(xk, raw(Kst));
+    stage_states();
+    const int last = s - 1;
+    system.tangent_parts({U[last].get(), V[last].get(), {}, t0 + T.c(last) * h}, K.get(),
+                         C.get());
+    ++counters.jacobian_evaluations;
+    ++tangent_serial;
+    round_off.set_tangent(K.get());
+  }
+
   void build(Vec xk, bool refresh, Mat) {
     if (options.full_newton) {
       split_interleaved(xk, raw(Kst));
@@ -194,13 +212,13 @@ struct IrkIntegrator::Impl {
       counters.jacobian_evaluations += s;
       block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
     } else if (decoupled) {
-      if (refresh) evaluate_start_tangent();
+      if (refresh) evaluate_iterate_tangent(xk);
       decoupled->assemble({K.get(), C.get(), block_diagonal_part(), constraint_row_vector(), h});
       blocks_h = h;
       blocks_tangent = tangent_serial;
       return;
     } else {
-      if (refresh) evaluate_start_tangent();
+      if (refresh) evaluate_iterate_tangent(xk);
       block->assemble(K.get(), C.get(), block_diagonal_part(), coefficients());
     }
     algebraic->scale_rows(block->matrix(), constraint_row_scale(), s);

@@ -9,7 +9,8 @@
 //
 // Newton: the s·n stage system has blocks
 //   ∂R_i/∂K_j = δ_ij M + h a_ij C + h² (A²)_ij K.
-// Simplified Newton (default) takes K, C at (t0, q0, v0) and keeps the factorisation
+// Simplified Newton (default) takes one K, C for all stages, evaluated at the current
+// iterate's last stage (u_s, v_s) whenever it is refreshed, and keeps the factorisation
 // over steps of equal h while the iteration contracts fast (ReusableNewton); full Newton
 // linearises stage i at (u_i, v_i) at every iterate. Linear algebra:
 //   decoupled (default where exact: simplified Newton and an A with distinct nonzero
