@@ -1,14 +1,53 @@
 #include "shape_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
+#include <variant>
 
 #include "catena/core/mpi_comm.hpp"
 #include "catena/solvers/shape_finding.hpp"
 
 namespace catena::app {
 namespace {
+
+// The highest first axial frequency of the cable droppers (rad/s; 0 for bars): a cable
+// dropper's mass on its own EA, ω1 = (π/l0) √(EA/μ) for a string of unstretched length l0
+// fixed at both ends (the wires barely move at that frequency); a bar has no such mode.
+double cable_dropper_axial_omega(const model::Model& m) {
+  double omega = 0.0;
+  for (const model::CatenaryDropper& d : m.catenary->droppers) {
+    const auto* cable =
+        std::get_if<model::CableProps>(&m.elements[static_cast<std::size_t>(d.element)].props);
+    if (!cable || cable->mass_per_length <= 0.0) continue;
+    const double l0 = d.mesh_length / (1.0 + cable->prestrain);
+    omega = std::max(omega, std::numbers::pi / l0 * std::sqrt(cable->EA / cable->mass_per_length));
+  }
+  return omega;
+}
+
+void print_axial_mode(std::FILE* out, const model::Model& m) {
+  const double omega = cable_dropper_axial_omega(m);
+  if (omega <= 0.0) return;
+  const double hz = omega / (2.0 * std::numbers::pi);
+  std::fprintf(out, "  cable droppers' first axial mode: up to %.0f Hz (%.0f rad/s, shortest dropper)\n",
+               hz, omega);
+  const model::IntegratorOptions& integrator = m.dynamic_options.integrator;
+  // Measured (docs/catenary.md, "Droppers as cables"): at dt·ω ≈ 4 re-tensioning cable
+  // droppers chattered with both HHT and Radau IIA; at dt·ω ≈ 1 HHT did not, Radau IIA,
+  // which damps the mode less, did not at 0.5.
+  const double limit = integrator.type == "hht" ? 1.0 : 0.5;
+  if (m.analysis == model::AnalysisType::dynamic && !integrator.adaptive &&
+      integrator.dt * omega > limit)
+    std::fprintf(out,
+                 "catena: warning: the fixed step does not resolve the cable droppers' axial "
+                 "mode (dt*omega = %.2g > %g for %s): re-tensioning droppers may chatter; "
+                 "integrator.dt <= %.2g s resolves it (docs/catenary.md, \"Droppers as "
+                 "cables\")\n",
+                 integrator.dt * omega, limit, integrator.type.c_str(), limit / omega);
+}
 
 void print_report(std::FILE* out, const model::Model& m, const solvers::ShapeFindingReport& r,
                   double seconds, const solvers::ShapeFindingOptions& options) {
@@ -60,6 +99,7 @@ void print_report(std::FILE* out, const model::Model& m, const solvers::ShapeFin
     std::fprintf(out, " %.4f", r.dropper_lengths[i]);
   }
   std::fprintf(out, "\n");
+  print_axial_mode(out, m);
   std::fflush(out);
 }
 

@@ -194,7 +194,8 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   const bool cables = !EI.empty();
   const std::string behaviour =
       all_tension_only
-          ? (cables ? "tension-only (slack in compression, smoothed; residue 1e-6 EA)"
+          ? (cables ? "tension-only per element on its mean strain (slack in compression, "
+                      "smoothed; residue 1e-6 EA)"
                     : "tension-only (slack in compression, sharp switch)")
       : any_tension_only ? "partly tension-only"
                          : "carrying compression too (tension_only: false)";
