@@ -26,6 +26,9 @@
 // -newton_atol N (1e-8; the round-off floor is added, see Options) -repeat n (20, unit costs)
 // -linear_algebra auto|decoupled|coupled (auto; radau's stage solve, docs/integrators.md);
 // PETSc options with the integrators' prefixes (-hht_, -irk_) apply as in `catena run`.
+// Accuracy of a setting (e.g. a looser -newton_rtol, or -dt halved with -steps doubled):
+// -save_state FILE writes the final state (PETSc binary), -compare_state FILE prints the
+// largest difference from a state saved by a run on as many ranks.
 #include <petscksp.h>
 
 #include <algorithm>
@@ -58,6 +61,7 @@ struct Options {
   // elements leave |f| ≈ 0.027 N, far above 1e-8 N.
   double newton_rtol = 1e-10, newton_atol = 1e-8;
   std::string integrator = "hht", newton = "simplified", linear_algebra = "auto";
+  std::string save_state, compare_state;  // PETSc binary files ("" = none)
 };
 
 std::string option_text(const char* name, const std::string& fallback) {
@@ -87,6 +91,8 @@ Options read_options() {
   o.integrator = option_text("-integrator", o.integrator);
   o.newton = option_text("-newton", o.newton);
   o.linear_algebra = option_text("-linear_algebra", o.linear_algebra);
+  o.save_state = option_text("-save_state", "");
+  o.compare_state = option_text("-compare_state", "");
   const int n_spans = static_cast<int>(o.length / o.span + 0.5);
   if (o.start < 0.0) o.start = (n_spans / 2 + 0.5) * o.span;
   return o;
@@ -184,7 +190,8 @@ int main(int argc, char** argv) {
                              "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
                              "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
                              "[-force N] [-speed m/s] [-start m] [-newton_rtol r] "
-                             "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled]\n");
+                             "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
+                             "[-save_state FILE] [-compare_state FILE]\n");
   CATENA_PETSC(PetscLogDefaultBegin());
   MPI_Comm comm = PETSC_COMM_WORLD;
   const int rank = catena::mpi_rank(comm), size = catena::mpi_size(comm);
@@ -229,6 +236,28 @@ int main(int argc, char** argv) {
   CATENA_PETSC(PetscLogStagePop());  // Steps
   CATENA_PETSC(PetscLogStagePop());  // FirstStep
   const catena::solvers::IntegratorCounters total = integrator->counters();
+
+  // The final state against a saved one, and against the static state (the motion's size).
+  double state_difference = -1.0, motion = 0.0;
+  {
+    catena::VecHandle d = system.create_vector();
+    CATENA_PETSC(VecWAXPY(d.get(), -1.0, q.get(), integrator->q()));
+    CATENA_PETSC(VecNorm(d.get(), NORM_INFINITY, &motion));
+    if (!o.save_state.empty()) {
+      PetscViewer viewer = nullptr;
+      CATENA_PETSC(PetscViewerBinaryOpen(comm, o.save_state.c_str(), FILE_MODE_WRITE, &viewer));
+      CATENA_PETSC(VecView(integrator->q(), viewer));
+      CATENA_PETSC(PetscViewerDestroy(&viewer));
+    }
+    if (!o.compare_state.empty()) {
+      PetscViewer viewer = nullptr;
+      CATENA_PETSC(PetscViewerBinaryOpen(comm, o.compare_state.c_str(), FILE_MODE_READ, &viewer));
+      CATENA_PETSC(VecLoad(d.get(), viewer));
+      CATENA_PETSC(PetscViewerDestroy(&viewer));
+      CATENA_PETSC(VecAXPY(d.get(), -1.0, integrator->q()));
+      CATENA_PETSC(VecNorm(d.get(), NORM_INFINITY, &state_difference));
+    }
+  }
 
   // Unit costs, measured apart from the run: one residual at the final state, and one
   // triangular-solve pair of the factored HHT Newton matrix (n × n, MUMPS LU as HHT's).
@@ -341,6 +370,10 @@ int main(int argc, char** argv) {
                 ratio, ratio <= 3.0 ? "met" : "not met");
     std::printf("  ratio with the run's own unit costs (CatForce, MatSolve) = %.2f\n",
                 ratio_in_run);
+    std::printf("  final state: max |q - q_static| = %.6g (m or slope)", motion);
+    if (state_difference >= 0.0)
+      std::printf(", max |q - q(%s)| = %.3g", o.compare_state.c_str(), state_difference);
+    std::printf("\n");
     // CSV: method, ranks, DOFs, dt, steps, then per step after the first: Newton iterations,
     // residuals, tangents, factorisations, solve pairs, step s; first step s; unit residual
     // s, unit HHT solve pair s, in-run residual s, in-run solve pair s, both ratios.
