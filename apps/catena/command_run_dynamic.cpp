@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
@@ -164,7 +165,20 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
 
   std::optional<io::Checkpoint> resumed;
   if (cl.restart) {
-    resumed = io::read_checkpoint(comm, m.output.file + ".chk", m, integrator->name());
+    try {
+      resumed = io::read_checkpoint(comm, m.output.file + ".chk", m, integrator->name());
+    } catch (const InputError& e) {
+      // `spans: auto` sizes the line from analysis.duration: a longer restart asks for a
+      // longer line than the checkpoint's, which a restart cannot add.
+      if (!m.catenary || !m.catenary->auto_spans) throw;
+      std::ostringstream why;
+      why << e.message() << "; catenary.spans: auto sized this line ("
+          << m.catenary->support_x.size() - 1 << " spans) for analysis.duration = "
+          << dyn.duration
+          << " s, and a restart cannot lengthen the line of the run it continues: run afresh "
+             "with the whole duration";
+      throw InputError(e.where(), why.str());
+    }
     if (resumed->facts.time >= dyn.duration * (1 - 1e-12))
       throw InputError({m.source_file, 0, "analysis.duration"},
                        "analysis.duration = " + std::to_string(dyn.duration) +
