@@ -25,6 +25,7 @@
 #include "commands.hpp"
 #include "initial_state.hpp"
 #include "run_info.hpp"
+#include "shape_report.hpp"
 #include "stop_signal.hpp"
 
 namespace catena::app {
@@ -152,6 +153,7 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   const int rank = mpi_rank(comm);
   const double start = MPI_Wtime();
+  if (rank == 0) warn_unresolved_dropper_mode(m);
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
@@ -170,13 +172,15 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     } catch (const InputError& e) {
       // `spans: auto` sizes the line from analysis.duration: a longer restart asks for a
       // longer line than the checkpoint's, which a restart cannot add.
-      if (!m.catenary || !m.catenary->auto_spans) throw;
+      if (!m.catenary || !m.catenary->auto_spans ||
+          !io::checkpoint_of_another_model(comm, m.output.file + ".chk", m))
+        throw;
       std::ostringstream why;
-      why << e.message() << "; catenary.spans: auto sized this line ("
+      why << e.message() << "; catenary.spans: auto sized this scene's line ("
           << m.catenary->support_x.size() - 1 << " spans) for analysis.duration = "
           << dyn.duration
-          << " s, and a restart cannot lengthen the line of the run it continues: run afresh "
-             "with the whole duration";
+          << " s: a restart continues the checkpoint's line and cannot lengthen it; run "
+             "afresh with the whole duration";
       throw InputError(e.where(), why.str());
     }
     if (resumed->facts.time >= dyn.duration * (1 - 1e-12))

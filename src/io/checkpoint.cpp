@@ -166,4 +166,20 @@ Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::
   }
 }
 
+bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
+                                 const model::Model& model) {
+  try {
+    return run_collective_phase(comm, [&] {
+      if (!fs::is_regular_file(path)) return false;
+      const Reader r(path);
+      if (r.text("format") != "catena-checkpoint-1") return false;
+      for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
+        if (r.integer(count) != count_of(model, count)) return true;
+      return false;
+    });
+  } catch (const Error&) {
+    return false;  // unreadable: read_checkpoint says why
+  }
+}
+
 }  // namespace catena::io

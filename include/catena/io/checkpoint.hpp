@@ -54,4 +54,9 @@ struct Checkpoint {
 Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
                            const std::string& integrator);
 
+// Collective. Whether `path` is a readable checkpoint written for a model with other node,
+// element or constraint counts (false if it is missing or unreadable).
+bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
+                                 const model::Model& model);
+
 }  // namespace catena::io
