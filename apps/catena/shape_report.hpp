@@ -14,4 +14,13 @@ namespace catena::app {
 // rank 0 to `out` (stderr where stdout carries JSON); does nothing otherwise.
 void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out = stdout);
 
+// The highest first axial frequency of the cable droppers (rad/s; 0 without cable droppers
+// with mass): a cable dropper's mass on its own EA, ω1 = (π/l0) √(EA/μ), the first mode of
+// a rod of unstretched length l0 held at both ends (the wires barely move at that
+// frequency); a bar dropper has no such mode. After shape finding (l0 set).
+double cable_dropper_axial_omega(const model::Model& m);
+
+// Not collective. Prints a warning to `out` when a fixed step leaves that mode unresolved.
+void warn_unresolved_dropper_mode(const model::Model& m, std::FILE* out = stderr);
+
 }  // namespace catena::app

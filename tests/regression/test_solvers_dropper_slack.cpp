@@ -10,8 +10,8 @@
 //  (a) the fixed-step run completes with no Newton failure and no rejected step;
 //  (b) at least kMinSwitchingDroppers droppers slacken and re-tension at least twice each;
 //  (c) no chatter. A chatter event is a dropper that re-tensions and slackens again within
-//      kChatterSteps steps (a taut episode of at most that many steps) with a peak force
-//      above kChatterForce. Both qualifications are measured, not guessed
+//      kChatterTime (a taut episode of at most that many seconds: 3 steps at 1 ms) with a
+//      peak force above kChatterForce. Both qualifications are measured, not guessed
 //      (docs/validation.md, "Dropper slack and re-tension"): short *slack* episodes (a
 //      taut dropper's oscillating tension dipping below zero) and short taut episodes
 //      with small peaks (grazing re-tensions, ≤ 25 N) are physical: they are there at a
@@ -25,14 +25,17 @@
 // The same runs with the droppers as chains of two ANCF cable elements (0.089 kg/m, EI =
 // 0.02 N·m², hinged to the wires): a dropper's state is its lowest element's (its pull on
 // the contact wire), slack when the element's mean strain is negative (AncfCable), and
-// its force in compression is the slack residue kSlackStiffness·EA·ε̄. A cable dropper has
-// an axial mode of its own (its interior node's mass on the two elements' EA/l, about 600 Hz
-// here), which the step must resolve, as for the stiff bars above: at 1 ms (h·ω ≈ 4) HHT
-// gives 10 chatter events (peaks to 108 N) and Radau IIA 26 (and 82 rejected steps); HHT
-// at 0.25 ms and Radau IIA at 0.125 ms give none (largest short taut peaks 17 N and 2.6 N;
-// Radau IIA at 0.25 ms still 5, to 93 N: it damps the mode less). Before the slack switch
-// acted on the element's mean strain (one switch per sampling point), a 1 s HHT run at
-// 120 N had not reached 0.7 s after 10 minutes of step halving (docs/catenary.md).
+// its force in compression is the slack residue kSlackStiffness·EA·ε̄. They assert (a) and
+// (b) only. A cable dropper has an axial mode of its own (its mass on its EA, (π/l0)√(EA/μ)
+// = 674 Hz for the shortest here), and re-tensioning makes it snap: short taut episodes
+// peaking above kChatterForce that do not go away as the step is refined, so they are the
+// droppers' dynamics, not chatter (measured, taut episodes of ≤ 3 ms / of them above 50 N /
+// largest peak): Radau IIA at 0.25, 0.125, 0.0625 ms: 177/62/243 N, 210/66/143 N,
+// 213/82/143 N (converging); HHT at 1, 0.5, 0.25, 0.125 ms: 24/10/108 N, 52/16/100 N,
+// 77/31/120 N, 100/50/188 N (its numerical damping attenuates them at large dt·ω). Bars at
+// 0.25 ms (HHT): 4/0/26 N. Before the slack switch acted on the element's mean strain (one
+// switch per sampling point), a 1 s HHT run at 120 N had not reached 0.7 s after 10
+// minutes of step halving (docs/catenary.md).
 // No energy bound is asserted: the system has no strain-energy evaluation to build one.
 #include <gtest/gtest.h>
 
@@ -62,7 +65,7 @@ using namespace catena;
 const std::string scene_file =
     (fs::path(CATENA_TEST_DATA) / "good_scenes" / "catenary_3span.yaml").string();
 
-constexpr int kChatterSteps = 3;          // a taut episode this short (1 ms steps) ...
+constexpr double kChatterTime = 3e-3;     // s, a taut episode this short ...
 constexpr double kChatterForce = 50.0;    // N, ... peaking above this is chatter
 constexpr int kMinSwitchingDroppers = 8;  // slacken and re-tension at least twice each
 
@@ -97,8 +100,10 @@ struct DropperHistory {
 
 class SlackObserver : public solvers::TransientObserver {
  public:
-  SlackObserver(assembly::SecondOrderSystem& system, const solvers::TimeIntegrator& integrator)
-      : system_(system), integrator_(integrator) {
+  // chatter_steps: kChatterTime in steps of the run's fixed step.
+  SlackObserver(assembly::SecondOrderSystem& system, const solvers::TimeIntegrator& integrator,
+                int window_steps)
+      : chatter_steps(window_steps), system_(system), integrator_(integrator) {
     const model::Model& m = system.model();
     for (const model::CatenaryDropper& d : m.catenary->droppers) {
       index_[d.element] = static_cast<int>(element_.size());
@@ -142,7 +147,8 @@ class SlackObserver : public solvers::TransientObserver {
 
   std::vector<DropperHistory> history;
   long rejected = 0;
-  long short_episodes = 0;       // of either state, at most kChatterSteps, between switches
+  const int chatter_steps;
+  long short_episodes = 0;       // of either state, at most chatter_steps, between switches
   long short_taut = 0;           // of those, taut ones
   double short_taut_peak = 0.0;  // N, the largest peak force of a short taut episode
   long chatter = 0;
@@ -160,7 +166,7 @@ class SlackObserver : public solvers::TransientObserver {
       (now == 1 ? h.slackened : h.retensioned) += 1;
       if (h.slackened + h.retensioned > 1) {  // the episode ending lay between two switches
         h.shortest = std::min(h.shortest, h.run);
-        if (h.run <= kChatterSteps) {
+        if (h.run <= chatter_steps) {
           ++short_episodes;
           if (h.state == 0) {
             ++short_taut;
@@ -213,7 +219,9 @@ SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
   solvers::TransientOptions options;
   options.t_end = m.dynamic_options.duration;
   options.step = solvers::make_step_control(m.dynamic_options.integrator);
-  SlackObserver observer(system, *integrator);
+  const double dt = m.dynamic_options.integrator.dt;
+  const int chatter_steps = std::max(1, static_cast<int>(std::lround(kChatterTime / dt)));
+  SlackObserver observer(system, *integrator, chatter_steps);
 
   SlackRun r;
   r.report = solvers::run_transient(system, *integrator, options, observer);
@@ -248,9 +256,9 @@ SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
   for (const DropperHistory& h : r.history)
     if (h.slackened > 0) std::printf(" %d", h.slackened + h.retensioned);
   std::printf(
-      ")\n  episodes of <= %d steps between switches: %ld, of them taut %ld (largest "
+      ")\n  episodes of <= %d steps (%g ms) between switches: %ld, of them taut %ld (largest "
       "peak %.1f N); chatter events (taut, peak > %g N): %ld\n",
-      kChatterSteps, r.short_episodes, r.short_taut, r.short_taut_peak, kChatterForce, r.chatter);
+      chatter_steps, 1e3 * chatter_steps * dt, r.short_episodes, r.short_taut, r.short_taut_peak, kChatterForce, r.chatter);
   // (a) the fixed-step run completes without Newton failure or rejected step.
   EXPECT_NEAR(r.report.t_reached, m.dynamic_options.duration, 1e-12);
   EXPECT_EQ(r.report.steps_rejected, 0);
@@ -277,12 +285,11 @@ TEST(DropperSlack, StiffDroppersNeedNoStepCuts) {
   run("{type: hht, alpha: -0.1, dt: 0.001}", 1.0e6);  // (a) and (b)
 }
 
-TEST(DropperSlack, HhtCableDroppersSlackenAndRetensionWithoutChatter) {
-  const SlackRun r = run("{type: hht, alpha: -0.1, dt: 0.00025}", 1.0e5, Droppers::cables);
-  EXPECT_EQ(r.chatter, 0);  // (c)
+TEST(DropperSlack, HhtCableDroppersSlackenAndRetensionWithoutNewtonFailure) {
+  run("{type: hht, alpha: -0.1, dt: 0.00025}", 1.0e5, Droppers::cables);  // (a) and (b)
 }
 
-TEST(DropperSlack, RadauIIACableDroppersSlackenAndRetensionWithoutChatter) {
-  const SlackRun r = run("{type: radau, stages: 3, dt: 0.000125}", 1.0e5, Droppers::cables);
-  EXPECT_EQ(r.chatter, 0);  // (c)
+TEST(DropperSlack, RadauIIACableDroppersSlackenAndRetensionWithoutNewtonFailure) {
+  run("{type: radau, stages: 3, dt: 0.00025}", 1.0e5, Droppers::cables);  // (a) and (b)
 }
+
