@@ -157,7 +157,8 @@ class SlackObserver : public solvers::TransientObserver {
  private:
   void record(std::size_t i, double force, double strain) {
     const double virtual_force = EA_[i] * strain;
-    // Slack: 0 for a bar, the slack residue for a cable.
+    // Slack: 0 for a bar, the slack residue for a cable (which its law bounds by
+    // construction: the check bites on bars).
     EXPECT_GE(force, residue_[i] * std::min(virtual_force, 0.0) * (1.0 + 1e-9))
         << "a tension-only dropper in compression";
     DropperHistory& h = history[i];

@@ -30,6 +30,20 @@ std::vector<double> perturbed(std::vector<double> q, double amplitude, std::mt19
   return q;
 }
 
+// K and C against finite differences at `trials` random perturbations of q (amplitude
+// `amplitude`) with random velocities of up to 1.
+void expect_jacobians_match(const AncfCable& cable, const std::vector<double>& q,
+                            double amplitude, unsigned seed, int trials) {
+  std::mt19937 rng(seed);
+  for (int trial = 0; trial < trials; ++trial) {
+    const auto check = catena::test::check_element_jacobians(
+        cable, perturbed(q, amplitude, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng),
+        1.0);
+    EXPECT_LT(check.stiffness, 1e-6) << "trial " << trial;
+    EXPECT_LT(check.damping, 1e-6) << "trial " << trial;
+  }
+}
+
 }  // namespace
 
 TEST(AncfCable, JacobiansMatchFiniteDifferencesAtRandomStates) {
@@ -153,11 +167,7 @@ TEST(AncfCable, TensionOnlyCableCarriesOnlyTheSlackResidueInCompression) {
     const double N = EA * (eps + (eps < 0.0 ? 0.0 : s.damping_time * rate));
     EXPECT_NEAR(f[8], -N, 1e-9 * std::abs(s.EA * eps)) << "stretch " << stretch;
     EXPECT_NEAR(cable.section_result({q, {}, {}}).axial_force, EA * eps, 1e-6 * std::abs(EA * eps));
-    std::mt19937 rng(3);
-    const auto check = catena::test::check_element_jacobians(
-        cable, perturbed(q, 1e-4, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng), 1.0);
-    EXPECT_LT(check.stiffness, 1e-6) << "stretch " << stretch;
-    EXPECT_LT(check.damping, 1e-6) << "stretch " << stretch;
+    expect_jacobians_match(cable, q, 1e-4, 3, 1);
   }
 }
 
@@ -214,13 +224,7 @@ TEST(AncfCable, SlackCableKeepsItsStrainVariationElastic) {
   const auto section = cable.section_result({q, {}, {}});
   EXPECT_NEAR(section.axial_strain, eps_mean, 1e-14);
   EXPECT_NEAR(section.axial_force, r * s.EA * eps_mean, 1e-9 * r * s.EA);
-  std::mt19937 rng(11);
-  for (int trial = 0; trial < 4; ++trial) {
-    const auto check = catena::test::check_element_jacobians(
-        cable, perturbed(q, 1e-3, rng), perturbed(std::vector<double>(12, 0.0), 1.0, rng), 1.0);
-    EXPECT_LT(check.stiffness, 1e-6) << "trial " << trial;
-    EXPECT_LT(check.damping, 1e-6) << "trial " << trial;
-  }
+  expect_jacobians_match(cable, q, 1e-3, 11, 4);
 }
 
 // A taut tension-only cable with the same uneven strain carries N_k = EA ε_k, as a linear
