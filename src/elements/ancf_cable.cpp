@@ -70,6 +70,13 @@ struct AxialLaw {
   }
 };
 
+// r' (or ṙ') at a point: Σ S'_i x_i over the Hermite blocks.
+Vec3 slope_at(const HermiteAt& h, const Blocks& x) {
+  Vec3 u = Vec3::Zero();
+  for (int i = 0; i < 4; ++i) u += h.ds[i] * x[i];
+  return u;
+}
+
 Blocks gather(std::span<const double> x) {
   Blocks b;
   for (int i = 0; i < 4; ++i) b[i] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
@@ -168,41 +175,40 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
   for (int k = 0; k < 3; ++k) {
     AxialPoint& p = pts[k];
     p.h = hermite_at(kAxialPoints[k] * L, L);
-    Vec3 u = Vec3::Zero();
-    for (int i = 0; i < 4; ++i) u += p.h.ds[i] * e[i];
+    const Vec3 u = slope_at(p.h, e);
     const double norm_u = u.norm();
     p.t = u / norm_u;
     p.eps = a * norm_u - 1.0;
     p.P = (I - p.t * p.t.transpose()) / norm_u;
-    p.u_rate = Vec3::Zero();
-    p.eps_rate = 0.0;
-    if (damped) {
-      for (int i = 0; i < 4; ++i) p.u_rate += p.h.ds[i] * ev[i];
-      p.eps_rate = a * p.t.dot(p.u_rate);
-    }
+    p.u_rate = damped ? slope_at(p.h, ev) : Vec3::Zero();
+    p.eps_rate = a * p.t.dot(p.u_rate);
     eps_mean += kAxialWeights[k] * p.eps;
   }
   const AxialLaw::At law_at = law.at(eps_mean);
+  // G(ε̄) − ε̄: exactly 0 for a linear section, whose N_k is then EA ε_k to the last bit.
+  const double offset = law_at.G - eps_mean;
+  const bool rank_one = r.stiffness && section_.tension_only;
   Blocks b, v;
   for (int i = 0; i < 4; ++i) b[i] = v[i] = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
     const AxialPoint& p = pts[k];
-    const double N = EA * (law_at.G + p.eps - eps_mean + tau * law_at.W * p.eps_rate);
+    const double N = EA * (p.eps + offset + tau * law_at.W * p.eps_rate);
     PointTangent pt;
     pt.fu = N * p.t;
     if (r.stiffness) {
       Vec3 dN = EA * a * p.t;
       if (damped) dN += EA * tau * law_at.W * a * (p.P * p.u_rate);
       pt.Huu = p.t * dN.transpose() + N * p.P;
+    }
+    if (rank_one)
       for (int i = 0; i < 4; ++i) {
         b[i] += kAxialWeights[k] * p.h.ds[i] * p.t;
         v[i] += kAxialWeights[k] * p.eps_rate * p.h.ds[i] * p.t;
       }
-    }
     if (r.damping && tau > 0.0) pt.Cuu = EA * tau * law_at.W * a * p.t * p.t.transpose();
     accumulate(p.h, kAxialWeights[k] * L, pt, false);
   }
-  if (r.stiffness && section_.tension_only) {
+  if (rank_one) {
     const double cb = L * EA * a * (law_at.dG - 1.0), cv = damped ? L * EA * a * tau * law_at.dW : 0.0;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) K[i][j] += (cb * b[i] + cv * v[i]) * b[j].transpose();
@@ -285,10 +291,7 @@ SectionResult AncfCable::section_result(const LocalState& s) const {
   const double a = 1.0 + section_prestrain(section_, s.path);
   double eps[3], eps_mean = 0.0;
   for (int k = 0; k < 3; ++k) {
-    const HermiteAt h = hermite_at(kAxialPoints[k] * length_, length_);
-    Vec3 u = Vec3::Zero();
-    for (int i = 0; i < 4; ++i) u += h.ds[i] * e[i];
-    eps[k] = a * u.norm() - 1.0;
+    eps[k] = a * slope_at(hermite_at(kAxialPoints[k] * length_, length_), e).norm() - 1.0;
     eps_mean += kAxialWeights[k] * eps[k];
   }
   if (section_.tension_only)
