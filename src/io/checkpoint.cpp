@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "atomic_file.hpp"
 #include "catena/core/error.hpp"
@@ -78,6 +79,17 @@ class Reader {
   FileHandle file_;
 };
 
+// Why the checkpoint open in r was written for another model than `model` (its node,
+// element or constraint count differs), or "".
+std::string other_model(const Reader& r, const model::Model& model) {
+  for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
+    if (r.integer(count) != count_of(model, count))
+      return std::string(count) + " = " + std::to_string(r.integer(count)) +
+             " in the checkpoint, " + std::to_string(count_of(model, count)) +
+             " in this scene (a different model)";
+  return {};
+}
+
 // Reads the checkpoint on this rank; throws catena::Error saying why it cannot be used.
 Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
                              const std::string& integrator) {
@@ -87,11 +99,7 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
          "and at the end)");
   const Reader r(path);
   if (r.text("format") != "catena-checkpoint-1") fail("not a Catena checkpoint");
-  for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
-    if (r.integer(count) != count_of(model, count))
-      fail(std::string(count) + " = " + std::to_string(r.integer(count)) +
-           " in the checkpoint, " + std::to_string(count_of(model, count)) +
-           " in this scene (a different model)");
+  if (const std::string why = other_model(r, model); !why.empty()) fail(why);
   Checkpoint c;
   c.facts.integrator = r.text("integrator");
   if (c.facts.integrator != integrator)
@@ -172,10 +180,7 @@ bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
     return run_collective_phase(comm, [&] {
       if (!fs::is_regular_file(path)) return false;
       const Reader r(path);
-      if (r.text("format") != "catena-checkpoint-1") return false;
-      for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
-        if (r.integer(count) != count_of(model, count)) return true;
-      return false;
+      return r.text("format") == "catena-checkpoint-1" && !other_model(r, model).empty();
     });
   } catch (const Error&) {
     return false;  // unreadable: read_checkpoint says why

@@ -173,12 +173,15 @@ struct IrkIntegrator::Impl {
     return c;
   }
 
-  void evaluate_start_tangent() {
-    system.tangent_parts({q0.get(), v0.get(), {}, t0}, K.get(), C.get());
+  // The one K, C of the simplified Newton (and the round-off floor's tangent) at p.
+  void evaluate_tangent(const assembly::EvalPoint& p) {
+    system.tangent_parts(p, K.get(), C.get());
     ++counters.jacobian_evaluations;
     ++tangent_serial;
     round_off.set_tangent(K.get());
   }
+
+  void evaluate_start_tangent() { evaluate_tangent({q0.get(), v0.get(), {}, t0}); }
 
   // A refreshed tangent of the simplified Newton: at the current iterate's last stage
   // (Radau IIA, Lobatto: the step's end), not at (q0, v0) as RADAU5 does. Where a force law
@@ -191,11 +194,7 @@ struct IrkIntegrator::Impl {
     split_interleaved(xk, raw(Kst));
     stage_states();
     const int last = s - 1;
-    system.tangent_parts({U[last].get(), V[last].get(), {}, t0 + T.c(last) * h}, K.get(),
-                         C.get());
-    ++counters.jacobian_evaluations;
-    ++tangent_serial;
-    round_off.set_tangent(K.get());
+    evaluate_tangent({U[last].get(), V[last].get(), {}, t0 + T.c(last) * h});
   }
 
   void build(Vec xk, bool refresh, Mat) {
