@@ -22,6 +22,7 @@
 
 #include "catena/assembly/dof_map.hpp"
 #include "catena/assembly/element_factory.hpp"
+#include "catena/assembly/local_patch.hpp"
 #include "catena/assembly/partition.hpp"
 #include "catena/assembly/petsc_handle.hpp"
 #include "catena/elements/element.hpp"
@@ -89,6 +90,25 @@ class SecondOrderSystem {
   // null). For integrators that combine them with coefficients of their own; the
   // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (constant).
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
+
+  // Local patches (local_patch.hpp; local_patch.cpp). Collective: finds which owned DOFs
+  // a patch may change alone. Once, before the first local_patch().
+  void prepare_local_patches();
+  // Not collective. The patch around `seeds` (owned local indices) at time t: the DOFs
+  // reached from them across `layers` kernels (a moving contact counts as one), those of
+  // them a patch may change alone.
+  LocalPatch local_patch(const std::vector<PetscInt>& seeds, int layers, double t = 0.0);
+  // Not collective. Σ f_e(q, v) over the patch's kernels and contacts, per row (f_rows: rows.size()),
+  // from the owned arrays of q and v (v may be null: zero velocity). Moving loads are left
+  // out: they do not depend on the state, so they cancel in a change of the residual.
+  void patch_force(const LocalPatch& patch, const double* q, const double* v,
+                   double* f_rows) const;
+  // Not collective. Σ M_e d_e over the patch's kernels, per row, for d given per unknown.
+  void patch_mass_product(const LocalPatch& patch, const double* d, double* out_rows) const;
+  // Not collective. The unknowns' block of c_K K + c_C C + c_M M at (q, v) (owned arrays;
+  // v may be null), kernels and contacts, as entries that repeat (sum them).
+  std::vector<PatchEntry> patch_matrix(const LocalPatch& patch, const double* q, const double* v,
+                                       const JacobianCoefficients& c) const;
 
   // Not collective (the same answer on every rank). False if C = ∂f/∂v is zero at every
   // state: no kernel and no contact damps. Integrators then leave C out of their Newton
@@ -222,6 +242,10 @@ class SecondOrderSystem {
   VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   size_t max_kernel_dofs_ = 0;
   bool has_damping_ = true;
+  // Local patches (prepare_local_patches): per owned DOF, the kernels touching it (CSR) and
+  // whether a patch may change it; marks for local_patch's search (kept all zero between calls).
+  std::vector<size_t> dof_kernel_start_, dof_kernels_;
+  std::vector<char> patch_eligible_, patch_mark_;
 };
 
 }  // namespace catena::assembly

@@ -1,0 +1,75 @@
+#pragma once
+// Local Newton correction for one-step integrators whose residual in the unknown a is
+//
+//   R(a) = M a + c_f f(q, v) + (terms that do not depend on a),  q = q̂ + c_q a, v = v̂ + c_v a
+//
+// (HHT-α: c_f = 1 + α, c_q = βh², c_v = γh). After a global Newton iteration with a stale
+// tangent, the residual of a moving-load run is left only near the load: the tangent's
+// error is where the load's kink has moved since it was evaluated (docs/integrators.md,
+// "Local Newton correction", with the measurement). This finishes the solve there: Newton
+// on the windows around the large residual entries (assembly/local_patch.hpp), with a
+// fresh tangent of the window and the residual updated from the window's kernels alone,
+// at the cost of a few element evaluations instead of a global residual and a pair of
+// triangular solves. The window's edge is held fixed (a Dirichlet truncation), so the
+// correction is not the global Newton step; it is accepted only if the whole residual,
+// re-evaluated exactly where it changed, meets the tolerance. A window that stalls is
+// tried once at twice the width, which is kept for later solves (the coupling length of
+// the Newton matrix, over which a correction spreads, grows with the step).
+#include <petscvec.h>
+
+#include "catena/assembly/second_order_system.hpp"
+
+namespace catena::solvers {
+
+struct LocalNewtonSettings {
+  int layers = 32;              // kernel layers around the large entries, to start with
+  int max_layers = 1024;        // the widest window tried
+  int max_iterations = 4;       // local Newton iterations per correction
+  double seed_fraction = 1e-2;  // entries above this fraction of ‖R‖∞ seed the windows
+};
+
+struct LocalNewtonCounters {
+  long attempts = 0;     // corrections tried
+  long successes = 0;    // corrections that met the tolerance
+  long iterations = 0;   // local Newton iterations (over every rank's windows at once)
+  long unknowns = 0;     // window unknowns, summed over ranks and iterations
+};
+
+class LocalNewton {
+ public:
+  // R's coefficients for the current step.
+  struct Coefficients {
+    double c_f = 1.0, c_q = 0.0, c_v = 0.0;
+  };
+
+  // Collective (assembly::SecondOrderSystem::prepare_local_patches).
+  LocalNewton(assembly::SecondOrderSystem& system, const LocalNewtonSettings& settings);
+
+  // Collective. a: the iterate; r = R(a); q, v: the states at a; f = f(q, v) (global
+  // vectors). If the windows bring ‖R‖₂ to atol, updates all five in place (r and f
+  // exactly where they changed), sets *norm and returns true; otherwise changes nothing
+  // and returns false.
+  bool correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol,
+               double* norm);
+
+  const LocalNewtonCounters& counters() const { return counters_; }
+  // The window width (kernel layers) the next correction starts from.
+  int layers() const { return layers_; }
+
+ private:
+  enum class Outcome { converged, no_window, too_narrow, failed };
+  struct Vectors {
+    Vec a, r, q, v, f;
+  };
+  // Collective. One correction with windows `layers` wide; undone unless converged.
+  Outcome attempt(const Vectors& vecs, const Coefficients& c, double atol, int layers,
+                  double* norm);
+
+  assembly::SecondOrderSystem& system_;
+  LocalNewtonSettings settings_;
+  LocalNewtonCounters counters_;
+  int layers_;
+  int misses_ = 0, skip_ = 0;  // failures in a row; calls still to skip
+};
+
+}  // namespace catena::solvers

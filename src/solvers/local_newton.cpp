@@ -1,0 +1,191 @@
+#include "catena/solvers/local_newton.hpp"
+
+#include <petsclog.h>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "catena/assembly/petsc_call.hpp"
+
+namespace catena::solvers {
+namespace {
+
+PetscLogEvent local_newton_event() {
+  static const PetscLogEvent event = [] {
+    PetscClassId id = 0;
+    PetscLogEvent e = 0;
+    PetscClassIdRegister("CatenaLocal", &id);
+    PetscLogEventRegister("CatLocalNewton", id, &e);
+    return e;
+  }();
+  return event;
+}
+
+// The owned array of a vector for the lifetime of the object.
+class OwnedArray {
+ public:
+  explicit OwnedArray(Vec v) : v_(v) { CATENA_PETSC(VecGetArray(v_, &data_)); }
+  ~OwnedArray() { VecRestoreArray(v_, &data_); }
+  OwnedArray(const OwnedArray&) = delete;
+  OwnedArray& operator=(const OwnedArray&) = delete;
+  double* data() const { return data_; }
+
+ private:
+  Vec v_;
+  PetscScalar* data_ = nullptr;
+};
+
+}  // namespace
+
+LocalNewton::LocalNewton(assembly::SecondOrderSystem& system, const LocalNewtonSettings& settings)
+    : system_(system), settings_(settings), layers_(settings.layers) {
+  system_.prepare_local_patches();
+}
+
+bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol,
+                          double* norm) {
+  PetscLogEventBegin(local_newton_event(), 0, 0, 0, 0);
+  struct EndEvent {
+    ~EndEvent() { PetscLogEventEnd(local_newton_event(), 0, 0, 0, 0); }
+  } end_event;
+  // Where corrections keep failing (a residual spread over the system, or windows that
+  // cannot be owned alone: contacts, constraints), try ever more rarely: after k failures
+  // in a row, skip the next 2^k − 1 calls (at most 63). Same decision on every rank.
+  if (skip_ > 0) {
+    --skip_;
+    return false;
+  }
+  ++counters_.attempts;
+  // A window too narrow for this step's coupling length (it grows with h) stalls: try once
+  // more twice as wide, and keep the width that worked for the next solves.
+  Outcome outcome = attempt({a, r, q, v, f}, c, atol, layers_, norm);
+  if (outcome == Outcome::too_narrow && 2 * layers_ <= settings_.max_layers) {
+    outcome = attempt({a, r, q, v, f}, c, atol, 2 * layers_, norm);
+    if (outcome == Outcome::converged) layers_ *= 2;
+  }
+  if (outcome != Outcome::converged) {
+    misses_ = std::min(misses_ + 1, 6);
+    skip_ = (1 << misses_) - 1;
+    return false;
+  }
+  misses_ = 0;
+  ++counters_.successes;
+  return true;
+}
+
+LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficients& c,
+                                          double atol, int layers, double* norm) {
+  const MPI_Comm comm = system_.comm();
+  PetscReal largest = 0.0;
+  CATENA_PETSC(VecNorm(vecs.r, NORM_INFINITY, &largest));
+  PetscInt n = 0;
+  CATENA_PETSC(VecGetLocalSize(vecs.r, &n));
+
+  const OwnedArray a(vecs.a), r(vecs.r), q(vecs.q), v(vecs.v), f(vecs.f);
+  std::vector<PetscInt> seeds;
+  for (PetscInt i = 0; i < n; ++i)
+    if (std::abs(r.data()[i]) >= settings_.seed_fraction * largest) seeds.push_back(i);
+  const assembly::LocalPatch patch = system_.local_patch(seeds, layers);
+  const size_t nu = patch.unknowns.size(), nr = patch.rows.size();
+
+  // What the windows cannot change must already meet the tolerance (with a margin for the
+  // rows at the windows' edges, which the correction moves too).
+  double sums[3] = {0.0, 0.0, static_cast<double>(nu)};  // outside², inside², unknowns
+  for (PetscInt i = 0; i < n; ++i) sums[0] += r.data()[i] * r.data()[i];
+  for (PetscInt u : patch.unknowns) sums[1] += r.data()[u] * r.data()[u];
+  sums[0] -= sums[1];
+  double global[3] = {0.0, 0.0, 0.0};
+  MPI_Allreduce(sums, global, 3, MPI_DOUBLE, MPI_SUM, comm);
+  if (global[2] == 0.0) return Outcome::no_window;
+  if (std::sqrt(std::max(global[0], 0.0)) > 0.9 * atol) return Outcome::too_narrow;
+  double previous = std::sqrt(std::max(global[0], 0.0) + global[1]);
+
+  // Kept for an undo: the unknowns' a, q, v and the rows' r, f.
+  std::vector<double> saved_a(nu), saved_q(nu), saved_v(nu), saved_r(nr), saved_f(nr);
+  for (size_t i = 0; i < nu; ++i) {
+    const PetscInt u = patch.unknowns[i];
+    saved_a[i] = a.data()[u];
+    saved_q[i] = q.data()[u];
+    saved_v[i] = v.data()[u];
+  }
+  for (size_t i = 0; i < nr; ++i) {
+    saved_r[i] = r.data()[patch.rows[i]];
+    saved_f[i] = f.data()[patch.rows[i]];
+  }
+
+  std::vector<double> f_old(nr), f_new(nr), inertia(nr);
+  if (nu > 0) system_.patch_force(patch, q.data(), v.data(), f_old.data());
+  const assembly::JacobianCoefficients jc{c.c_f * c.c_q, c.c_f * c.c_v, 1.0, 0.0, 0.0};
+  Outcome outcome = Outcome::too_narrow;
+  for (int it = 1; it <= settings_.max_iterations; ++it) {
+    ++counters_.iterations;
+    int failed = 0;
+    if (nu > 0) {
+      // Newton on the window: the unknowns' block of M + c_f (c_q K + c_v C), fresh.
+      std::vector<Eigen::Triplet<double>> triplets;
+      for (const assembly::PatchEntry& e : system_.patch_matrix(patch, q.data(), v.data(), jc))
+        triplets.emplace_back(static_cast<int>(e.row), static_cast<int>(e.col), e.value);
+      const auto size = static_cast<Eigen::Index>(nu);
+      Eigen::SparseMatrix<double> J(size, size);
+      J.setFromTriplets(triplets.begin(), triplets.end());
+      Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+      lu.compute(J);
+      Eigen::VectorXd rhs(size), delta;
+      for (size_t i = 0; i < nu; ++i) rhs[static_cast<Eigen::Index>(i)] = -r.data()[patch.unknowns[i]];
+      if (lu.info() == Eigen::Success) delta = lu.solve(rhs);
+      if (lu.info() != Eigen::Success || !delta.allFinite()) {
+        failed = 1;
+      } else {
+        for (size_t i = 0; i < nu; ++i) {
+          const PetscInt u = patch.unknowns[i];
+          const double d = delta[static_cast<Eigen::Index>(i)];
+          a.data()[u] += d;
+          q.data()[u] += c.c_q * d;
+          v.data()[u] += c.c_v * d;
+        }
+        // R changes by M δ + c_f Δf, only in the rows of the window's kernels.
+        system_.patch_force(patch, q.data(), v.data(), f_new.data());
+        system_.patch_mass_product(patch, delta.data(), inertia.data());
+        for (size_t i = 0; i < nr; ++i) {
+          const PetscInt row = patch.rows[i];
+          const double df = f_new[i] - f_old[i];
+          r.data()[row] += inertia[i] + c.c_f * df;
+          f.data()[row] += df;
+        }
+        std::swap(f_old, f_new);
+      }
+      counters_.unknowns += static_cast<long>(nu);
+    }
+    double local[2] = {0.0, static_cast<double>(failed)};
+    for (PetscInt i = 0; i < n; ++i) local[0] += r.data()[i] * r.data()[i];
+    MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm);
+    const double now = std::sqrt(global[0]);
+    if (global[1] > 0.0 || !std::isfinite(now)) {
+      outcome = Outcome::failed;
+      break;
+    }
+    if (now <= atol) {
+      *norm = now;
+      return Outcome::converged;
+    }
+    if (now > 0.5 * previous) break;  // stalled: Newton on a wide enough window contracts fast
+    previous = now;
+  }
+  // Undo.
+  for (size_t i = 0; i < nu; ++i) {
+    const PetscInt u = patch.unknowns[i];
+    a.data()[u] = saved_a[i];
+    q.data()[u] = saved_q[i];
+    v.data()[u] = saved_v[i];
+  }
+  for (size_t i = 0; i < nr; ++i) {
+    r.data()[patch.rows[i]] = saved_r[i];
+    f.data()[patch.rows[i]] = saved_f[i];
+  }
+  return outcome;
+}
+
+}  // namespace catena::solvers
