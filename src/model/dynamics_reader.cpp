@@ -36,7 +36,7 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
                  "error_estimate", "newton", "newton_rtol", "newton_atol",
-                 "max_newton_iterations", "linear_algebra"});
+                 "max_newton_iterations", "linear_algebra", "local_newton"});
   static const std::vector<std::string> types{"hht",          "gauss",        "radau",
                                               "radau_iia",    "lobatto_iiia", "lobatto_iiic",
                                               "sdirk",        "petsc"};
@@ -104,6 +104,11 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
     if (o.newton != "simplified" && o.newton != "full")
       newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
   }
+  const Field local_newton = in.child("local_newton");
+  if (o.type == "hht")
+    o.local_newton = local_newton.boolean_or(o.local_newton);
+  else
+    fail_if_present(local_newton, "'local_newton' applies to hht only");
   const Field linear_algebra = in.child("linear_algebra");
   if (family) {
     o.linear_algebra = linear_algebra.text_or(o.linear_algebra);

@@ -9,6 +9,7 @@
 #include "catena/solvers/algebraic_part.hpp"
 #include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/hermite_interpolation.hpp"
+#include "catena/solvers/local_newton.hpp"
 #include "catena/solvers/reusable_newton.hpp"
 #include "catena/solvers/round_off_floor.hpp"
 
@@ -35,6 +36,7 @@ struct HhtIntegrator::Impl {
   MatHandle coupling;  // Gᵀ (constraints only)
   std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
+  std::unique_ptr<LocalNewton> local;  // null unless options.local_newton_layers > 0
   IntegratorCounters counters;
   bool pending_valid = false;
 
@@ -82,6 +84,7 @@ struct HhtIntegrator::Impl {
       system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), damping_matrix());
       ++counters.jacobian_evaluations;
       round_off.set_tangent(K.get());
+      if (local) local->tangent_refreshed();
     }
     const double s = 1.0 + options.alpha;
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
@@ -128,6 +131,27 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
       system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
       settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
       [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
+  // -hht_local_newton_layers overrides the scene's layers (0: off).
+  PetscInt layers = options.local_newton_layers;
+  CATENA_PETSC(PetscOptionsGetInt(nullptr, "hht_", "-local_newton_layers", &layers, nullptr));
+  if (layers < 0)
+    throw InputError({"", 0, "-hht_local_newton_layers"},
+                     "local Newton layers " + std::to_string(layers) + " is negative; accepted: 0 (off) or more");
+  if (layers > 0) {
+    LocalNewtonSettings local;
+    local.layers = static_cast<int>(layers);
+    PetscReal worn = local.worn_fraction;
+    CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_worn", &worn, nullptr));
+    local.worn_fraction = worn;
+    s.local = std::make_unique<LocalNewton>(system, local);
+    // R(a1) = M a1 + (1 + α) f(q1, v1) − α f0, q1 = q̂ + βh² a1, v1 = v̂ + γh a1; q1, v1
+    // and f1 hold the last residual evaluation's (the iterate's) values.
+    s.newton->set_local_correction([&s](Vec a, Vec r, double atol, double* norm) {
+      const LocalNewton::Coefficients c{1.0 + s.options.alpha, s.beta * s.h * s.h, s.gamma * s.h,
+                                        s.t0 + s.h};
+      return s.local->correct(a, r, s.q1.get(), s.v1.get(), s.f1.get(), c, atol, norm);
+    });
+  }
 }
 
 HhtIntegrator::~HhtIntegrator() = default;
@@ -162,6 +186,8 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.h_matrix = h;
   }
   s.start_attempt();
+  // The local corrections have grown costlier than a new tangent (local_newton.hpp).
+  if (s.local && s.local->tangent_worn()) s.newton->invalidate_tangent();
   CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
   s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
   if (!s.round_off.known()) {  // first attempt: the floor from a tangent at the start
@@ -239,6 +265,8 @@ const IntegratorCounters& HhtIntegrator::counters() const {
   s.counters.residual_evaluations = n.residual_evaluations;
   s.counters.factorizations = n.factorizations;
   s.counters.linear_solves = n.linear_solves;
+  s.counters.local_corrections = n.local_corrections;
+  if (s.local) s.counters.local_unknowns = s.local->counters().unknowns;
   return s.counters;
 }
 

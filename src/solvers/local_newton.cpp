@@ -38,11 +38,38 @@ class OwnedArray {
   PetscScalar* data_ = nullptr;
 };
 
+// The entries of r (n owned) that the windows must hold so that the rest has a norm of at
+// most `budget`: all |r_i| ≥ τ, τ the largest power of two with Σ_{|r_i| < τ} r_i² ≤
+// budget² (one pass, binned by exponent). Scattered small entries (the wake behind a
+// moving load, round-off) stay outside, where a threshold relative to ‖r‖∞ would seed
+// windows around them and widen them needlessly.
+std::vector<PetscInt> large_entries(const double* r, PetscInt n, double budget) {
+  constexpr int kBins = 2100;  // exponents −1074 … 1024, offset
+  constexpr int kOffset = 1075;
+  std::vector<double> squares(kBins, 0.0);
+  for (PetscInt i = 0; i < n; ++i) {
+    if (r[i] == 0.0) continue;
+    int e = 0;
+    std::frexp(r[i], &e);  // |r| ∈ [2^(e−1), 2^e)
+    squares[static_cast<size_t>(std::clamp(e + kOffset, 0, kBins - 1))] += r[i] * r[i];
+  }
+  double below = 0.0;
+  int cut = 0;  // bins < cut stay outside
+  while (cut < kBins && below + squares[static_cast<size_t>(cut)] <= budget * budget)
+    below += squares[static_cast<size_t>(cut++)];
+  const double tau = std::ldexp(1.0, cut - kOffset - 1);  // the lower edge of bin `cut`
+  std::vector<PetscInt> seeds;
+  for (PetscInt i = 0; i < n; ++i)
+    if (r[i] != 0.0 && std::abs(r[i]) >= tau) seeds.push_back(i);
+  return seeds;
+}
+
 }  // namespace
 
 LocalNewton::LocalNewton(assembly::SecondOrderSystem& system, const LocalNewtonSettings& settings)
     : system_(system), settings_(settings), layers_(settings.layers) {
   system_.prepare_local_patches();
+  worn_limit_ = settings_.worn_fraction * static_cast<double>(system_.dof_map().n_global());
 }
 
 bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol,
@@ -52,7 +79,7 @@ bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients&
     ~EndEvent() { PetscLogEventEnd(local_newton_event(), 0, 0, 0, 0); }
   } end_event;
   // Where corrections keep failing (a residual spread over the system, or windows that
-  // cannot be owned alone: contacts, constraints), try ever more rarely: after k failures
+  // cannot be owned alone: constraints, contacts across ranks), try ever more rarely: after k failures
   // in a row, skip the next 2^k − 1 calls (at most 63). Same decision on every rank.
   if (skip_ > 0) {
     --skip_;
@@ -79,16 +106,15 @@ bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients&
 LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficients& c,
                                           double atol, int layers, double* norm) {
   const MPI_Comm comm = system_.comm();
-  PetscReal largest = 0.0;
-  CATENA_PETSC(VecNorm(vecs.r, NORM_INFINITY, &largest));
   PetscInt n = 0;
   CATENA_PETSC(VecGetLocalSize(vecs.r, &n));
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
 
   const OwnedArray a(vecs.a), r(vecs.r), q(vecs.q), v(vecs.v), f(vecs.f);
-  std::vector<PetscInt> seeds;
-  for (PetscInt i = 0; i < n; ++i)
-    if (std::abs(r.data()[i]) >= settings_.seed_fraction * largest) seeds.push_back(i);
-  const assembly::LocalPatch patch = system_.local_patch(seeds, layers);
+  const std::vector<PetscInt> seeds =
+      large_entries(r.data(), n, settings_.outside_fraction * atol / std::sqrt(ranks));
+  const assembly::LocalPatch patch = system_.local_patch(seeds, layers, c.t);
   const size_t nu = patch.unknowns.size(), nr = patch.rows.size();
 
   // What the windows cannot change must already meet the tolerance (with a margin for the
@@ -99,7 +125,8 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   sums[0] -= sums[1];
   double global[3] = {0.0, 0.0, 0.0};
   MPI_Allreduce(sums, global, 3, MPI_DOUBLE, MPI_SUM, comm);
-  if (global[2] == 0.0) return Outcome::no_window;
+  const double total_unknowns = global[2];
+  if (total_unknowns == 0.0) return Outcome::no_window;
   if (std::sqrt(std::max(global[0], 0.0)) > 0.9 * atol) return Outcome::too_narrow;
   double previous = std::sqrt(std::max(global[0], 0.0) + global[1]);
 
@@ -122,6 +149,8 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   Outcome outcome = Outcome::too_narrow;
   for (int it = 1; it <= settings_.max_iterations; ++it) {
     ++counters_.iterations;
+    worked_since_tangent_ += total_unknowns;
+    counters_.unknowns += static_cast<long>(total_unknowns);
     int failed = 0;
     if (nu > 0) {
       // Newton on the window: the unknowns' block of M + c_f (c_q K + c_v C), fresh.
@@ -157,7 +186,6 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
         }
         std::swap(f_old, f_new);
       }
-      counters_.unknowns += static_cast<long>(nu);
     }
     double local[2] = {0.0, static_cast<double>(failed)};
     for (PetscInt i = 0; i < n; ++i) local[0] += r.data()[i] * r.data()[i];

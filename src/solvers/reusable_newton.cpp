@@ -81,6 +81,10 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
     *reason = SNES_DIVERGED_FNORM_NAN;
   } else if (fnorm <= self->atol_) {
     *reason = SNES_CONVERGED_FNORM_ABS;
+  } else if (it > 0 && self->local_ && self->try_local_correction(snes)) {
+    *reason = SNES_CONVERGED_FNORM_ABS;
+  } else if (self->guard_.has_exception()) {
+    return PETSC_ERR_USER;  // the correction threw: SNESSolve stops, solve() rethrows
   } else if (it > 0 && snorm <= kNewtonStepTolerance * xnorm) {
     *reason = SNES_CONVERGED_SNORM_RELATIVE;
   } else if (it > 0) {
@@ -115,6 +119,19 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
   self->previous_norm_ = fnorm;
   if (*reason < 0) self->failure_ = why.str();
   return 0;
+}
+
+bool ReusableNewton::try_local_correction(SNES snes) {
+  Vec x = nullptr, F = nullptr;
+  if (SNESGetSolution(snes, &x) != 0 || SNESGetFunction(snes, &F, nullptr, nullptr) != 0)
+    return false;
+  bool done = false;
+  double norm = 0.0;
+  if (guard_.run([&] { done = local_(x, F, atol_, &norm); }) != 0) return false;
+  if (!done) return false;
+  local_norm_ = norm;
+  ++counters_.local_corrections;
+  return true;
 }
 
 NewtonResult ReusableNewton::solve(Vec x, double atol) {
@@ -168,6 +185,7 @@ std::string ReusableNewton::linear_failure(SNESConvergedReason reason, PetscInt 
 NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   full_newton_now_ = full_newton;
   atol_ = atol;
+  local_norm_ = -1.0;
   previous_norm_ = -1.0;
   previous_theta_ = 0.0;
   max_contraction_ = 0.0;
@@ -186,6 +204,7 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   CATENA_PETSC(SNESGetIterationNumber(snes_.get(), &its));
   PetscReal norm = 0.0;
   CATENA_PETSC(SNESGetFunctionNorm(snes_.get(), &norm));
+  if (local_norm_ >= 0.0) norm = local_norm_;  // SNES keeps the norm before the correction
   counters_.iterations += its;
   counters_.linear_solves += its;
   result.iterations = static_cast<int>(its);

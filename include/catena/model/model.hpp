@@ -178,6 +178,9 @@ struct IntegratorOptions {
   std::string newton = "simplified";    // simplified (frozen Jacobian) | full
   // IRK stage Newton: auto (decoupled where exact) | decoupled | coupled
   std::string linear_algebra = "auto";
+  // HHT: finish Newton solves whose residual is left in a few windows by Newton on those
+  // windows (solvers/local_newton.hpp).
+  bool local_newton = true;
   double newton_rtol = 1e-10;  // Newton residual tolerance, relative to the force scale
   double newton_atol = 1e-8;   // N
   int max_newton_iterations = 10;

@@ -24,6 +24,7 @@
 #include <memory>
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/solvers/local_newton.hpp"
 #include "catena/solvers/time_integrator.hpp"
 
 namespace catena::solvers {
@@ -34,6 +35,9 @@ struct HhtOptions {
   double atol = 1e-8;   // N
   int max_newton_iterations = 10;
   bool full_newton = false;
+  // Local Newton correction (local_newton.hpp): kernel layers around the large residual
+  // entries to start with; 0 turns it off.
+  int local_newton_layers = LocalNewtonSettings{}.layers;
 };
 
 class HhtIntegrator final : public TimeIntegrator {

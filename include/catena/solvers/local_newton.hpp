@@ -25,7 +25,13 @@ struct LocalNewtonSettings {
   int layers = 32;              // kernel layers around the large entries, to start with
   int max_layers = 1024;        // the widest window tried
   int max_iterations = 4;       // local Newton iterations per correction
-  double seed_fraction = 1e-2;  // entries above this fraction of ‖R‖∞ seed the windows
+  // The windows hold the largest entries of R, all but a rest of norm outside_fraction·atol.
+  double outside_fraction = 0.5;
+  // Windows grow as the tangent ages (a stale tangent's error follows the waves a moving
+  // load leaves behind). A refresh (element tangents, Newton matrix, factorisation) costs
+  // about as much as local corrections over n/2 unknowns (docs/performance.md, "Local
+  // Newton correction"): past that much local work since the last tangent, refresh.
+  double worn_fraction = 0.5;
 };
 
 struct LocalNewtonCounters {
@@ -40,6 +46,7 @@ class LocalNewton {
   // R's coefficients for the current step.
   struct Coefficients {
     double c_f = 1.0, c_q = 0.0, c_v = 0.0;
+    double t = 0.0;  // s: the time f is evaluated at (moving contacts)
   };
 
   // Collective (assembly::SecondOrderSystem::prepare_local_patches).
@@ -56,6 +63,13 @@ class LocalNewton {
   // The window width (kernel layers) the next correction starts from.
   int layers() const { return layers_; }
 
+  // Not collective (same answer on every rank). True once the corrections since the last
+  // tangent have together worked on `worn_fraction`·n unknowns (n: the system's size): the
+  // owner should then refresh the tangent (see LocalNewtonSettings::worn_fraction).
+  bool tangent_worn() const { return worked_since_tangent_ > worn_limit_; }
+  // The owner evaluated a new tangent.
+  void tangent_refreshed() { worked_since_tangent_ = 0.0; }
+
  private:
   enum class Outcome { converged, no_window, too_narrow, failed };
   struct Vectors {
@@ -70,6 +84,8 @@ class LocalNewton {
   LocalNewtonCounters counters_;
   int layers_;
   int misses_ = 0, skip_ = 0;  // failures in a row; calls still to skip
+  double worked_since_tangent_ = 0.0;  // window unknowns × iterations, all ranks
+  double worn_limit_ = 0.0;
 };
 
 }  // namespace catena::solvers

@@ -34,6 +34,7 @@ namespace catena::solvers {
 
 struct NewtonCounters {
   long iterations = 0;
+  long local_corrections = 0;  // solves a local correction finished
   long residual_evaluations = 0;
   long tangent_evaluations = 0;
   long factorizations = 0;
@@ -95,6 +96,13 @@ class ReusableNewton {
   // (MUMPS's status is read here only when the KSP's own PC is the factorisation).
   using LinearSolveCheck = std::function<std::string()>;
   CallbackGuard& callback_guard() { return guard_; }
+
+  // Collective. Tried after every Newton iteration that leaves ‖F‖ above the tolerance,
+  // before the contraction rules: may finish the solve by changing x and F in place
+  // (returns true and the new ‖F‖; e.g. LocalNewton), and leaves both unchanged when it
+  // returns false.
+  using LocalCorrection = std::function<bool(Vec x, Vec F, double atol, double* norm)>;
+  void set_local_correction(LocalCorrection correction) { local_ = std::move(correction); }
   void set_linear_solve_check(LinearSolveCheck check) { linear_check_ = std::move(check); }
 
  private:
@@ -104,6 +112,9 @@ class ReusableNewton {
   std::string linear_failure(SNESConvergedReason reason, PetscInt its) const;
   static PetscErrorCode form_function(SNES, Vec x, Vec r, void* ctx);
   static PetscErrorCode form_jacobian(SNES, Vec x, Mat J, Mat P, void* ctx);
+  // Collective. Runs the local correction on SNES's iterate and residual: true if it ended
+  // the solve (an exception it throws is kept in guard_, and converged() stops SNESSolve).
+  bool try_local_correction(SNES snes);
   static PetscErrorCode converged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm,
                                   PetscReal fnorm, SNESConvergedReason* reason, void* ctx);
 
@@ -111,6 +122,7 @@ class ReusableNewton {
   Residual residual_fn_;
   MatrixBuilder builder_;
   LinearSolveCheck linear_check_;
+  LocalCorrection local_;
   Vec residual_;
   VecHandle guess_;  // the initial guess, kept for a retry (created at the first need)
   SnesHandle snes_;
@@ -121,6 +133,7 @@ class ReusableNewton {
   // evaluated; −1: in an earlier solve.
   PetscInt tangent_iterate_ = -1;
   bool full_newton_now_ = false;  // this solve re-evaluates the tangent at every iterate
+  double local_norm_ = -1.0;  // ‖F‖ after a local correction that ended the solve, else −1
   double atol_ = 0.0, previous_norm_ = 0.0, previous_theta_ = 0.0, max_contraction_ = 0.0;
   std::string failure_;
 };

@@ -22,6 +22,8 @@ struct IntegratorCounters {
   long jacobian_evaluations = 0; // element K/C assemblies
   long factorizations = 0;       // numeric LU/LDLᵀ factorisations
   long linear_solves = 0;        // pairs of triangular solves
+  long local_corrections = 0;    // Newton solves finished by a local correction (HHT)
+  long local_unknowns = 0;       // window unknowns of local Newton iterations, summed
 };
 
 // Weighted RMS norm of a local error in the displacement q − q_ref (q_ref: the reference
