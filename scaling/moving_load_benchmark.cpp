@@ -147,6 +147,7 @@ struct EventTotals {
 EventTotals event_totals(MPI_Comm comm, PetscLogStage stage, const char* name) {
   PetscLogEvent event = 0;
   CATENA_PETSC(PetscLogEventGetId(name, &event));
+  if (event < 0) return {0.0, 0.0};  // never registered: the run had no such event
   PetscEventPerfInfo info{};
   CATENA_PETSC(PetscLogEventGetPerfInfo(stage, event, &info));
   double local[2] = {static_cast<double>(info.count), info.time}, global[2] = {0.0, 0.0};
@@ -307,8 +308,11 @@ int main(int argc, char** argv) {
   const EventTotals factor = event_totals(comm, steps_stage, "MatLUFactorNum");
   const EventTotals solve = event_totals(comm, steps_stage, "MatSolve");
   const EventTotals analysis = event_totals(comm, first_stage, "MatLUFactorSym");
+  // HHT's local Newton corrections (solvers/local_newton.hpp; 0 if none ran).
+  const EventTotals local = event_totals(comm, steps_stage, "CatLocalNewton");
   const double t_step = rest_seconds / n_rest;
-  const double accounted = force.seconds + jacobian.seconds + factor.seconds + solve.seconds;
+  const double accounted =
+      force.seconds + jacobian.seconds + factor.seconds + solve.seconds + local.seconds;
   const auto each = [](const EventTotals& e) { return e.count > 0 ? e.seconds / e.count : 0.0; };
   // Per stage-system factorisation or solve (the decoupled IRK's are one per block).
   const auto per_count = [](const EventTotals& e, long count) {
@@ -359,6 +363,12 @@ int main(int argc, char** argv) {
         "pair)\n",
         per_step(total.linear_solves, k1.linear_solves), ms * solve_each,
         ms * solve.seconds / n_rest);
+    std::printf(
+        "    local Newton corrections %7.3f  %8.2f  %10.2f   (CatLocalNewton; finished %.3f, "
+        "%.0f window unknowns per step)\n",
+        local.count / n_rest, ms * each(local), ms * local.seconds / n_rest,
+        per_step(total.local_corrections, k1.local_corrections),
+        per_step(total.local_unknowns, k1.local_unknowns));
     std::printf("    other (vector ops, mass products, SNES)     %10.2f\n",
                 ms * (t_step - accounted / n_rest));
     std::printf("    step wall time                              %10.2f\n", ms * t_step);
