@@ -14,6 +14,33 @@
 #include "catena/solvers/round_off_floor.hpp"
 
 namespace catena::solvers {
+namespace {
+
+// The local Newton settings with the options database's overrides; false if it is off.
+bool local_newton_options(bool on, LocalNewtonSettings& local) {
+  PetscInt layers = on ? local.layers : 0;
+  PetscReal worn = local.worn_fraction, window = local.max_window_fraction;
+  CATENA_PETSC(PetscOptionsGetInt(nullptr, "hht_", "-local_newton_layers", &layers, nullptr));
+  CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_worn", &worn, nullptr));
+  CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_max_window", &window, nullptr));
+  if (layers < 0)
+    throw InputError({"", 0, "-hht_local_newton_layers"},
+                     "local Newton layers " + std::to_string(layers) +
+                         " is negative; accepted: 0 (off) or more");
+  if (!(worn > 0.0))
+    throw InputError({"", 0, "-hht_local_newton_worn"},
+                     "local Newton worn fraction " + std::to_string(worn) + "; accepted: > 0");
+  if (!(window > 0.0 && window <= 1.0))
+    throw InputError({"", 0, "-hht_local_newton_max_window"},
+                     "local Newton window fraction " + std::to_string(window) +
+                         "; accepted: (0, 1]");
+  local.layers = static_cast<int>(layers);
+  local.worn_fraction = worn;
+  local.max_window_fraction = window;
+  return layers > 0;
+}
+
+}  // namespace
 
 struct HhtIntegrator::Impl {
   assembly::SecondOrderSystem& system;
@@ -36,7 +63,7 @@ struct HhtIntegrator::Impl {
   MatHandle coupling;  // Gᵀ (constraints only)
   std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
-  std::unique_ptr<LocalNewton> local;  // null unless options.local_newton_layers > 0
+  std::unique_ptr<LocalNewton> local;  // null unless options.local_newton
   IntegratorCounters counters;
   bool pending_valid = false;
 
@@ -131,18 +158,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
       system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
       settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
       [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
-  // -hht_local_newton_layers overrides the scene's layers (0: off).
-  PetscInt layers = options.local_newton_layers;
-  CATENA_PETSC(PetscOptionsGetInt(nullptr, "hht_", "-local_newton_layers", &layers, nullptr));
-  if (layers < 0)
-    throw InputError({"", 0, "-hht_local_newton_layers"},
-                     "local Newton layers " + std::to_string(layers) + " is negative; accepted: 0 (off) or more");
-  if (layers > 0) {
-    LocalNewtonSettings local;
-    local.layers = static_cast<int>(layers);
-    PetscReal worn = local.worn_fraction;
-    CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_worn", &worn, nullptr));
-    local.worn_fraction = worn;
+  LocalNewtonSettings local = options.local_newton_settings;
+  const bool use_local = local_newton_options(options.local_newton, local);
+  if (use_local) {
     s.local = std::make_unique<LocalNewton>(system, local);
     // R(a1) = M a1 + (1 + α) f(q1, v1) − α f0, q1 = q̂ + βh² a1, v1 = v̂ + γh a1; q1, v1
     // and f1 hold the last residual evaluation's (the iterate's) values.

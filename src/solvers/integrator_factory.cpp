@@ -2,7 +2,6 @@
 
 #include "catena/core/error.hpp"
 #include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/local_newton.hpp"
 #include "catena/solvers/irk_integrator.hpp"
 #include "catena/solvers/petsc_ts_integrator.hpp"
 
@@ -17,7 +16,7 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     h.atol = o.newton_atol;
     h.max_newton_iterations = o.max_newton_iterations;
     h.full_newton = o.newton == "full";
-    h.local_newton_layers = o.local_newton ? LocalNewtonSettings{}.layers : 0;
+    h.local_newton = o.local_newton;
     return std::make_unique<HhtIntegrator>(system, h);
   }
   if (o.type == "petsc") {

@@ -127,6 +127,9 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   MPI_Allreduce(sums, global, 3, MPI_DOUBLE, MPI_SUM, comm);
   const double total_unknowns = global[2];
   if (total_unknowns == 0.0) return Outcome::no_window;
+  if (total_unknowns > settings_.max_window_fraction *
+                           static_cast<double>(system_.dof_map().n_global()))
+    return Outcome::too_wide;
   if (std::sqrt(std::max(global[0], 0.0)) > 0.9 * atol) return Outcome::too_narrow;
   double previous = std::sqrt(std::max(global[0], 0.0) + global[1]);
 

@@ -69,4 +69,23 @@ model::Model cable_pendulum(int n_elements, bool driven_pivot) {
   return m;
 }
 
+std::string pantograph_on_wire_scene(double start) {
+  return R"(
+sections:
+  cw: {type: cable, EA: 1.8e7, EI: 195, mass_per_length: 1.35}
+nodes:
+  - {id: 1, position: [0, 0, 0]}
+  - {id: 2, position: [30, 0, 0]}
+lines:
+  - {name: cw, from: 1, to: 2, elements: 60, section: cw, tension: 20000}
+supports:
+  - {node: 1, fix: pinned}
+  - {node: 2, fix: pinned}
+pantographs:
+  - {name: p, line: cw, speed: 60, start: )" +
+         std::to_string(start) + R"(, static_force: 120, model: en50318}
+analysis: {type: dynamic, duration: 1.0}
+)";
+}
+
 }  // namespace catena::test

@@ -35,9 +35,10 @@ struct HhtOptions {
   double atol = 1e-8;   // N
   int max_newton_iterations = 10;
   bool full_newton = false;
-  // Local Newton correction (local_newton.hpp): kernel layers around the large residual
-  // entries to start with; 0 turns it off.
-  int local_newton_layers = LocalNewtonSettings{}.layers;
+  // Local Newton correction (local_newton.hpp) and its settings; -hht_local_newton_layers
+  // (0: off), -hht_local_newton_worn and -hht_local_newton_max_window override them.
+  bool local_newton = true;
+  LocalNewtonSettings local_newton_settings;
 };
 
 class HhtIntegrator final : public TimeIntegrator {

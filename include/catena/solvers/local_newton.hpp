@@ -27,6 +27,12 @@ struct LocalNewtonSettings {
   int max_iterations = 4;       // local Newton iterations per correction
   // The windows hold the largest entries of R, all but a rest of norm outside_fraction·atol.
   double outside_fraction = 0.5;
+  // A correction must cost less than the global iteration it replaces: measured on the
+  // moving-load benchmark, a window iteration costs about 1.9 µs per unknown and a global
+  // iteration (a residual and a solve pair over n = 240 000 DOFs) 16 ms, the price of
+  // 0.035·n window unknowns (docs/performance.md, "Local Newton correction"). Wider
+  // windows are not tried.
+  double max_window_fraction = 0.03;
   // Windows grow as the tangent ages (a stale tangent's error follows the waves a moving
   // load leaves behind). A refresh (element tangents, Newton matrix, factorisation) costs
   // about as much as local corrections over n/2 unknowns (docs/performance.md, "Local
@@ -71,7 +77,7 @@ class LocalNewton {
   void tangent_refreshed() { worked_since_tangent_ = 0.0; }
 
  private:
-  enum class Outcome { converged, no_window, too_narrow, failed };
+  enum class Outcome { converged, no_window, too_narrow, too_wide, failed };
   struct Vectors {
     Vec a, r, q, v, f;
   };
