@@ -42,6 +42,7 @@ void SecondOrderSystem::prepare_local_patches() {
   VecHandle touches = create_vector();
   {
     detail::LocalArrayWrite local(touches.get());
+    CATENA_PETSC(VecSet(local.local(), 0.0));  // ghosts too (create_vector zeroes the owned part)
     for (size_t k = 0; k < kernels_.size(); ++k)
       for (size_t i = kernel_offset_[k]; i < kernel_offset_[k + 1]; ++i)
         if (const PetscInt l = local_index_[i]; l >= 0) local.data()[l] += 1.0;
@@ -168,6 +169,18 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
   return patch;
 }
 
+size_t SecondOrderSystem::evaluate_owned(size_t k, const double* q, const double* v,
+                                         elements::Request request, elements::LocalOutput out,
+                                         double* q_el, double* v_el) const {
+  const elements::Element& el = *kernels_[k].element;
+  const size_t nd = static_cast<size_t>(el.n_dofs());
+  gather(k, q, v, q_el, v_el);
+  elements::LocalState s{{q_el, nd}, {}, {}};
+  if (v) s.v = {v_el, nd};
+  el.evaluate(s, request, out);
+  return nd;
+}
+
 void SecondOrderSystem::patch_force(const LocalPatch& patch, const double* q, const double* v,
                                     double* f_rows) const {
   std::fill(f_rows, f_rows + patch.rows.size(), 0.0);
@@ -175,12 +188,8 @@ void SecondOrderSystem::patch_force(const LocalPatch& patch, const double* q, co
   std::vector<double> q_el(m), v_el(m), f_el(m);
   const PetscInt* row = patch.kernel_rows.data();
   for (size_t k : patch.kernels) {
-    const elements::Element& el = *kernels_[k].element;
-    const size_t nd = static_cast<size_t>(el.n_dofs());
-    gather(k, q, v, q_el.data(), v_el.data());
-    elements::LocalState s{{q_el.data(), nd}, {}, {}};
-    if (v) s.v = {v_el.data(), nd};
-    el.evaluate(s, {true, false, false}, {f_el.data(), nullptr, nullptr});
+    const size_t nd = evaluate_owned(k, q, v, {true, false, false},
+                                     {f_el.data(), nullptr, nullptr}, q_el.data(), v_el.data());
     for (size_t i = 0; i < nd; ++i)
       if (row[i] >= 0) f_rows[row[i]] += f_el[i];
     row += nd;
@@ -230,13 +239,9 @@ std::vector<PatchEntry> SecondOrderSystem::patch_matrix(const LocalPatch& patch,
   const elements::Request request{false, c.c_K != 0.0, c.c_C != 0.0};
   const PetscInt* row = patch.kernel_rows.data();
   for (size_t k : patch.kernels) {
-    const elements::Element& el = *kernels_[k].element;
-    const size_t nd = static_cast<size_t>(el.n_dofs());
-    gather(k, q, v, q_el.data(), v_el.data());
-    elements::LocalState s{{q_el.data(), nd}, {}, {}};
-    if (v) s.v = {v_el.data(), nd};
-    el.evaluate(s, request, {f_el.data(), K.data(), C.data()});
-    if (c.c_M != 0.0) el.mass(M.data());
+    const size_t nd = evaluate_owned(k, q, v, request, {f_el.data(), K.data(), C.data()},
+                                     q_el.data(), v_el.data());
+    if (c.c_M != 0.0) kernels_[k].element->mass(M.data());
     for (size_t i = 0; i < nd; ++i) unknown[i] = row[i] >= 0 ? patch.unknown_of_row[row[i]] : -1;
     for (size_t i = 0; i < nd; ++i) {
       if (unknown[i] < 0) continue;

@@ -23,10 +23,10 @@ bool local_newton_options(bool on, LocalNewtonSettings& local) {
   CATENA_PETSC(PetscOptionsGetInt(nullptr, "hht_", "-local_newton_layers", &layers, nullptr));
   CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_worn", &worn, nullptr));
   CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_max_window", &window, nullptr));
-  if (layers < 0)
+  if (layers < 0 || layers > local.max_layers)
     throw InputError({"", 0, "-hht_local_newton_layers"},
-                     "local Newton layers " + std::to_string(layers) +
-                         " is negative; accepted: 0 (off) or more");
+                     "local Newton layers " + std::to_string(layers) + "; accepted: 0 (off) to " +
+                         std::to_string(local.max_layers));
   if (!(worn > 0.0))
     throw InputError({"", 0, "-hht_local_newton_worn"},
                      "local Newton worn fraction " + std::to_string(worn) + "; accepted: > 0");

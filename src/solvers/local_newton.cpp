@@ -120,9 +120,11 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   // What the windows cannot change must already meet the tolerance (with a margin for the
   // rows at the windows' edges, which the correction moves too).
   double sums[3] = {0.0, 0.0, static_cast<double>(nu)};  // outside², inside², unknowns
-  for (PetscInt i = 0; i < n; ++i) sums[0] += r.data()[i] * r.data()[i];
-  for (PetscInt u : patch.unknowns) sums[1] += r.data()[u] * r.data()[u];
-  sums[0] -= sums[1];
+  for (PetscInt i = 0, next = 0; i < n; ++i) {  // unknowns ascending: `next` walks them
+    const bool inside = next < static_cast<PetscInt>(nu) && patch.unknowns[next] == i;
+    sums[inside ? 1 : 0] += r.data()[i] * r.data()[i];
+    if (inside) ++next;
+  }
   double global[3] = {0.0, 0.0, 0.0};
   MPI_Allreduce(sums, global, 3, MPI_DOUBLE, MPI_SUM, comm);
   const double total_unknowns = global[2];

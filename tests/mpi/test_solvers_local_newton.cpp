@@ -65,16 +65,6 @@ void add_wave(Vec x, double amplitude, double k, double phase) {
   CATENA_PETSC(VecAssemblyEnd(x));
 }
 
-std::vector<double> owned_values(Vec x) {
-  PetscInt n = 0;
-  CATENA_PETSC(VecGetLocalSize(x, &n));
-  const PetscScalar* a = nullptr;
-  CATENA_PETSC(VecGetArrayRead(x, &a));
-  std::vector<double> out(a, a + n);
-  CATENA_PETSC(VecRestoreArrayRead(x, &a));
-  return out;
-}
-
 double max_abs(Vec x) {
   PetscReal m = 0.0;
   CATENA_PETSC(VecNorm(x, NORM_INFINITY, &m));
@@ -104,8 +94,8 @@ TEST(LocalPatch, EvaluatesWhatTheWholeSystemDoes) {
 
   const assembly::LocalPatch patch = middle_patch(system, 4);
   ASSERT_FALSE(patch.empty());  // 80 elements per rank at most 3 ranks: an interior exists
-  const std::vector<double> qa = owned_values(q.get()), va = owned_values(v.get()),
-                            fa = owned_values(f.get());
+  const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get()),
+                            fa = catena::test::owned_values(f.get());
   const double scale = *std::max_element(fa.begin(), fa.end(),
                                          [](double x, double y) { return std::abs(x) < std::abs(y); });
 
@@ -133,7 +123,7 @@ TEST(LocalPatch, EvaluatesWhatTheWholeSystemDoes) {
   CATENA_PETSC(MatMult(M.get(), d.get(), Md.get()));
   std::vector<double> Md_rows(patch.rows.size());
   system.patch_mass_product(patch, d_unknowns.data(), Md_rows.data());
-  std::vector<double> Md_all = owned_values(Md.get());
+  std::vector<double> Md_all = catena::test::owned_values(Md.get());
   const double Md_scale = max_abs(Md.get());
   for (size_t i = 0; i < patch.rows.size(); ++i) {
     EXPECT_NEAR(Md_rows[i], Md_all[patch.rows[i]], 1e-13 * Md_scale) << "row " << patch.rows[i];
@@ -183,7 +173,7 @@ TEST(LocalPatch, ChangingTheUnknownsChangesTheForceOnlyInTheRows) {
   std::vector<double> before(patch.rows.size()), after(patch.rows.size());
   system.force({q.get(), v.get(), {}}, f0.get());
   {
-    const std::vector<double> qa = owned_values(q.get()), va = owned_values(v.get());
+    const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get());
     system.patch_force(patch, qa.data(), va.data(), before.data());
   }
   for (size_t i = 0; i < patch.unknowns.size(); ++i) {
@@ -197,11 +187,11 @@ TEST(LocalPatch, ChangingTheUnknownsChangesTheForceOnlyInTheRows) {
   }
   system.force({q.get(), v.get(), {}}, f1.get());
   {
-    const std::vector<double> qa = owned_values(q.get()), va = owned_values(v.get());
+    const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get());
     system.patch_force(patch, qa.data(), va.data(), after.data());
   }
-  std::vector<double> change = owned_values(f1.get());
-  const std::vector<double> old = owned_values(f0.get());
+  std::vector<double> change = catena::test::owned_values(f1.get());
+  const std::vector<double> old = catena::test::owned_values(f0.get());
   for (size_t i = 0; i < change.size(); ++i) change[i] -= old[i];
   double largest = 0.0;
   for (double x : change) largest = std::max(largest, std::abs(x));
@@ -248,8 +238,8 @@ TEST(LocalPatch, AContactCountsAsAKernel) {
       EXPECT_FALSE(std::binary_search(patch.unknowns.begin(), patch.unknowns.end(), l));
     return;
   }
-  const std::vector<double> qa = owned_values(q.get()), va = owned_values(v.get()),
-                            fa = owned_values(f.get());
+  const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get()),
+                            fa = catena::test::owned_values(f.get());
   std::vector<double> f_rows(patch.rows.size());
   system.patch_force(patch, qa.data(), va.data(), f_rows.data());
   for (size_t i = 0; i < patch.rows.size(); ++i) {
@@ -328,11 +318,11 @@ TEST(LocalNewton, FinishesALocalDisturbanceExactly) {
   // default cost cap (0.03·n unknowns) refuses them, and changes nothing.
   solvers::LocalNewtonSettings settings;
   settings.layers = 16;
-  const std::vector<double> a_before = owned_values(a.get()), r_before = owned_values(r.get());
+  const std::vector<double> a_before = catena::test::owned_values(a.get()), r_before = catena::test::owned_values(r.get());
   EXPECT_FALSE(solvers::LocalNewton(system, settings)
                    .correct(a.get(), r.get(), q.get(), v.get(), f.get(), R.c, atol, &norm));
-  EXPECT_EQ(owned_values(a.get()), a_before);
-  EXPECT_EQ(owned_values(r.get()), r_before);
+  EXPECT_EQ(catena::test::owned_values(a.get()), a_before);
+  EXPECT_EQ(catena::test::owned_values(r.get()), r_before);
   // Without the cap, the correction itself.
   settings.max_window_fraction = 1.0;
   solvers::LocalNewton local(system, settings);
@@ -370,7 +360,7 @@ TEST(LocalNewton, LeavesASpreadResidualUntouched) {
   add_wave(a.get(), 1.0, 0.9, 0.3);  // everywhere
   R.evaluate(a.get(), q.get(), v.get(), f.get(), r.get());
   std::vector<std::vector<double>> before;
-  for (Vec x : {a.get(), r.get(), q.get(), v.get(), f.get()}) before.push_back(owned_values(x));
+  for (Vec x : {a.get(), r.get(), q.get(), v.get(), f.get()}) before.push_back(catena::test::owned_values(x));
 
   solvers::LocalNewtonSettings uncapped;  // so that the refusal is the spread's, not the cap's
   uncapped.max_window_fraction = 1.0;
@@ -379,7 +369,7 @@ TEST(LocalNewton, LeavesASpreadResidualUntouched) {
   EXPECT_FALSE(local.correct(a.get(), r.get(), q.get(), v.get(), f.get(), R.c, 1e-3, &norm));
   int k = 0;
   for (Vec x : {a.get(), r.get(), q.get(), v.get(), f.get()})
-    EXPECT_EQ(owned_values(x), before[static_cast<size_t>(k++)]) << "vector " << k;
+    EXPECT_EQ(catena::test::owned_values(x), before[static_cast<size_t>(k++)]) << "vector " << k;
 }
 
 namespace {

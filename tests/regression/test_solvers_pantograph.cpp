@@ -58,15 +58,6 @@ void set_array(Vec x, const std::vector<double>& values) {
   for (size_t i = 0; i < values.size(); ++i) a[i] = values[i];
   CATENA_PETSC(VecRestoreArray(x, &a));
 }
-std::vector<double> get_array(Vec x) {
-  PetscInt n = 0;
-  CATENA_PETSC(VecGetLocalSize(x, &n));
-  const PetscScalar* a = nullptr;
-  CATENA_PETSC(VecGetArrayRead(x, &a));
-  std::vector<double> out(a, a + n);
-  CATENA_PETSC(VecRestoreArrayRead(x, &a));
-  return out;
-}
 
 }  // namespace
 
@@ -83,7 +74,7 @@ TEST(PantographContact, JacobianMatchesFiniteDifferences) {
   PetscInt n = 0;
   CATENA_PETSC(VecGetSize(q.get(), &n));
   // Head 2 cm into the wire, everything moving a little.
-  std::vector<double> q0 = get_array(q.get()), v0(static_cast<size_t>(n));
+  std::vector<double> q0 = catena::test::owned_values(q.get()), v0(static_cast<size_t>(n));
   const int head = m.contacts[0].head_node;
   const PetscInt head_z = system.dof_map().global_dof(head, 2);
   q0[static_cast<size_t>(head_z)] += 0.02;
@@ -96,13 +87,13 @@ TEST(PantographContact, JacobianMatchesFiniteDifferences) {
     set_array(q.get(), x);
     set_array(v.get(), v0);
     system.force({q.get(), v.get(), {}, t}, f.get());
-    out = get_array(f.get());
+    out = catena::test::owned_values(f.get());
   };
   auto residual_v = [&](const std::vector<double>& x, std::vector<double>& out) {
     set_array(q.get(), q0);
     set_array(v.get(), x);
     system.force({q.get(), v.get(), {}, t}, f.get());
-    out = get_array(f.get());
+    out = catena::test::owned_values(f.get());
   };
   const auto K_fd = catena::test::central_difference_jacobian(residual_q, q0, static_cast<int>(n));
   const auto C_fd = catena::test::central_difference_jacobian(residual_v, v0, static_cast<int>(n));

@@ -174,6 +174,10 @@ class SecondOrderSystem {
   // Gathers kernel k's local state from the ghosted local arrays.
   void gather(size_t k, const double* q_local, const double* v_local, double* q_el,
               double* v_el) const;
+  // Evaluates kernel k at owned arrays q, v (v may be null; every DOF of k owned, as in a
+  // local patch) into out, with caller buffers for its local state; returns its DOF count.
+  size_t evaluate_owned(size_t k, const double* q, const double* v, elements::Request request,
+                        elements::LocalOutput out, double* q_el, double* v_el) const;
   void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
   // Adds −f_ext of the moving loads at time t into the ghosted local force array.
   void add_moving_loads(double t, double* f_local) const;

@@ -35,8 +35,9 @@ struct LocalNewtonSettings {
   double max_window_fraction = 0.03;
   // Windows grow as the tangent ages (a stale tangent's error follows the waves a moving
   // load leaves behind). A refresh (element tangents, Newton matrix, factorisation) costs
-  // about as much as local corrections over n/2 unknowns (docs/performance.md, "Local
-  // Newton correction"): past that much local work since the last tangent, refresh.
+  // about as much as local corrections over 0.26·n unknowns (docs/performance.md, "Local
+  // Newton correction"); past n/2 of local work since the last tangent, refresh (about
+  // twice the break-even: a refresh narrows the windows only partly).
   double worn_fraction = 0.5;
 };
 
@@ -73,8 +74,11 @@ class LocalNewton {
   // tangent have together worked on `worn_fraction`·n unknowns (n: the system's size): the
   // owner should then refresh the tangent (see LocalNewtonSettings::worn_fraction).
   bool tangent_worn() const { return worked_since_tangent_ > worn_limit_; }
-  // The owner evaluated a new tangent.
-  void tangent_refreshed() { worked_since_tangent_ = 0.0; }
+  // The owner evaluated a new tangent: the windows start again from their first width.
+  void tangent_refreshed() {
+    worked_since_tangent_ = 0.0;
+    layers_ = settings_.layers;
+  }
 
  private:
   enum class Outcome { converged, no_window, too_narrow, too_wide, failed };

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "model_builders.hpp"
 
@@ -89,6 +90,16 @@ void TautString::pluck(const assembly::SecondOrderSystem& system, Vec q, double 
   }
   VecAssemblyBegin(q);
   VecAssemblyEnd(q);
+}
+
+std::vector<double> owned_values(Vec x) {
+  PetscInt n = 0;
+  CATENA_PETSC(VecGetLocalSize(x, &n));
+  const PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(x, &a));
+  std::vector<double> out(a, a + n);
+  CATENA_PETSC(VecRestoreArrayRead(x, &a));
+  return out;
 }
 
 }  // namespace catena::test

@@ -2,6 +2,8 @@
 // Models and helpers shared by the time-integration tests.
 #include <petscvec.h>
 
+#include <vector>
+
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/model/model.hpp"
 #include "catena/solvers/butcher_tableau.hpp"
@@ -24,6 +26,8 @@ model::Model oscillator(double mass, double omega);
 double global_value(MPI_Comm comm, Vec x, PetscInt g);
 // Collective. Sets global DOF g of x (the owner writes).
 void set_global_value(Vec x, PetscInt g, double value);
+// Not collective. A copy of x's owned entries.
+std::vector<double> owned_values(Vec x);
 
 // Collective. n fixed steps of size dt; throws NumericalError if Newton fails.
 void advance_fixed(solvers::TimeIntegrator& integrator, double dt, int n);
