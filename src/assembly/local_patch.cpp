@@ -140,9 +140,12 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
       patch.unknowns.erase(std::remove_if(patch.unknowns.begin(), patch.unknowns.end(),
                                           [&](PetscInt l) { return touches(g, l); }),
                            patch.unknowns.end());
+  std::vector<const ContactGeometry*> joined;  // geometry of each of patch.contacts
   for (size_t i = 0; i < geometry.size(); ++i)
-    if (std::any_of(std::begin(geometry[i].local), std::end(geometry[i].local), is_unknown))
+    if (std::any_of(std::begin(geometry[i].local), std::end(geometry[i].local), is_unknown)) {
       patch.contacts.push_back(on_path[i]);
+      joined.push_back(&geometry[i]);
+    }
 
   for (PetscInt l : patch.unknowns)
     for (size_t j = dof_kernel_start_[l]; j < dof_kernel_start_[l + 1]; ++j)
@@ -152,19 +155,16 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
   for (size_t k : patch.kernels)
     for (size_t i = kernel_offset_[k]; i < kernel_offset_[k + 1]; ++i)
       if (local_index_[i] >= 0) patch.rows.push_back(local_index_[i]);  // owned: eligibility
-  for (size_t i = 0; i < geometry.size(); ++i)
-    if (std::find(patch.contacts.begin(), patch.contacts.end(), on_path[i]) != patch.contacts.end())
-      for (PetscInt l : geometry[i].local)
-        if (l >= 0) patch.rows.push_back(l);
+  for (const ContactGeometry* g : joined)
+    for (PetscInt l : g->local)
+      if (l >= 0) patch.rows.push_back(l);
   std::sort(patch.rows.begin(), patch.rows.end());
   patch.rows.erase(std::unique(patch.rows.begin(), patch.rows.end()), patch.rows.end());
   for (size_t k : patch.kernels)
     for (size_t i = kernel_offset_[k]; i < kernel_offset_[k + 1]; ++i)
       patch.kernel_rows.push_back(local_index_[i] >= 0 ? position_in(patch.rows, local_index_[i]) : -1);
-  for (size_t i = 0; i < geometry.size(); ++i)
-    if (std::find(patch.contacts.begin(), patch.contacts.end(), on_path[i]) != patch.contacts.end())
-      for (PetscInt l : geometry[i].local)
-        patch.contact_rows.push_back(l >= 0 ? position_in(patch.rows, l) : -1);
+  for (const ContactGeometry* g : joined)
+    for (PetscInt l : g->local) patch.contact_rows.push_back(l >= 0 ? position_in(patch.rows, l) : -1);
   for (PetscInt r : patch.rows) patch.unknown_of_row.push_back(position_in(patch.unknowns, r));
   return patch;
 }

@@ -148,6 +148,15 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
     saved_f[i] = f.data()[patch.rows[i]];
   }
 
+  // ‖r‖² on this rank = the rows the windows cannot change (fixed) + the patch's rows.
+  double fixed_rows = 0.0;
+  for (PetscInt i = 0, next = 0; i < n; ++i) {  // rows ascending: `next` walks them
+    if (next < static_cast<PetscInt>(nr) && patch.rows[next] == i)
+      ++next;
+    else
+      fixed_rows += r.data()[i] * r.data()[i];
+  }
+
   std::vector<double> f_old(nr), f_new(nr), inertia(nr);
   if (nu > 0) system_.patch_force(patch, q.data(), v.data(), f_old.data());
   const assembly::JacobianCoefficients jc{c.c_f * c.c_q, c.c_f * c.c_v, 1.0, 0.0, 0.0};
@@ -192,8 +201,8 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
         std::swap(f_old, f_new);
       }
     }
-    double local[2] = {0.0, static_cast<double>(failed)};
-    for (PetscInt i = 0; i < n; ++i) local[0] += r.data()[i] * r.data()[i];
+    double local[2] = {fixed_rows, static_cast<double>(failed)};
+    for (PetscInt row : patch.rows) local[0] += r.data()[row] * r.data()[row];
     MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm);
     const double now = std::sqrt(global[0]);
     if (global[1] > 0.0 || !std::isfinite(now)) {
