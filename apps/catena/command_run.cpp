@@ -8,6 +8,8 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/hdf5_writer.hpp"
+#include "catena/io/output_lock.hpp"
+#include "catena/io/run_files.hpp"
 #include "catena/solvers/static_solver.hpp"
 #include "commands.hpp"
 #include "run_info.hpp"
@@ -83,6 +85,9 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                 m.nodes.size(), m.elements.size(), mpi_size(comm));
     std::fflush(stdout);
   }
+  // One run at a time per output name (and its checkpoint and partial output).
+  const io::OutputLock lock(comm, m.output.file);
+  if (rank == 0) io::remove_abandoned_checkpoint_temporaries(m.output.file);
   shape_catenary(comm, m);  // a `catenary` scene: dropper lengths before any analysis
   if (m.analysis == model::AnalysisType::dynamic) {
     run_dynamic(comm, cl, m);

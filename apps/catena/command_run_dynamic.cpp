@@ -6,17 +6,23 @@
 // --restart continues from the checkpoint, appending to the output file.
 #include <petscsys.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
+#include "catena/io/run_files.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
 #include "catena/solvers/integrator_factory.hpp"
@@ -27,22 +33,24 @@
 #include "run_info.hpp"
 #include "shape_report.hpp"
 #include "stop_signal.hpp"
+#include "wall_clock_schedule.hpp"
 
 namespace catena::app {
 namespace {
 
-// Streams samples and step records to the output file; flushes on the wall clock (rank
-// 0's clock, broadcast, so that every rank takes the collective path).
+// Streams samples and step records to the output file; flushes and checkpoints on the wall
+// clock (wall_clock_schedule.hpp: one decision for all ranks).
 class OutputObserver : public solvers::TransientObserver {
  public:
   OutputObserver(assembly::SecondOrderSystem& system, io::TransientWriter& writer,
-                 const model::OutputOptions& output, const solvers::TimeIntegrator& integrator)
+                 const model::OutputOptions& output, const solvers::TimeIntegrator& integrator,
+                 std::string run_id)
       : system_(system),
         writer_(writer),
         output_(output),
+        run_id_(std::move(run_id)),
         integrator_(integrator),
-        last_flush_(MPI_Wtime()),
-        last_checkpoint_(last_flush_) {}
+        schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
@@ -54,6 +62,8 @@ class OutputObserver : public solvers::TransientObserver {
     facts.samples = writer_.samples_written();
     facts.steps = writer_.steps_written();
     facts.integrator = integrator_.name();
+    facts.run_id = run_id_;
+    facts.code_version = code_version();
     io::CheckpointShare share;
     share.nodes = system_.dof_map().owned_nodes();
     std::vector<double> unused;
@@ -62,7 +72,8 @@ class OutputObserver : public solvers::TransientObserver {
     system_.owned_node_rows(integrator_.a(), share.a, unused);
     std::vector<double> forces;
     system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
-    io::write_checkpoint(system_.comm(), output_.file + ".chk", system_.model(), facts, share);
+    io::write_checkpoint(system_.comm(), io::checkpoint_path(output_.file), system_.model(), facts,
+                         share);
   }
   void set_last_dt(double dt) { last_dt_ = dt; }
 
@@ -94,15 +105,10 @@ class OutputObserver : public solvers::TransientObserver {
         record.contact_force.push_back(c.force);
     writer_.append_step(record);
     last_dt_ = r.dt;
-    double now = MPI_Wtime();
-    MPI_Bcast(&now, 1, MPI_DOUBLE, 0, system_.comm());
-    if (output_.checkpoint_wall_seconds > 0.0 &&
-        now - last_checkpoint_ >= output_.checkpoint_wall_seconds) {
-      checkpoint();  // flushes too
-      last_checkpoint_ = last_flush_ = now;
-    } else if (now - last_flush_ >= output_.flush_wall_seconds) {
-      writer_.flush();
-      last_flush_ = now;
+    switch (schedule_.due()) {
+      case WallClockSchedule::Action::checkpoint: checkpoint(); break;  // flushes too
+      case WallClockSchedule::Action::flush: writer_.flush(); break;
+      case WallClockSchedule::Action::none: break;
     }
   }
 
@@ -113,8 +119,9 @@ class OutputObserver : public solvers::TransientObserver {
   assembly::SecondOrderSystem& system_;
   io::TransientWriter& writer_;
   const model::OutputOptions& output_;
+  std::string run_id_;
   const solvers::TimeIntegrator& integrator_;
-  double last_flush_, last_checkpoint_;
+  WallClockSchedule schedule_;
   double last_dt_ = 0.0;
 };
 
@@ -148,6 +155,57 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
           {"wall_seconds", wall}};
 }
 
+// Collective. The time-series file a restart continues: the partial output if it belongs
+// to the checkpoint's run, else (extending a completed run) a copy of the complete output
+// made under the partial name, so that the complete file stays intact until the extended
+// run completes. Throws InputError if neither belongs to the checkpoint.
+std::string output_to_continue(MPI_Comm comm, const std::string& output, const std::string& run_id) {
+  const std::string partial = io::partial_output_path(output);
+  std::string why;
+  if (mpi_rank(comm) == 0) {
+    const std::string partial_id = io::read_run_id(partial);
+    if (partial_id != run_id) {
+      const std::string complete_id = io::read_run_id(output);
+      if (complete_id == run_id) {
+        std::printf("restart: extending the completed run: copying %s to %s\n", output.c_str(),
+                    partial.c_str());
+        std::fflush(stdout);
+        std::error_code ec;
+        std::filesystem::copy_file(output, partial,
+                                   std::filesystem::copy_options::overwrite_existing, ec);
+        if (ec) why = "cannot copy " + output + " to " + partial + ": " + ec.message();
+      } else {
+        const auto described = [&](const std::string& path, const std::string& id) {
+          return path + (id.empty() ? " (missing, or no Catena time series)"
+                                    : " (of run " + id + ")");
+        };
+        why = "the checkpoint belongs to run " + run_id + ", whose output is gone: neither " +
+              described(partial, partial_id) + " nor " + described(output, complete_id) +
+              " is its time series (a later run with the same output name replaced it); run "
+              "afresh (without --restart)";
+      }
+    }
+  }
+  broadcast_string(comm, why, 0);
+  if (!why.empty())
+    throw InputError({io::checkpoint_path(output), 0, ""}, "cannot restart from this checkpoint: " + why);
+  return partial;
+}
+
+// Collective. A completed run's time series takes the output's name (rank 0 renames it,
+// replacing any earlier result atomically); a partial output's ParaView file goes with it.
+void publish_completed_output(MPI_Comm comm, const std::string& partial, const std::string& output) {
+  std::string why;
+  if (mpi_rank(comm) == 0) {
+    if (std::rename(partial.c_str(), output.c_str()) != 0)
+      why = "cannot rename " + partial + " to " + output + ": " + std::strerror(errno);
+    std::error_code ignored;
+    std::filesystem::remove(io::transient_xdmf_path(partial), ignored);
+  }
+  broadcast_string(comm, why, 0);
+  if (!why.empty()) throw Error(why);
+}
+
 }  // namespace
 
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
@@ -168,12 +226,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   std::optional<io::Checkpoint> resumed;
   if (cl.restart) {
     try {
-      resumed = io::read_checkpoint(comm, m.output.file + ".chk", m, integrator->name());
+      resumed = io::read_checkpoint(comm, io::checkpoint_path(m.output.file), m, integrator->name());
     } catch (const InputError& e) {
       // `spans: auto` sizes the line from analysis.duration: a longer restart asks for a
       // longer line than the checkpoint's, which a restart cannot add.
       if (!m.catenary || !m.catenary->auto_spans ||
-          !io::checkpoint_of_another_model(comm, m.output.file + ".chk", m))
+          !io::checkpoint_of_another_model(comm, io::checkpoint_path(m.output.file), m))
         throw;
       std::ostringstream why;
       why << e.message() << "; catenary.spans: auto sized this scene's line ("
@@ -235,16 +293,31 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     std::vector<double> unused;
     system.owned_constraint_forces(q.get(), owned_constraints, unused);
   }
+  // The time series is written under the partial name until the run completes
+  // (run_files.hpp), so a failed or interrupted run never replaces a complete result.
+  const std::string& output = m.output.file;
+  std::string run_id;
   std::unique_ptr<io::TransientWriter> writer;
-  if (resumed)
+  if (resumed) {
+    run_id = resumed->facts.run_id;
+    if (rank == 0 && resumed->facts.code_version != code_version())
+      std::printf("restart: note: the checkpoint was written by Catena %s, this is %s; the "
+                  "continued run may differ from an uninterrupted one by more than round-off\n",
+                  resumed->facts.code_version.c_str(), code_version().c_str());
     writer = std::make_unique<io::TransientWriter>(
-        comm, m.output.file, m, system.dof_map().owned_nodes(), owned_elements,
-        owned_constraints, io::ResumePoint{resumed->facts.samples, resumed->facts.steps});
-  else
-    writer = std::make_unique<io::TransientWriter>(comm, m.output.file, m, run_info(cl, system),
-                                                   system.dof_map().owned_nodes(),
+        comm, output_to_continue(comm, output, run_id), m, system.dof_map().owned_nodes(),
+        owned_elements, owned_constraints,
+        io::ResumePoint{resumed->facts.samples, resumed->facts.steps});
+  } else {
+    run_id = io::new_run_id(comm);
+    io::RunInfo info = run_info(cl, system);
+    info.run_id = run_id;
+    writer = std::make_unique<io::TransientWriter>(comm, io::partial_output_path(output), m,
+                                                   info, system.dof_map().owned_nodes(),
                                                    owned_elements, owned_constraints);
-  OutputObserver observer(system, *writer, m.output, *integrator);
+  }
+  const std::string partial = io::partial_output_path(output);
+  OutputObserver observer(system, *writer, m.output, *integrator, run_id);
   if (resumed) observer.set_last_dt(resumed->facts.last_dt);
   const StopSignal signals;
   solvers::TransientReport report;
@@ -254,7 +327,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     // The last checkpoint (if any) stays: it holds a good state to restart from.
     writer->close(std::string("failed: ") + e.what(),
                   statistics(report, integrator->counters(), MPI_Wtime() - start));
-    write_xdmf(rank, m.output.file, m);
+    write_xdmf(rank, partial, m);
+    if (rank == 0)
+      std::fprintf(stderr, "catena: the failed run's output is %s%s\n", partial.c_str(),
+                   std::filesystem::exists(output)
+                       ? (" (" + output + " is an earlier run's, kept)").c_str()
+                       : "");
     throw;
   }
   // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
@@ -262,7 +340,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
   writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
-  write_xdmf(rank, m.output.file, m);
+  const std::string& written = report.interrupted ? partial : output;
+  if (!report.interrupted) publish_completed_output(comm, partial, output);
+  write_xdmf(rank, written, m);
   if (rank == 0) {
     std::printf("%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
                 "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
@@ -271,11 +351,17 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 report.steps_accepted, report.steps_rejected, report.smallest_dt,
                 report.largest_dt, k.newton_iterations, k.factorizations,
                 k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
-    std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s.chk\n",
-                m.output.file.c_str(), report.samples,
-                io::transient_xdmf_path(m.output.file).c_str(), m.output.file.c_str());
+    std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s%s\n", written.c_str(),
+                report.samples, io::transient_xdmf_path(written).c_str(),
+                io::checkpoint_path(output).c_str(),
+                report.interrupted ? "; --restart continues the run" : "");
   }
-  if (report.interrupted) throw RunInterrupted{StopSignal::signal_number(), report.t_reached};
+  if (report.interrupted) {
+    // The signal one rank received, on every rank (the stop itself was agreed per step).
+    int signal = StopSignal::signal_number(), any = 0;
+    MPI_Allreduce(&signal, &any, 1, MPI_INT, MPI_MAX, comm);
+    throw RunInterrupted{any, report.t_reached};
+  }
 }
 
 }  // namespace catena::app

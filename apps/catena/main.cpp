@@ -17,12 +17,14 @@
 #include "catena/core/mpi_comm.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
+#include "launcher_watch.hpp"
 
 int main(int argc, char** argv) {
   int status = 0;
   try {
     catena::PetscSession petsc(&argc, &argv, nullptr);
     const int rank = catena::mpi_rank(PETSC_COMM_WORLD);
+    const catena::app::LauncherWatch launcher_watch;  // ranks never outlive mpirun
     try {
       const catena::app::CommandLine cl = catena::app::parse_command_line(argc, argv);
       if (cl.command == "help") {

@@ -21,9 +21,13 @@ std::string petsc_options_text() {
 
 }  // namespace
 
+std::string code_version() {
+  return std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")";
+}
+
 io::RunInfo run_info(const CommandLine& cl, const assembly::SecondOrderSystem& system) {
   io::RunInfo info;
-  info.code_version = std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")";
+  info.code_version = code_version();
   info.command_line = cl.joined;
   info.petsc_options = petsc_options_text();
   info.n_ranks = mpi_size(system.comm());

@@ -6,6 +6,9 @@
 
 namespace catena::app {
 
+// Not collective. "0.1.0 (<git describe>)", as stored in outputs and checkpoints.
+std::string code_version();
+
 // Collective (reads the PETSc options database).
 io::RunInfo run_info(const CommandLine& cl, const assembly::SecondOrderSystem& system);
 

@@ -10,6 +10,7 @@
 #include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/model/scene_identity.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -45,6 +46,7 @@ class Reader {
     read_attribute(name, H5T_NATIVE_INT64, &value);
     return value;
   }
+  bool has(const char* name) const { return H5Aexists(file_.get(), name) > 0; }
   std::string text(const char* name) const {
     const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
                                             path_, name));
@@ -100,7 +102,18 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   const Reader r(path);
   if (r.text("format") != "catena-checkpoint-1") fail("not a Catena checkpoint");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
+  if (!r.has("scene_identity"))
+    fail("written by an older Catena, which did not record which run it belongs to; run "
+         "afresh (without --restart)");
+  if (const std::string why = model::first_identity_difference(
+          model::scene_identity(model.source_text), r.text("scene_identity"));
+      !why.empty())
+    fail("it belongs to another run (" + why + "; the scene after --set overrides must be "
+         "the same, except analysis.duration and the output's file and wall-clock keys); run "
+         "afresh (without --restart), which replaces it");
   Checkpoint c;
+  c.facts.run_id = r.text("run_id");
+  c.facts.code_version = r.text("code_version");
   c.facts.integrator = r.text("integrator");
   if (c.facts.integrator != integrator)
     fail("written by integrator " + c.facts.integrator + ", this run uses " + integrator);
@@ -149,6 +162,9 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model
       write_int64_attribute(root, "samples", facts.samples);
       write_int64_attribute(root, "steps", facts.steps);
       write_string_attribute(root, "integrator", facts.integrator);
+      write_string_attribute(root, "run_id", facts.run_id);
+      write_string_attribute(root, "code_version", facts.code_version);
+      write_string_attribute(root, "scene_identity", model::scene_identity(model.source_text));
       for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
         write_int64_attribute(root, count, count_of(model, count));
     });

@@ -255,6 +255,7 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   write_string_attribute(root, "scene_file", model.source_file);
   write_string_attribute(root, "code_version", info.code_version);
   write_string_attribute(root, "command_line", info.command_line);
+  write_string_attribute(root, "run_id", info.run_id);
   write_string_attribute(root, "petsc_options", info.petsc_options);
   write_int64_attribute(root, "n_ranks", info.n_ranks);
   write_int64_attribute(root, "n_dofs", info.n_dofs);

@@ -2,8 +2,8 @@
 # Restarts of dynamic runs from their checkpoints (catena run --restart).
 #  A. Kill and restart (meshes/taut_string.yaml, Radau IIA s = 3):
 #     1. the whole run, uninterrupted, at np 2 (the reference);
-#     2. the same run on one rank, stopped by SIGTERM part-way: exit 143, output status
-#        "interrupted", a checkpoint written;
+#     2. the same run on one rank, stopped by SIGTERM part-way: exit 143, the partial
+#        output (OUT.part.h5) with status "interrupted", a checkpoint written;
 #     3. --restart at np 2 (another rank count) from that checkpoint: exit 0;
 #     4. the restarted output equals the reference: same sample times and step count,
 #        positions within 1e-9 m (the restarted Newton starts from a fresh tangent, so
@@ -43,7 +43,7 @@ PY
 scene=meshes/taut_string.yaml
 common=(--set analysis.duration=4 --set integrator.dt=2e-4)
 ref=$dir/restart_ref.h5 out=$dir/restart_out.h5
-rm -f "$ref" "$ref.chk" "$out" "$out.chk"
+rm -f "$ref" "$ref.chk" "$out" "$out.chk" "${out%.h5}.part.h5" "${ref%.h5}.part.h5"
 "$mpiexec" -n 2 --oversubscribe "$catena" run "$scene" "${common[@]}" -o "$ref" > /dev/null ||
   fail "reference run"
 "$catena" run "$scene" "${common[@]}" -o "$out" > "$dir/restart_interrupted.log" 2>&1 &
@@ -55,7 +55,8 @@ code=$?
 [ "$code" -eq 143 ] || fail "interrupted run exited $code, expected 143 (128 + SIGTERM)"
 [ -f "$out.chk" ] || fail "no checkpoint $out.chk after SIGTERM"
 /usr/bin/python3 -c "import h5py, sys; s = h5py.File(sys.argv[1]).attrs['status']; \
-  sys.exit(0 if s == 'interrupted' else 'status ' + s)" "$out" || fail "status after SIGTERM"
+  sys.exit(0 if s == 'interrupted' else 'status ' + s)" "${out%.h5}.part.h5" ||
+  fail "status after SIGTERM"
 "$mpiexec" -n 2 --oversubscribe "$catena" run "$scene" "${common[@]}" -o "$out" --restart ||
   fail "restart"
 compare "$ref" "$out" 1e-9 0 || fail "restarted output differs from the reference"
@@ -63,7 +64,7 @@ compare "$ref" "$out" 1e-9 0 || fail "restarted output differs from the referenc
 # B.
 scene=meshes/driven_pendulum.yaml
 ref=$dir/extend_ref.h5 out=$dir/extend_out.h5
-rm -f "$ref" "$ref.chk" "$out" "$out.chk"
+rm -f "$ref" "$ref.chk" "$out" "$out.chk" "${out%.h5}.part.h5" "${ref%.h5}.part.h5"
 "$catena" run "$scene" --set analysis.duration=0.4 -o "$ref" > /dev/null || fail "reference run"
 "$catena" run "$scene" --set analysis.duration=0.2 -o "$out" > /dev/null || fail "first part"
 "$mpiexec" -n 2 --oversubscribe "$catena" run "$scene" --set analysis.duration=0.4 -o "$out" \

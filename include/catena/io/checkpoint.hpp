@@ -6,8 +6,10 @@
 // File `<output>.chk` (HDF5, docs/output.md): /q, /v, /a (n_nodes × 12: the nodal layout
 // [r, r_x, r_y, r_z] of assembly/dof_map.hpp, fixed and absent components 0), /lambda
 // (n_constraints × 3) and attributes time, last_dt, samples, steps (the output file's row
-// counts at the checkpoint), integrator, n_nodes, n_elements, n_constraints. Node-indexed
-// rather than DOF-indexed, so it does not depend on the partition.
+// counts at the checkpoint), integrator, n_nodes, n_elements, n_constraints, run_id (pairs
+// the checkpoint with its run's output file), code_version and scene_identity
+// (model/scene_identity.hpp: a restart of another run is refused). Node-indexed rather
+// than DOF-indexed, so it does not depend on the partition.
 //
 // Written atomically: a temporary sibling is written in parallel, fsynced, and renamed over
 // the previous checkpoint by rank 0, so a crash during a checkpoint leaves the previous one.
@@ -26,6 +28,8 @@ struct CheckpointFacts {
   double last_dt = 0.0;  // s, the last accepted step (an adaptive restart starts with it)
   std::int64_t samples = 0, steps = 0;  // output rows written up to the checkpoint
   std::string integrator;               // TimeIntegrator::name() of the run
+  std::string run_id;        // the run's identifier, also in its output file (run_id)
+  std::string code_version;  // Catena version that wrote it
 };
 
 // This rank's share: owned nodes (ascending) with 12 values each of q, v, a, and owned
@@ -50,7 +54,8 @@ struct Checkpoint {
 
 // Collective (every rank reads the file). Throws catena::InputError naming the file if it
 // is missing or unreadable, and if it was written for a model with other node, element or
-// constraint counts or by another integrator (`integrator`: this run's name).
+// constraint counts, by another integrator (`integrator`: this run's name) or by a run of
+// another scene (model/scene_identity.hpp).
 Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
                            const std::string& integrator);
 

@@ -31,6 +31,7 @@ struct RunInfo {
   std::string code_version;
   std::string command_line;
   std::string petsc_options;
+  std::string run_id;  // dynamic runs: pairs the output with its checkpoint (run_files.hpp)
   int n_ranks = 1;
   int n_dofs = 0;
 };
