@@ -15,6 +15,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/core/version.hpp"
 #include "catena/post/elasticity_summary.hpp"
 #include "catena/solvers/static_elasticity.hpp"
 #include "commands.hpp"
@@ -124,7 +125,7 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
     std::fprintf(info,
                  "catena %s (%s): elasticity of scene %s '%s', span %d of %zu (x = %g to %g m), "
                  "%zu points every %g m, static upward force %g N, %d ranks\n",
-                 CATENA_VERSION, CATENA_GIT_VERSION, cl.scene.c_str(), m.name.c_str(), span,
+                 version(), git_version(), cl.scene.c_str(), m.name.c_str(), span,
                  support_x.size() - 1, support_x[j - 1], support_x[j], x.size(), args.step,
                  args.force, mpi_size(comm));
     std::fprintf(info,

@@ -7,6 +7,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/core/version.hpp"
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/io/output_lock.hpp"
 #include "catena/io/run_files.hpp"
@@ -81,7 +82,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   const int rank = mpi_rank(comm);
   if (rank == 0) {
     std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n",
-                CATENA_VERSION, CATENA_GIT_VERSION, cl.scene.c_str(), m.name.c_str(),
+                version(), git_version(), cl.scene.c_str(), m.name.c_str(),
                 m.nodes.size(), m.elements.size(), mpi_size(comm));
     std::fflush(stdout);
   }

@@ -3,6 +3,7 @@
 #include <petscsys.h>
 
 #include "catena/core/mpi_comm.hpp"
+#include "catena/core/version.hpp"
 
 namespace catena::app {
 namespace {
@@ -22,7 +23,7 @@ std::string petsc_options_text() {
 }  // namespace
 
 std::string code_version() {
-  return std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")";
+  return std::string(version()) + " (" + git_version() + ")";
 }
 
 io::RunInfo run_info(const CommandLine& cl, const assembly::SecondOrderSystem& system) {

@@ -28,6 +28,7 @@
 #include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/core/version.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -59,7 +60,7 @@ FileAttributes broadcast_file_attributes(MPI_Comm comm, const model::Model& mode
       .scene_file = model.source_file,
       // A file must always say which code wrote it: fall back on this build's version.
       .code_version = info.code_version.empty()
-                          ? std::string(CATENA_VERSION) + " (" + CATENA_GIT_VERSION + ")"
+                          ? std::string(version()) + " (" + git_version() + ")"
                           : info.code_version,
       .command_line = info.command_line,
       .petsc_options = info.petsc_options,
