@@ -161,8 +161,8 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
 // (`failure`, thrown on every rank alike). Unless `failure` came from closing the output,
 // the output is closed with status "failed: ..." if it still can be. The message says what
 // became of the output and which checkpoint is kept.
-OutputError output_failure(const OutputError& failure, bool failed_closing, io::TransientWriter& writer,
-                           const std::string& output, std::optional<double> checkpoint_time,
+OutputError output_failure(const OutputError& failure, bool failed_closing,
+                           io::TransientWriter& writer, const std::string& output, std::optional<double> checkpoint_time,
                            const std::vector<std::pair<std::string, double>>& statistics) {
   std::string message = failure.what();
   if (!failed_closing) {

@@ -5,6 +5,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/output_error.hpp"
 #include "hdf5_error.hpp"
+#include "space_probe.hpp"
 #include "write_fault_injection.hpp"
 
 namespace catena::io {
@@ -34,6 +35,13 @@ void agree_on_hdf5_call(MPI_Comm comm, const Hdf5CallSite& site, bool failed, in
   const int reporting_rank = best_candidate % n_ranks;
   broadcast_string(comm, local_failure, reporting_rank);
   if (n_ranks > 1) local_failure += " (on rank " + std::to_string(reporting_rank) + ")";
+  // No rank's errno told the cause (errno may be overwritten before HDF5 returns, and the
+  // MPI-IO driver reports a short write only as "file write failed"): a test write beside
+  // the file tells a full disk or an exceeded quota.
+  if (best_candidate >= n_ranks) {
+    const std::string why = failed_test_write_beside(comm, std::string(site.file));
+    if (!why.empty()) local_failure += "; a test write beside it failed: " + why;
+  }
   throw OutputError(local_failure);
 }
 

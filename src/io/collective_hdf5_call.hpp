@@ -10,7 +10,8 @@
 //
 // The message is the one of the rank that knows the cause best: a rank whose errno names
 // it (the aggregator that got ENOSPC) before a rank that only saw HDF5's "file write
-// failed", the lowest such rank first.
+// failed", the lowest such rank first. If none knows it, a test write beside the file
+// (space_probe.hpp) adds why that fails, if it does (a full disk, an exceeded quota).
 #include <hdf5.h>
 #include <mpi.h>
 

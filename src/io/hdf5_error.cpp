@@ -55,7 +55,8 @@ std::string hdf5_failure_message(std::string_view call, std::string_view file,
   }
   message += ": ";
   if (names_a_write_cause(call_errno))
-    message += std::string(std::strerror(call_errno)) + " (HDF5: " + innermost_hdf5_description() + ")";
+    message += std::string(std::strerror(call_errno)) + " (HDF5: " +
+               innermost_hdf5_description() + ")";
   else
     message += innermost_hdf5_description();
   H5Eclear2(H5E_DEFAULT);

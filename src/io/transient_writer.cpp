@@ -470,7 +470,8 @@ void TransientWriter::close(const std::string& status,
       step();
     } catch (const OutputError& e) {
       if (!first_failure) first_failure = std::current_exception();
-      if (recorded_status.rfind("failed", 0) != 0) recorded_status = std::string("failed: ") + e.what();
+      if (recorded_status.rfind("failed", 0) != 0)
+        recorded_status = std::string("failed: ") + e.what();
     }
   };
   if (!s.failed) attempt([&] { flush(); });

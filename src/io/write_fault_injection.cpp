@@ -53,7 +53,8 @@ WriteFault parse_write_fault(std::string_view text) {
     const std::string_view item = rest.substr(0, comma);
     rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
     const std::size_t equals = item.find('=');
-    if (equals == std::string_view::npos) reject(text, "'" + std::string(item) + "' is not KEY=VALUE");
+    if (equals == std::string_view::npos)
+      reject(text, "'" + std::string(item) + "' is not KEY=VALUE");
     const std::string_view key = item.substr(0, equals), value = item.substr(equals + 1);
     if (key == "rank") {
       fault.rank = static_cast<int>(parse_integer(text, value, 0));

@@ -25,16 +25,21 @@ fail() {
   exit 1
 }
 
-# run NP [ENV=VALUE] -- ARGS...: runs the app on NP ranks under `timeout`, output in $dir/log.
+# run NP FAULT -- ARGS...: runs the app on NP ranks under `timeout` (FAULT: the value of
+# CATENA_FAULT_INJECT_WRITE, or ""), output in $dir/log, each rank's exit code in
+# $dir/exit.RANK.
 run() {
   local np=$1 fault=$2
   shift 3
   local -a env_args=()
   [ -n "$fault" ] && env_args=(-x "CATENA_FAULT_INJECT_WRITE=$fault")
-  timeout $limit "$mpiexec" -n "$np" --oversubscribe "${env_args[@]}" "$app" "$@" \
-    > "$dir/log" 2>&1
+  rm -f "$dir"/exit.*
+  timeout $limit "$mpiexec" -n "$np" --oversubscribe "${env_args[@]}" bash -c \
+    '"$@"; code=$?; echo $code > "$0/exit.$OMPI_COMM_WORLD_RANK"; exit $code' "$dir" \
+    "$app" "$@" > "$dir/log" 2>&1
   code=$?
   cat "$dir/log"
+  n_ranks=$np
 }
 
 # The checks every case shares: exit code 4 (124: the time limit, a hang), one message
@@ -42,6 +47,11 @@ run() {
 expect_one_clean_error() {
   [ "$code" -eq 124 ] && fail "no exit within $limit s (a hang)"
   [ "$code" -eq 4 ] || fail "exit code $code, expected 4 (output could not be written)"
+  local rank
+  for ((rank = 0; rank < n_ranks; ++rank)); do
+    [ "$(cat "$dir/exit.$rank" 2> /dev/null)" = 4 ] ||
+      fail "rank $rank exited with $(cat "$dir/exit.$rank" 2> /dev/null || echo "no code"), expected 4"
+  done
   local n_messages
   n_messages=$(grep -c '^catena: output could not be written: ' "$dir/log")
   [ "$n_messages" -eq 1 ] || fail "$n_messages messages, expected one (rank 0's)"
@@ -145,7 +155,7 @@ case $case in
     expect_one_clean_error "cannot write '$dir/static.h5'" "at /static/positions" \
       "No space left on device"
     [ "$(cat "$dir/static.h5")" = "an older result" ] || fail "the older result was replaced"
-    [ "$(ls "$dir")" = "$(printf 'log\nstatic.h5')" ] || fail "files left: $(ls "$dir")"
+    [ -z "$(ls "$dir" | grep -v '^log$\|^exit\.\|^static\.h5$')" ] || fail "files left: $(ls "$dir")"
     ;;
   full_disk_static_np1 | full_disk_static_np2)
     mount_small_disk 256k
