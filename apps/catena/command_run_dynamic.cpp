@@ -3,7 +3,9 @@
 // scene asks for, time-series HDF5 output sampled at the output interval, wall-clock
 // flushes, checkpoints (atomic, <output>.chk: on the wall clock, at SIGTERM/SIGINT and at
 // the end) and a clean stop on SIGTERM/SIGINT (output closed with status "interrupted").
-// --restart continues from the checkpoint, appending to the output file.
+// --restart continues from the checkpoint, appending to the output file. A failed write of
+// the output or a checkpoint (agreed on every rank: catena::OutputError) closes the output
+// as "failed: ..." where it can and names the checkpoint that is kept.
 #include <petscsys.h>
 
 #include <cerrno>
@@ -23,6 +25,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
 #include "catena/io/run_files.hpp"
+#include "catena/io/output_error.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
 #include "catena/solvers/integrator_factory.hpp"
@@ -74,8 +77,13 @@ class OutputObserver : public solvers::TransientObserver {
     system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
     io::write_checkpoint(system_.comm(), io::checkpoint_path(output_.file), system_.model(), facts,
                          share);
+    last_checkpoint_time_ = facts.time;
   }
   void set_last_dt(double dt) { last_dt_ = dt; }
+  // A restarted run: the checkpoint it started from is there until it writes its own.
+  void set_last_checkpoint_time(double t) { last_checkpoint_time_ = t; }
+  // The time of the newest checkpoint on disk written by this run or the one it continues.
+  std::optional<double> last_checkpoint_time() const { return last_checkpoint_time_; }
 
   void sample(double t, Vec q, Vec v) override {
     std::vector<double> positions, slopes, velocities, unused;
@@ -123,6 +131,7 @@ class OutputObserver : public solvers::TransientObserver {
   const solvers::TimeIntegrator& integrator_;
   WallClockSchedule schedule_;
   double last_dt_ = 0.0;
+  std::optional<double> last_checkpoint_time_;
 };
 
 // Not collective (rank 0). The ParaView description of the closed output (all its samples,
@@ -204,6 +213,35 @@ void publish_completed_output(MPI_Comm comm, const std::string& partial, const s
   }
   broadcast_string(comm, why, 0);
   if (!why.empty()) throw Error(why);
+}
+
+// Collective. The error to report after writing the output or a checkpoint failed
+// (`failure`, thrown on every rank alike). Unless `failure` came from closing the output,
+// the output is closed with status "failed: ..." if it still can be. The message says what
+// became of the output and which checkpoint is kept.
+OutputError output_failure(const OutputError& failure, bool failed_closing,
+                           io::TransientWriter& writer, const std::string& written,
+                           const std::string& checkpoint_file,
+                           std::optional<double> checkpoint_time,
+                           const std::vector<std::pair<std::string, double>>& statistics) {
+  std::string message = failure.what();
+  if (!failed_closing) {
+    try {
+      writer.close(std::string("failed: ") + failure.what(), statistics);
+      message += "; " + written + " is closed with status \"failed\"";
+    } catch (const OutputError& close_failure) {
+      message += std::string("; ") + close_failure.what();
+      failed_closing = true;
+    }
+  }
+  if (failed_closing) message += "; its status may still say \"running\"";
+  std::ostringstream checkpoint;
+  if (checkpoint_time)
+    checkpoint << "; the last checkpoint, " << checkpoint_file << " at t = " << *checkpoint_time
+               << " s, is kept: continue with --restart once the output can be written";
+  else
+    checkpoint << "; no checkpoint had been written";
+  return OutputError(message + checkpoint.str());
 }
 
 }  // namespace
@@ -318,15 +356,27 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   }
   const std::string partial = io::partial_output_path(output);
   OutputObserver observer(system, *writer, m.output, *integrator, run_id);
-  if (resumed) observer.set_last_dt(resumed->facts.last_dt);
+  if (resumed) {
+    observer.set_last_dt(resumed->facts.last_dt);
+    observer.set_last_checkpoint_time(resumed->facts.time);
+  }
   const StopSignal signals;
   solvers::TransientReport report;
   try {
     report = solvers::run_transient(system, *integrator, options, observer);
+    // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
+    observer.checkpoint();
   } catch (const NumericalError& e) {
     // The last checkpoint (if any) stays: it holds a good state to restart from.
-    writer->close(std::string("failed: ") + e.what(),
-                  statistics(report, integrator->counters(), MPI_Wtime() - start));
+    try {
+      writer->close(std::string("failed: ") + e.what(),
+                    statistics(report, integrator->counters(), MPI_Wtime() - start));
+    } catch (const OutputError& close_failure) {
+      throw output_failure(OutputError(std::string(close_failure.what()) +
+                                       " (recording the numerical failure: " + e.what() + ")"),
+                           true, *writer, partial, io::checkpoint_path(output),
+                           observer.last_checkpoint_time(), {});
+    }
     write_xdmf(rank, partial, m);
     if (rank == 0)
       std::fprintf(stderr, "catena: the failed run's output is %s%s\n", partial.c_str(),
@@ -334,12 +384,18 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                        ? (" (" + output + " is an earlier run's, kept)").c_str()
                        : "");
     throw;
+  } catch (const OutputError& e) {
+    throw output_failure(e, false, *writer, partial, io::checkpoint_path(output),
+                         observer.last_checkpoint_time(), statistics(report, integrator->counters(), MPI_Wtime() - start));
   }
-  // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
-  observer.checkpoint();
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
-  writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
+  try {
+    writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
+  } catch (const OutputError& e) {
+    throw output_failure(e, true, *writer, partial, io::checkpoint_path(output),
+                         observer.last_checkpoint_time(), {});
+  }
   const std::string& written = report.interrupted ? partial : output;
   if (!report.interrupted) publish_completed_output(comm, partial, output);
   write_xdmf(rank, written, m);

@@ -7,20 +7,25 @@
 //   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5
 //
 // Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
-// (no equilibrium found, singular structure, step size below its minimum), 128 + signal
-// after SIGTERM/SIGINT (checkpoint and output written), 1 anything else.
+// (no equilibrium found, singular structure, step size below its minimum), 4 output could
+// not be written (disk full, quota, I/O error: the same on every rank; the last checkpoint
+// is kept), 128 + signal after SIGTERM/SIGINT (checkpoint and output written), 1 anything
+// else.
 #include <cstdio>
 #include <exception>
 
 #include "catena/assembly/petsc_handle.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/hdf5_library.hpp"
+#include "catena/io/output_error.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "launcher_watch.hpp"
 
 int main(int argc, char** argv) {
   int status = 0;
+  catena::io::start_hdf5_before_mpi();
   try {
     catena::PetscSession petsc(&argc, &argv, nullptr);
     const int rank = catena::mpi_rank(PETSC_COMM_WORLD);
@@ -44,6 +49,9 @@ int main(int argc, char** argv) {
     } catch (const catena::NumericalError& e) {
       if (rank == 0) std::fprintf(stderr, "catena: numerical failure: %s\n", e.what());
       status = 3;
+    } catch (const catena::OutputError& e) {
+      if (rank == 0) std::fprintf(stderr, "catena: output could not be written: %s\n", e.what());
+      status = 4;
     } catch (const catena::app::RunInterrupted& e) {
       if (rank == 0)
         std::fprintf(stderr, "catena: interrupted by signal %d at t = %g s; output and "

@@ -10,6 +10,7 @@
 #include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/output_error.hpp"
 #include "catena/model/scene_identity.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
@@ -129,10 +130,9 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   return c;
 }
 
-}  // namespace
-
-void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
-                      const CheckpointFacts& facts, const CheckpointShare& share) {
+// Collective. write_checkpoint without the error's context.
+void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const model::Model& model,
+                                 const CheckpointFacts& facts, const CheckpointShare& share) {
   const bool is_root = mpi_rank(comm) == 0;
   long long root_pid = static_cast<long long>(::getpid());
   MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
@@ -177,6 +177,19 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model
     temporary->release();
     fsync_path(fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path("."));
   });
+}
+
+}  // namespace
+
+void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
+                      const CheckpointFacts& facts, const CheckpointShare& share) {
+  const Hdf5ErrorPrintingSuppressed quiet_hdf5;
+  try {
+    write_checkpoint_atomically(comm, path, model, facts, share);
+  } catch (const Error& agreed) {
+    // Every failure above is agreed between the ranks (phases and agreed HDF5 calls).
+    throw OutputError("cannot write the checkpoint '" + path + "': " + agreed.what());
+  }
 }
 
 Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,

@@ -9,7 +9,10 @@
 // destructors (which include H5Fclose, itself collective).
 //
 // A phase must not throw on some ranks *before* a collective call that the other ranks
-// then enter: keep purely local checks (validation) in their own phase.
+// then enter: keep purely local checks (validation) in their own phase. Collective HDF5
+// calls inside a phase agree on their own outcome (collective_hdf5_call.hpp): the
+// catena::OutputError they throw is thrown by every rank at the same call, so the phase
+// passes it on as it is, without a second agreement.
 #include <mpi.h>
 
 #include <filesystem>
@@ -19,6 +22,8 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+
+#include "catena/io/output_error.hpp"
 
 namespace catena::io {
 
@@ -39,6 +44,8 @@ std::invoke_result_t<Phase> run_collective_phase(MPI_Comm comm, Phase&& phase) {
   if constexpr (std::is_void_v<Result>) {
     try {
       std::forward<Phase>(phase)();
+    } catch (const OutputError&) {
+      throw;  // already agreed: every rank throws it here
     } catch (...) {
       local_error = current_exception_message();
     }
@@ -47,11 +54,26 @@ std::invoke_result_t<Phase> run_collective_phase(MPI_Comm comm, Phase&& phase) {
     std::optional<Result> result;
     try {
       result.emplace(std::forward<Phase>(phase)());
+    } catch (const OutputError&) {
+      throw;  // already agreed: every rank throws it here
     } catch (...) {
       local_error = current_exception_message();
     }
     throw_if_any_rank_failed(comm, local_error);
     return std::move(*result);
+  }
+}
+
+// Collective. run_collective_phase for a phase that writes output: its agreed failure is
+// a catena::OutputError on every rank.
+template <class Phase>
+std::invoke_result_t<Phase> run_output_phase(MPI_Comm comm, Phase&& phase) {
+  try {
+    return run_collective_phase(comm, std::forward<Phase>(phase));
+  } catch (const OutputError&) {
+    throw;
+  } catch (const std::exception& agreed) {
+    throw OutputError(agreed.what());
   }
 }
 

@@ -1,5 +1,7 @@
 #include "hdf5_error.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <string>
 
 #include "catena/core/error.hpp"
@@ -41,7 +43,8 @@ std::string innermost_hdf5_description() {
 
 }  // namespace
 
-void throw_hdf5_error(std::string_view call, std::string_view file, std::string_view object) {
+std::string hdf5_failure_message(std::string_view call, std::string_view file,
+                                 std::string_view object, int call_errno) {
   std::string message(call);
   message += " failed for '";
   message += file;
@@ -50,9 +53,27 @@ void throw_hdf5_error(std::string_view call, std::string_view file, std::string_
     message += " at ";
     message += object;
   }
-  message += ": " + innermost_hdf5_description();
+  message += ": ";
+  if (names_a_write_cause(call_errno))
+    message += std::string(std::strerror(call_errno)) + " (HDF5: " +
+               innermost_hdf5_description() + ")";
+  else
+    message += innermost_hdf5_description();
   H5Eclear2(H5E_DEFAULT);
-  throw Error(message);
+  return message;
+}
+
+bool names_a_write_cause(int error_number) {
+  switch (error_number) {
+    case ENOSPC: case EDQUOT: case EIO: case EFBIG: case EROFS: case ESTALE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+void throw_hdf5_error(std::string_view call, std::string_view file, std::string_view object) {
+  throw Error(hdf5_failure_message(call, file, object));
 }
 
 hid_t checked_hdf5_id(hid_t id, std::string_view call, std::string_view file,

@@ -4,12 +4,25 @@
 // specific message from HDF5's error stack (e.g. MPI_File_open's "no such file").
 #include <hdf5.h>
 
+#include <string>
 #include <string_view>
 
 namespace catena::io {
 
-// Not collective. Throws catena::Error "<call> failed for '<file>' [at <object>]: <why>",
-// with <why> taken from the innermost entry of HDF5's default error stack.
+// Not collective. Whether errno `error_number` says why data could not be written to an
+// open file (no space left, quota exceeded, I/O error, read-only file system, ...). Other
+// values are no evidence: EAGAIN or EINTR may be left behind by MPI's progress engine,
+// ENOENT by HDF5 probing for a file.
+bool names_a_write_cause(int error_number);
+
+// Not collective. "<call> failed for '<file>' [at <object>]: <why>", with <why> taken from
+// the innermost entry of HDF5's default error stack, which it clears. `call_errno`: errno
+// right after the call (0: not known); if names_a_write_cause(call_errno), its text leads
+// <why>: HDF5's MPI-IO driver reports a short write only as "file write failed".
+std::string hdf5_failure_message(std::string_view call, std::string_view file,
+                                 std::string_view object = {}, int call_errno = 0);
+
+// Not collective. Throws catena::Error with hdf5_failure_message(call, file, object).
 [[noreturn]] void throw_hdf5_error(std::string_view call, std::string_view file,
                                    std::string_view object = {});
 

@@ -37,6 +37,10 @@ class Hdf5Handle {
     return CloseFunction(std::exchange(id_, H5I_INVALID_HID));
   }
 
+  // Forgets the id without closing it: for an object of a file that can no longer be
+  // written, whose close could hang or crash (ParallelHdf5File::abandon).
+  hid_t release() noexcept { return std::exchange(id_, H5I_INVALID_HID); }
+
  private:
   hid_t id_ = H5I_INVALID_HID;
 };

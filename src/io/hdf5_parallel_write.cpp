@@ -50,7 +50,8 @@ DataspaceHandle rows_space(std::int64_t n_rows, int n_columns, const std::string
 
 }  // namespace
 
-ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path) : path_(std::move(path)) {
+ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path)
+    : comm_(comm), path_(std::move(path)) {
   const PropertyListHandle access = create_property_list(H5P_FILE_ACCESS, path_);
   check_hdf5_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio", path_);
   // The 1.8 object format is the oldest with dense attribute storage (below).
@@ -61,30 +62,47 @@ ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path) : path_(std:
   // 64 KiB in the object header, and the scene text stored there can be longer.
   check_hdf5_status(H5Pset_attr_phase_change(creation.get(), 0, 0), "H5Pset_attr_phase_change",
                     path_);
-  file_ = FileHandle(checked_hdf5_id(
-      H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), "H5Fcreate", path_));
+  file_ = agreed_create<FileHandle>({"H5Fcreate", path_}, [&] {
+    return H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
+  });
   collective_transfer_ = create_property_list(H5P_DATASET_XFER, path_);
   check_hdf5_status(H5Pset_dxpl_mpio(collective_transfer_.get(), H5FD_MPIO_COLLECTIVE),
                     "H5Pset_dxpl_mpio", path_);
 }
 
 ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path, OpenExisting)
-    : path_(std::move(path)) {
+    : comm_(comm), path_(std::move(path)) {
   const PropertyListHandle access = create_property_list(H5P_FILE_ACCESS, path_);
   check_hdf5_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio", path_);
-  file_ = FileHandle(
-      checked_hdf5_id(H5Fopen(path_.c_str(), H5F_ACC_RDWR, access.get()), "H5Fopen", path_));
+  file_ = agreed_create<FileHandle>(
+      {"H5Fopen", path_}, [&] { return H5Fopen(path_.c_str(), H5F_ACC_RDWR, access.get()); });
   collective_transfer_ = create_property_list(H5P_DATASET_XFER, path_);
   check_hdf5_status(H5Pset_dxpl_mpio(collective_transfer_.get(), H5FD_MPIO_COLLECTIVE),
                     "H5Pset_dxpl_mpio", path_);
 }
 
-void ParallelHdf5File::close() { check_hdf5_status(file_.close(), "H5Fclose", path_); }
+ParallelHdf5File::~ParallelHdf5File() {
+  if (failed_) abandon();
+}
+
+void ParallelHdf5File::abandon() {
+  (void)file_.release();
+  (void)collective_transfer_.release();
+}
+
+void ParallelHdf5File::flush() {
+  agreed({"H5Fflush", path_, "/"}, [&] { return H5Fflush(file_.get(), H5F_SCOPE_GLOBAL); });
+}
+
+void ParallelHdf5File::close() {
+  // The handle forgets the id before the call: a failed close is not attempted again.
+  agreed({"H5Fclose", path_}, [&] { return file_.close(); });
+}
 
 GroupHandle create_group(const ParallelHdf5File& file, const char* name) {
-  return GroupHandle(
-      checked_hdf5_id(H5Gcreate2(file.id(), name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                      "H5Gcreate2", file.path(), name));
+  return file.agreed_create<GroupHandle>({"H5Gcreate2", file.path(), name}, [&] {
+    return H5Gcreate2(file.id(), name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  });
 }
 
 template <class Value>
@@ -102,10 +120,11 @@ DatasetHandle write_block_dataset(const ParallelHdf5File& file, const BlockDatas
   // below, so writing fill values first would only double the I/O.
   check_hdf5_status(H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER), "H5Pset_fill_time", path,
                     dataset.name);
-  DatasetHandle created(
-      checked_hdf5_id(H5Dcreate2(file.id(), dataset.name, Hdf5TypesOf<Value>::in_file(),
-                                 file_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
-                      "H5Dcreate2", path, dataset.name));
+  DatasetHandle created =
+      file.agreed_create<DatasetHandle>({"H5Dcreate2", path, dataset.name}, [&] {
+        return H5Dcreate2(file.id(), dataset.name, Hdf5TypesOf<Value>::in_file(),
+                          file_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT);
+      });
 
   if (dataset.unit != nullptr) write_string_attribute({created.get(), path}, "unit", dataset.unit);
   // Every rank sees the same n_rows, so all skip together: nothing to write, no hang.
@@ -125,9 +144,15 @@ DatasetHandle write_block_dataset(const ParallelHdf5File& file, const BlockDatas
     check_hdf5_status(H5Sselect_none(file_space.get()), "H5Sselect_none", path, dataset.name);
     check_hdf5_status(H5Sselect_none(memory_space.get()), "H5Sselect_none", path, dataset.name);
   }
-  check_hdf5_status(H5Dwrite(created.get(), Hdf5TypesOf<Value>::in_memory(), memory_space.get(),
-                             file_space.get(), file.collective_transfer(), block_values.data()),
-                    "H5Dwrite", path, dataset.name);
+  try {
+    file.agreed({"H5Dwrite", path, dataset.name}, [&] {
+      return H5Dwrite(created.get(), Hdf5TypesOf<Value>::in_memory(), memory_space.get(),
+                      file_space.get(), file.collective_transfer(), block_values.data());
+    });
+  } catch (const OutputError&) {
+    (void)created.release();  // the file is abandoned (see the header)
+    throw;
+  }
   return created;
 }
 

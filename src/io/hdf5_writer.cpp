@@ -29,6 +29,7 @@
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
+#include "catena/io/output_error.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -402,8 +403,9 @@ void write_static_result(MPI_Comm comm, const std::string& path, const model::Mo
   const Hdf5ErrorPrintingSuppressed quiet_hdf5;
   try {
     write_atomically(comm, fs::path(path), model, result, info);
-  } catch (const Error& error) {
-    throw Error("cannot write '" + path + "': " + error.what());
+  } catch (const Error& agreed) {
+    // Every failure above is agreed between the ranks (phases and agreed HDF5 calls).
+    throw OutputError("cannot write '" + path + "': " + agreed.what());
   }
 }
 

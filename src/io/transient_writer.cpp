@@ -4,13 +4,18 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <exception>
 
 #include "catena/core/error.hpp"
+#include "catena/io/output_error.hpp"
+#include "collective_hdf5_call.hpp"
+#include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
 #include "hdf5_parallel_write.hpp"
 #include "row_redistribution.hpp"
+#include "space_probe.hpp"
 
 namespace catena::io {
 namespace {
@@ -20,9 +25,9 @@ class Series {
  public:
   Series() = default;
   // Collective. shape: the per-row shape (empty: scalar rows).
-  Series(hid_t file, const std::string& file_path, const char* name, std::vector<hsize_t> shape,
-         hid_t type, const char* unit)
-      : name_(name), path_(file_path), shape_(std::move(shape)), type_(type) {
+  Series(const ParallelHdf5File& file, const char* name, std::vector<hsize_t> shape, hid_t type,
+         const char* unit)
+      : file_(&file), name_(name), path_(file.path()), shape_(std::move(shape)), type_(type) {
     std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
     hsize_t row = 1;
     for (hsize_t n : shape_) {
@@ -40,22 +45,35 @@ class Series {
         checked_hdf5_id(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate", path_, name_));
     check_hdf5_status(H5Pset_chunk(create.get(), static_cast<int>(chunk.size()), chunk.data()),
                       "H5Pset_chunk", path_, name_);
+    // Every appended row is written whole, so the chunks that extending allocates need no
+    // fill values. Writing them would be a collective write inside H5Dset_extent, and when
+    // it fails on one rank only (a full disk), HDF5 1.10 returns there without the barrier
+    // that the other ranks wait in: a hang no agreement after the call can prevent.
+    check_hdf5_status(H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER), "H5Pset_fill_time",
+                      path_, name_);
     const PropertyListHandle links(
         checked_hdf5_id(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path_, name_));
     check_hdf5_status(H5Pset_create_intermediate_group(links.get(), 1),
                       "H5Pset_create_intermediate_group", path_, name_);
-    dataset_ = DatasetHandle(checked_hdf5_id(
-        H5Dcreate2(file, name, type, space.get(), links.get(), create.get(), H5P_DEFAULT),
-        "H5Dcreate2", path_, name_));
-    if (unit) write_string_attribute({dataset_.get(), path_}, "unit", unit);
+    dataset_ = file.agreed_create<DatasetHandle>({"H5Dcreate2", path_, name_}, [&] {
+      return H5Dcreate2(file.id(), name, type, space.get(), links.get(), create.get(), H5P_DEFAULT);
+    });
+    if (unit)
+      run_output_phase(file.comm(),
+                       [&] { write_string_attribute({dataset_.get(), path_}, "unit", unit); });
   }
 
   // Collective. Opens the existing dataset `name` and cuts it to `rows` rows.
-  Series(hid_t file, const std::string& file_path, const char* name, std::vector<hsize_t> shape,
-         hid_t type, hsize_t rows)
-      : name_(name), path_(file_path), shape_(std::move(shape)), type_(type), rows_(rows) {
+  Series(const ParallelHdf5File& file, const char* name, std::vector<hsize_t> shape, hid_t type,
+         hsize_t rows)
+      : file_(&file),
+        name_(name),
+        path_(file.path()),
+        shape_(std::move(shape)),
+        type_(type),
+        rows_(rows) {
     dataset_ = DatasetHandle(
-        checked_hdf5_id(H5Dopen2(file, name, H5P_DEFAULT), "H5Dopen2", path_, name_));
+        checked_hdf5_id(H5Dopen2(file.id(), name, H5P_DEFAULT), "H5Dopen2", path_, name_));
     const DataspaceHandle space(
         checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
     std::vector<hsize_t> dims(shape_.size() + 1);
@@ -75,17 +93,21 @@ class Series {
                   " rows, fewer than the checkpoint's " + std::to_string(rows) +
                   " (the output is older than the checkpoint)");
     dims[0] = rows;
-    check_hdf5_status(H5Dset_extent(dataset_.get(), dims.data()), "H5Dset_extent", path_, name_);
+    file.agreed({"H5Dset_extent", path_, name_},
+                [&] { return H5Dset_extent(dataset_.get(), dims.data()); });
   }
 
   // Collective. Appends n_rows rows; this rank writes rows [first, first + count) of them
   // (a block along the second dimension for node/element-distributed data: `block`).
+  // Both collective calls agree on their outcome: extending allocates (and fills) the new
+  // chunks, so it writes too and may fail on one rank.
   void append(hid_t transfer, hsize_t n_rows, const RowBlock& block, const void* data) {
     const hsize_t old = rows_;
     rows_ += n_rows;
     std::vector<hsize_t> dims{rows_};
     for (hsize_t n : shape_) dims.push_back(n);
-    check_hdf5_status(H5Dset_extent(dataset_.get(), dims.data()), "H5Dset_extent", path_, name_);
+    file_->agreed({"H5Dset_extent", path_, name_},
+                  [&] { return H5Dset_extent(dataset_.get(), dims.data()); });
     const DataspaceHandle file_space(
         checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
     std::vector<hsize_t> start(dims.size(), 0), count(dims);
@@ -110,15 +132,18 @@ class Series {
       check_hdf5_status(H5Sselect_none(file_space.get()), "H5Sselect_none", path_, name_);
       check_hdf5_status(H5Sselect_none(memory.get()), "H5Sselect_none", path_, name_);
     }
-    check_hdf5_status(
-        H5Dwrite(dataset_.get(), type_ == H5T_STD_I32LE ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE,
-                 memory.get(), file_space.get(), transfer, data),
-        "H5Dwrite", path_, name_);
+    file_->agreed({"H5Dwrite", path_, name_}, [&] {
+      return H5Dwrite(dataset_.get(), type_ == H5T_STD_I32LE ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE,
+                      memory.get(), file_space.get(), transfer, data);
+    });
   }
   hsize_t rows() const { return rows_; }
   void reset() { dataset_ = DatasetHandle(); }
+  // Forgets the dataset without closing it: its file is abandoned.
+  void abandon() { (void)dataset_.release(); }
 
  private:
+  const ParallelHdf5File* file_ = nullptr;
   std::string name_, path_;
   std::vector<hsize_t> shape_;
   hid_t type_ = H5T_IEEE_F64LE;
@@ -129,6 +154,9 @@ class Series {
 }  // namespace
 
 struct TransientWriter::Impl {
+  // First, so that it outlives the file: HDF5 prints no error stack while the file is
+  // open or closing (failures are reported once, as exceptions).
+  Hdf5ErrorPrintingSuppressed quiet_hdf5;
   MPI_Comm comm;
   std::string path;
   int rank = 0;
@@ -140,6 +168,7 @@ struct TransientWriter::Impl {
   Series contact_force, contact_position, step_contact_force;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
   std::vector<StepRecord> pending_steps;
+  bool failed = false;  // a write failed (on every rank alike): the file is only closed
   bool closed = false;
 
   Impl(MPI_Comm c, const std::string& p, const model::Model& m, const std::vector<int>& own_nodes,
@@ -157,6 +186,42 @@ struct TransientWriter::Impl {
         n_contacts(static_cast<hsize_t>(m.contacts.size())) {
     MPI_Comm_rank(c, &rank);
   }
+
+  // Collective. Runs a step that writes; an agreed failure (catena::OutputError, thrown on
+  // every rank) leaves the file failed: it is not written again, only closed.
+  template <class Step>
+  void write(Step&& step) {
+    if (failed) throw OutputError(path + ": not written again after a failed write");
+    try {
+      std::forward<Step>(step)();
+    } catch (const OutputError&) {
+      failed = true;
+      throw;
+    }
+  }
+
+  // A failed file is abandoned, not closed (hdf5_parallel_write.hpp): its datasets first.
+  ~Impl() {
+    if (file.failed()) abandon_file();
+  }
+
+  std::vector<Series*> all_series() {
+    return {&time, &positions, &velocities, &slopes, &axial, &constraint_forces,
+            &contact_force, &contact_position, &step_contact_force, &step_time,
+            &step_dt, &step_iterations, &step_error, &step_rejected};
+  }
+
+  // Collective. Closes every dataset, then the file.
+  void close_file() {
+    for (Series* series : all_series()) series->reset();
+    file.close();
+  }
+
+  // Not collective (every rank does it alike). Forgets the datasets and the file.
+  void abandon_file() {
+    for (Series* series : all_series()) series->abandon();
+    file.abandon();
+  }
 };
 
 TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
@@ -169,6 +234,7 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   const hid_t f = s.file.id();
   const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
   const auto n_elements = static_cast<hsize_t>(model.elements.size());
+  const std::string& p = s.path;
   // Mesh: every rank holds the model and writes its balanced block.
   const RowBlock& nb = s.nodes.block();
   const RowBlock& eb = s.elements.block();
@@ -210,26 +276,28 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
         cb, ends);
   }
 
-  const std::string& p = s.path;
   if (s.has_constraints)
     s.constraint_forces =
-        Series(f, p, "/samples/constraint_forces",
+        Series(s.file, "/samples/constraint_forces",
                {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, "N");
   if (s.n_contacts > 0) {
-    s.contact_force = Series(f, p, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
+    s.contact_force = Series(s.file, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
     s.contact_position =
-        Series(f, p, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, "m");
+        Series(s.file, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, "m");
     s.step_contact_force =
-        Series(f, p, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
+        Series(s.file, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
     create_group(s.file, "/pantographs");
     for (size_t i = 0; i < model.contacts.size(); ++i) {
       const std::string name = "/pantographs/" + model.contacts[i].name;
       const GroupHandle group = create_group(s.file, name.c_str());
-      const AttributeTarget target{group.get(), p};
-      write_int64_attribute(target, "index", static_cast<std::int64_t>(i));
-      write_double_attribute(target, "speed", model.contacts[i].speed);
-      write_double_attribute(target, "start", model.contacts[i].start);
-      write_string_attribute(target, "path", model.paths[static_cast<size_t>(model.contacts[i].path)].name);
+      run_output_phase(s.comm, [&] {
+        const AttributeTarget target{group.get(), p};
+        write_int64_attribute(target, "index", static_cast<std::int64_t>(i));
+        write_double_attribute(target, "speed", model.contacts[i].speed);
+        write_double_attribute(target, "start", model.contacts[i].start);
+        write_string_attribute(target, "path",
+                               model.paths[static_cast<size_t>(model.contacts[i].path)].name);
+      });
     }
   }
   {
@@ -239,30 +307,32 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     if (s.rank == 0) reg.assign(model.registration_nodes.begin(), model.registration_nodes.end());
     write_block_dataset<std::int64_t>(s.file, {"/mesh/registration_nodes", n_reg, 1}, rb, reg);
   }
-  s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, "s");
-  s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
-  s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
-  s.slopes = Series(f, p, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, "1");
-  s.axial = Series(f, p, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, "N");
-  s.step_time = Series(f, p, "/steps/time", {}, H5T_IEEE_F64LE, "s");
-  s.step_dt = Series(f, p, "/steps/dt", {}, H5T_IEEE_F64LE, "s");
-  s.step_iterations = Series(f, p, "/steps/newton_iterations", {}, H5T_STD_I32LE, nullptr);
-  s.step_error = Series(f, p, "/steps/error", {}, H5T_IEEE_F64LE, "1");
-  s.step_rejected = Series(f, p, "/steps/rejected", {}, H5T_STD_I32LE, nullptr);
+  s.time = Series(s.file, "/time", {}, H5T_IEEE_F64LE, "s");
+  s.positions = Series(s.file, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
+  s.velocities = Series(s.file, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
+  s.slopes = Series(s.file, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, "1");
+  s.axial = Series(s.file, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, "N");
+  s.step_time = Series(s.file, "/steps/time", {}, H5T_IEEE_F64LE, "s");
+  s.step_dt = Series(s.file, "/steps/dt", {}, H5T_IEEE_F64LE, "s");
+  s.step_iterations = Series(s.file, "/steps/newton_iterations", {}, H5T_STD_I32LE, nullptr);
+  s.step_error = Series(s.file, "/steps/error", {}, H5T_IEEE_F64LE, "1");
+  s.step_rejected = Series(s.file, "/steps/rejected", {}, H5T_STD_I32LE, nullptr);
 
-  const AttributeTarget root{f, p};
-  write_string_attribute(root, "scene", model.source_text);
-  write_string_attribute(root, "scene_file", model.source_file);
-  write_string_attribute(root, "code_version", info.code_version);
-  write_string_attribute(root, "command_line", info.command_line);
-  write_string_attribute(root, "run_id", info.run_id);
-  write_string_attribute(root, "petsc_options", info.petsc_options);
-  write_int64_attribute(root, "n_ranks", info.n_ranks);
-  write_int64_attribute(root, "n_dofs", info.n_dofs);
-  write_string_attribute(root, "analysis", "dynamic");
-  write_string_attribute(root, "status", "running");
-  write_double_attribute(root, "evaluation_start", model.evaluation_start);
-  write_double_attribute(root, "evaluation_end", model.evaluation_end);
+  run_output_phase(s.comm, [&] {
+    const AttributeTarget root{f, p};
+    write_string_attribute(root, "scene", model.source_text);
+    write_string_attribute(root, "scene_file", model.source_file);
+    write_string_attribute(root, "code_version", info.code_version);
+    write_string_attribute(root, "command_line", info.command_line);
+    write_string_attribute(root, "run_id", info.run_id);
+    write_string_attribute(root, "petsc_options", info.petsc_options);
+    write_int64_attribute(root, "n_ranks", info.n_ranks);
+    write_int64_attribute(root, "n_dofs", info.n_dofs);
+    write_string_attribute(root, "analysis", "dynamic");
+    write_string_attribute(root, "status", "running");
+    write_double_attribute(root, "evaluation_start", model.evaluation_start);
+    write_double_attribute(root, "evaluation_end", model.evaluation_end);
+  });
   flush();
 }
 
@@ -277,32 +347,32 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   const auto n_elements = static_cast<hsize_t>(model.elements.size());
   const auto samples = static_cast<hsize_t>(resume.samples);
   const auto steps = static_cast<hsize_t>(resume.steps);
-  const std::string& p = s.path;
   if (s.has_constraints)
     s.constraint_forces =
-        Series(f, p, "/samples/constraint_forces",
+        Series(s.file, "/samples/constraint_forces",
                {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, samples);
   if (s.n_contacts > 0) {
     s.contact_force =
-        Series(f, p, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, samples);
+        Series(s.file, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, samples);
     s.contact_position =
-        Series(f, p, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, samples);
+        Series(s.file, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, samples);
     s.step_contact_force =
-        Series(f, p, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, steps);
+        Series(s.file, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, steps);
   }
-  s.time = Series(f, p, "/time", {}, H5T_IEEE_F64LE, samples);
-  s.positions = Series(f, p, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.velocities = Series(f, p, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.slopes = Series(f, p, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.axial = Series(f, p, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, samples);
-  s.step_time = Series(f, p, "/steps/time", {}, H5T_IEEE_F64LE, steps);
-  s.step_dt = Series(f, p, "/steps/dt", {}, H5T_IEEE_F64LE, steps);
-  s.step_iterations = Series(f, p, "/steps/newton_iterations", {}, H5T_STD_I32LE, steps);
-  s.step_error = Series(f, p, "/steps/error", {}, H5T_IEEE_F64LE, steps);
-  s.step_rejected = Series(f, p, "/steps/rejected", {}, H5T_STD_I32LE, steps);
-  const AttributeTarget root{f, p};
-  check_hdf5_status(H5Adelete(f, "status"), "H5Adelete", p, "status");
-  write_string_attribute(root, "status", "running");
+  s.time = Series(s.file, "/time", {}, H5T_IEEE_F64LE, samples);
+  s.positions = Series(s.file, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.velocities = Series(s.file, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.slopes = Series(s.file, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
+  s.axial = Series(s.file, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, samples);
+  s.step_time = Series(s.file, "/steps/time", {}, H5T_IEEE_F64LE, steps);
+  s.step_dt = Series(s.file, "/steps/dt", {}, H5T_IEEE_F64LE, steps);
+  s.step_iterations = Series(s.file, "/steps/newton_iterations", {}, H5T_STD_I32LE, steps);
+  s.step_error = Series(s.file, "/steps/error", {}, H5T_IEEE_F64LE, steps);
+  s.step_rejected = Series(s.file, "/steps/rejected", {}, H5T_STD_I32LE, steps);
+  run_output_phase(s.comm, [&] {
+    check_hdf5_status(H5Adelete(f, "status"), "H5Adelete", s.path, "status");
+    write_string_attribute({f, s.path}, "status", "running");
+  });
   flush();
 }
 
@@ -322,28 +392,30 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
                                     const std::vector<double>& constraint_forces,
                                     const ContactSample& contacts) {
   Impl& s = *impl_;
-  const hid_t x = s.file.collective_transfer();
-  const RowBlock root_row{0, s.rank == 0 ? 1 : 0};
-  s.time.append(x, 1, root_row, &t);
-  const std::vector<double> p = s.nodes.to_block(positions, 3);
-  s.positions.append(x, 1, s.nodes.block(), p.data());
-  const std::vector<double> v = s.nodes.to_block(velocities, 3);
-  s.velocities.append(x, 1, s.nodes.block(), v.data());
-  const std::vector<double> d = s.nodes.to_block(slopes, 3);
-  s.slopes.append(x, 1, s.nodes.block(), d.data());
-  const std::vector<double> n = s.elements.to_block(axial_force, 1);
-  s.axial.append(x, 1, s.elements.block(), n.data());
-  if (s.has_constraints) {
-    const std::vector<double> c = s.constraints.to_block(constraint_forces, 3);
-    s.constraint_forces.append(x, 1, s.constraints.block(), c.data());
-  }
-  if (s.n_contacts > 0) {
-    // Replicated values: rank 0 writes the row.
-    const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
-    CATENA_ASSERT(contacts.force.size() == s.n_contacts, "one force per contact");
-    s.contact_force.append(x, 1, all, contacts.force.data());
-    s.contact_position.append(x, 1, all, contacts.position.data());
-  }
+  s.write([&] {
+    const hid_t x = s.file.collective_transfer();
+    const RowBlock root_row{0, s.rank == 0 ? 1 : 0};
+    s.time.append(x, 1, root_row, &t);
+    const std::vector<double> p = s.nodes.to_block(positions, 3);
+    s.positions.append(x, 1, s.nodes.block(), p.data());
+    const std::vector<double> v = s.nodes.to_block(velocities, 3);
+    s.velocities.append(x, 1, s.nodes.block(), v.data());
+    const std::vector<double> d = s.nodes.to_block(slopes, 3);
+    s.slopes.append(x, 1, s.nodes.block(), d.data());
+    const std::vector<double> n = s.elements.to_block(axial_force, 1);
+    s.axial.append(x, 1, s.elements.block(), n.data());
+    if (s.has_constraints) {
+      const std::vector<double> c = s.constraints.to_block(constraint_forces, 3);
+      s.constraint_forces.append(x, 1, s.constraints.block(), c.data());
+    }
+    if (s.n_contacts > 0) {
+      // Replicated values: rank 0 writes the row.
+      const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
+      CATENA_ASSERT(contacts.force.size() == s.n_contacts, "one force per contact");
+      s.contact_force.append(x, 1, all, contacts.force.data());
+      s.contact_position.append(x, 1, all, contacts.position.data());
+    }
+  });
 }
 
 void TransientWriter::append_step(const StepRecord& record) {
@@ -352,58 +424,82 @@ void TransientWriter::append_step(const StepRecord& record) {
 
 void TransientWriter::flush() {
   Impl& s = *impl_;
-  const hid_t x = s.file.collective_transfer();
-  const auto n = static_cast<hsize_t>(s.pending_steps.size());
-  if (n > 0) {
-    std::vector<double> t, dt, error;
-    std::vector<std::int32_t> iterations, rejected;
-    for (const StepRecord& r : s.pending_steps) {
-      t.push_back(r.time);
-      dt.push_back(r.dt);
-      error.push_back(r.error);
-      iterations.push_back(r.newton_iterations);
-      rejected.push_back(r.rejected);
+  s.write([&] {
+    const hid_t x = s.file.collective_transfer();
+    const auto n = static_cast<hsize_t>(s.pending_steps.size());
+    if (n > 0) {
+      std::vector<double> t, dt, error;
+      std::vector<std::int32_t> iterations, rejected;
+      for (const StepRecord& r : s.pending_steps) {
+        t.push_back(r.time);
+        dt.push_back(r.dt);
+        error.push_back(r.error);
+        iterations.push_back(r.newton_iterations);
+        rejected.push_back(r.rejected);
+      }
+      const RowBlock rows{0, s.rank == 0 ? static_cast<std::int64_t>(n) : 0};
+      s.step_time.append(x, n, rows, t.data());
+      s.step_dt.append(x, n, rows, dt.data());
+      s.step_iterations.append(x, n, rows, iterations.data());
+      s.step_error.append(x, n, rows, error.data());
+      s.step_rejected.append(x, n, rows, rejected.data());
+      if (s.n_contacts > 0) {
+        std::vector<double> forces;
+        for (const StepRecord& r : s.pending_steps)
+          for (hsize_t i = 0; i < s.n_contacts; ++i)
+            forces.push_back(i < r.contact_force.size() ? r.contact_force[i] : 0.0);
+        const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
+        s.step_contact_force.append(x, n, all, forces.data());
+      }
+      s.pending_steps.clear();
     }
-    const RowBlock rows{0, s.rank == 0 ? static_cast<std::int64_t>(n) : 0};
-    s.step_time.append(x, n, rows, t.data());
-    s.step_dt.append(x, n, rows, dt.data());
-    s.step_iterations.append(x, n, rows, iterations.data());
-    s.step_error.append(x, n, rows, error.data());
-    s.step_rejected.append(x, n, rows, rejected.data());
-    if (s.n_contacts > 0) {
-      std::vector<double> forces;
-      for (const StepRecord& r : s.pending_steps)
-        for (hsize_t i = 0; i < s.n_contacts; ++i)
-          forces.push_back(i < r.contact_force.size() ? r.contact_force[i] : 0.0);
-      const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
-      s.step_contact_force.append(x, n, all, forces.data());
-    }
-    s.pending_steps.clear();
-  }
-  check_hdf5_status(H5Fflush(s.file.id(), H5F_SCOPE_GLOBAL), "H5Fflush", s.path, "/");
+    s.file.flush();
+  });
 }
 
 void TransientWriter::close(const std::string& status,
                             const std::vector<std::pair<std::string, double>>& statistics) {
   Impl& s = *impl_;
   if (s.closed) return;
-  flush();
-  const AttributeTarget root{s.file.id(), s.path};
-  check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
-  write_string_attribute(root, "status", status);
-  for (const auto& [name, value] : statistics) {
-    // A restarted run replaces its predecessor's statistics (they describe the last run).
-    if (H5Aexists(s.file.id(), name.c_str()) > 0)
-      check_hdf5_status(H5Adelete(s.file.id(), name.c_str()), "H5Adelete", s.path, name);
-    write_double_attribute(root, name.c_str(), value);
+  s.closed = true;  // whatever happens below, the file is not touched again
+  // Every step is tried, each agreed on its own, so that the file is closed even when
+  // writing failed; the first failure is reported.
+  std::exception_ptr first_failure;
+  std::string recorded_status = status;
+  const auto attempt = [&](auto&& step) {
+    try {
+      step();
+    } catch (const OutputError& e) {
+      if (!first_failure) first_failure = std::current_exception();
+      if (recorded_status.rfind("failed", 0) != 0)
+        recorded_status = std::string("failed: ") + e.what();
+    }
+  };
+  if (!s.failed) attempt([&] { flush(); });
+  if (s.file.failed()) {
+    // Closing writes the last metadata: only if something can still be written there.
+    if (const std::string why = failed_test_write_beside(s.comm, s.path); !why.empty()) {
+      s.abandon_file();
+      if (first_failure) std::rethrow_exception(first_failure);
+      throw OutputError("'" + s.path + "' is left unclosed, as at its last flush: nothing can " +
+                        "be written beside it (" + why + ")");
+    }
   }
-  for (Series* series : {&s.time, &s.positions, &s.velocities, &s.slopes, &s.axial,
-                         &s.constraint_forces, &s.contact_force, &s.contact_position,
-                         &s.step_contact_force, &s.step_time,
-                         &s.step_dt, &s.step_iterations, &s.step_error, &s.step_rejected})
-    series->reset();
-  s.file.close();
-  s.closed = true;
+  attempt([&] {
+    run_output_phase(s.comm, [&] {
+      const AttributeTarget root{s.file.id(), s.path};
+      check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
+      write_string_attribute(root, "status", recorded_status);
+      for (const auto& [name, value] : statistics) {
+        // A restarted run replaces its predecessor's statistics (they describe the last run).
+        if (H5Aexists(s.file.id(), name.c_str()) > 0)
+          check_hdf5_status(H5Adelete(s.file.id(), name.c_str()), "H5Adelete", s.path, name);
+        write_double_attribute(root, name.c_str(), value);
+      }
+    });
+  });
+  attempt([&] { s.close_file(); });
+  if (first_failure) std::rethrow_exception(first_failure);
 }
 
 }  // namespace catena::io

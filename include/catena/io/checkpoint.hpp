@@ -41,7 +41,8 @@ struct CheckpointShare {
   std::vector<double> lambda;
 };
 
-// Collective. Writes `path` atomically.
+// Collective. Writes `path` atomically. On failure throws catena::OutputError on every
+// rank ("cannot write the checkpoint '<path>': <why>"); the previous checkpoint is kept.
 void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model& model,
                       const CheckpointFacts& facts, const CheckpointShare& share);
 

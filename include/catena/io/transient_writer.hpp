@@ -15,6 +15,13 @@
 // H5Fflush()es, so a reader sees a consistent file up to that point. close() records
 // `status` ("complete", "interrupted" or "failed: <why>") and the run statistics. A file
 // whose `status` is still "running" ended without close(): data up to the last flush.
+//
+// Write failures (disk full, quota, I/O error — even on one rank only) are agreed between
+// the ranks: every collective call throws the same catena::OutputError on every rank
+// together, never leaving a rank behind in a collective call. After a failure the file is
+// not written again; close() records the status and closes the file if a test write beside
+// it succeeds, else it abandons the file (hdf5_parallel_write.hpp: closing it would write
+// its last metadata, which can hang HDF5 1.10 when that fails on some ranks only).
 #include <mpi.h>
 
 #include <memory>
@@ -81,7 +88,11 @@ class TransientWriter {
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.
   void flush();
-  // Collective. Flushes, records status and statistics, closes the file.
+  // Collective. Flushes (unless a write failed before), records status and statistics,
+  // closes the file; each step is attempted even if the one before failed (a failed flush
+  // makes the status "failed: <why>"), but after a failed write only if a test write beside
+  // the file succeeds: else the file is left unclosed. Throws the first catena::OutputError
+  // (or says that the file is left unclosed), on every rank.
   void close(const std::string& status,
              const std::vector<std::pair<std::string, double>>& statistics);
 
