@@ -126,18 +126,18 @@ case $case in
     # Samples every 5 ms, a step and a checkpoint every 20 ms: the 8th sample after the
     # first falls in the second step, after the first checkpoint.
     dynamic_run "rank=1,call=9,at=/samples/positions"
-    expect_one_clean_error "H5Dwrite failed for '$dir/run.h5' at /samples/positions" \
-      "No space left on device" "(on rank 1)" "$dir/run.h5 is closed with status \"failed\""
+    expect_one_clean_error "H5Dwrite failed for '$dir/run.part.h5' at /samples/positions" \
+      "No space left on device" "(on rank 1)" "$dir/run.part.h5 is closed with status \"failed\""
     expect_checkpoint_kept "$dir/run.h5"
-    expect_output_status_failed "$dir/run.h5"
+    expect_output_status_failed "$dir/run.part.h5"
     ;;
   dynamic_flush)
     # Each checkpoint flushes the steps first: the second flush of /steps/time fails.
     dynamic_run "rank=1,call=2,at=/steps/time"
-    expect_one_clean_error "H5Dwrite failed for '$dir/run.h5' at /steps/time" \
+    expect_one_clean_error "H5Dwrite failed for '$dir/run.part.h5' at /steps/time" \
       "No space left on device" "(on rank 1)"
     expect_checkpoint_kept "$dir/run.h5"
-    expect_output_status_failed "$dir/run.h5"
+    expect_output_status_failed "$dir/run.part.h5"
     ;;
   dynamic_checkpoint)
     # A checkpoint of this scene is 3 dataset writes and a close: call 5 is the second
@@ -146,7 +146,7 @@ case $case in
     expect_one_clean_error "cannot write the checkpoint '$dir/run.h5.chk'" "H5Dwrite failed" \
       "No space left on device" "(on rank 1)"
     expect_checkpoint_kept "$dir/run.h5"
-    expect_output_status_failed "$dir/run.h5"
+    expect_output_status_failed "$dir/run.part.h5"
     ;;
   static_np1 | static_np2)
     np=${case#static_np}
@@ -168,7 +168,7 @@ case $case in
     mount_small_disk 512k
     run 2 "" -- run meshes/taut_string.yaml --set analysis.duration=2 \
       --set output.checkpoint_wall_seconds=0 -o "$dir/disk/run.h5"
-    expect_one_clean_error "$dir/disk/run.h5" "No space left on device"
+    expect_one_clean_error "$dir/disk/run.part.h5" "No space left on device"
     ;;
   *)
     fail "unknown case"

@@ -237,7 +237,7 @@ TEST_F(WriteFailureTest, FailingCheckpointOnOneRankKeepsThePreviousCheckpoint) {
   share.q = values_per_row(nodes, 12, 1.0);
   share.v = values_per_row(nodes, 12, 2.0);
   share.a = values_per_row(nodes, 12, 3.0);
-  catena::io::CheckpointFacts facts{1.5, 0.01, 3, 30, "hht"};
+  catena::io::CheckpointFacts facts{1.5, 0.01, 3, 30, "hht", "run", "test"};
   catena::io::write_checkpoint(MPI_COMM_WORLD, path.string(), model_, facts, share);
 
   inject(1, ".chk");  // the next checkpoint's first dataset
