@@ -33,6 +33,9 @@ Options:
                         --set sections.cw.EA=2e7 (validated like the file; repeatable)
   --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
                         OUT.h5 (same scene; analysis.duration may be raised)
+  --memory-limit GIB    run and check: memory per host the run may use (default: the
+                        host's physical memory); a scene whose estimated need exceeds it
+                        is refused (docs/scene.md, "Memory"); off: no check
   -h, --help            this text
 
 Options of stats:
@@ -231,6 +234,12 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.restart = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
+    } else if (a == "--memory-limit") {
+      const std::string& limit = value("--memory-limit");
+      cl.memory_limit_gib =
+          limit == "off" ? 0.0
+                         : parse_positive(limit, "--memory-limit", "GiB",
+                                          "a memory per host in GiB, > 0, or off (no check)");
     } else if (!a.empty() && a[0] == '-') {
       // A PETSc option; skip its value if it has one: the next token, unless it starts
       // with '-' or names the scene file (a .yaml/.yml path).

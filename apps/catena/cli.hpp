@@ -30,6 +30,9 @@ struct CommandLine {
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
+  // --memory-limit GIB: the memory per host a run may use (default: physical memory);
+  // 0 (--memory-limit off): no memory check.
+  std::optional<double> memory_limit_gib;
   std::string joined;                  // the whole command line, for the output file
   StatsArguments stats;                // command "stats" only
   ElasticityArguments elasticity;      // command "elasticity" only

@@ -8,7 +8,7 @@
 namespace catena::app {
 
 void command_check(MPI_Comm comm, const CommandLine& cl) {
-  const model::Model m = load_scene(comm, cl.scene, cl.overrides);
+  const model::Model m = load_scene(comm, cl.scene, cl.overrides, memory_budget(comm, cl));
   if (mpi_rank(comm) == 0) {
     std::printf("%s: valid\n%s", cl.scene.c_str(), model::describe(m, mpi_size(comm)).c_str());
     std::fflush(stdout);

@@ -13,6 +13,7 @@
 #include "catena/io/run_files.hpp"
 #include "catena/solvers/static_solver.hpp"
 #include "commands.hpp"
+#include "output_preflight.hpp"
 #include "run_info.hpp"
 #include "scene_loading.hpp"
 #include "shape_report.hpp"
@@ -78,7 +79,7 @@ void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult&
 }  // namespace
 
 void command_run(MPI_Comm comm, const CommandLine& cl) {
-  model::Model m = load_scene(comm, cl.scene, cl.overrides);
+  model::Model m = load_scene(comm, cl.scene, cl.overrides, memory_budget(comm, cl));
   const int rank = mpi_rank(comm);
   if (rank == 0) {
     std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n",
@@ -86,6 +87,8 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                 m.nodes.size(), m.elements.size(), mpi_size(comm));
     std::fflush(stdout);
   }
+  // Before any solving: a run must not end by finding that it cannot write its results.
+  check_output_path(comm, m, cl.output.has_value());
   // One run at a time per output name (and its checkpoint and partial output).
   const io::OutputLock lock(comm, m.output.file);
   if (rank == 0) io::remove_abandoned_checkpoint_temporaries(m.output.file);

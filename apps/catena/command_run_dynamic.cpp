@@ -122,6 +122,22 @@ class OutputObserver : public solvers::TransientObserver {
 
   bool stop_requested() override { return StopSignal::requested(); }
 
+  // Rank 0 warns once, at the first cut; the count follows at the end of the run
+  // (warn_fixed_steps_cut).
+  void fixed_step_cut(const solvers::StepCut& cut) override {
+    if (warned_of_cut_ || mpi_rank(system_.comm()) != 0) return;
+    warned_of_cut_ = true;
+    std::fprintf(stderr,
+                 "catena: warning: a fixed step of %g s failed at t = %g s (%s); it is retried "
+                 "at %g s, halved until Newton converges, and dt resumes after it. Steps that "
+                 "keep failing cost a failed solve each: a smaller integrator.dt would avoid "
+                 "the retries (the count follows at the end)\n",
+                 cut.failed_dt, cut.time,
+                 cut.failure.empty() ? "Newton did not converge" : cut.failure.c_str(),
+                 cut.next_dt);
+    std::fflush(stderr);
+  }
+
 
  private:
   assembly::SecondOrderSystem& system_;
@@ -132,7 +148,17 @@ class OutputObserver : public solvers::TransientObserver {
   WallClockSchedule schedule_;
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
+  bool warned_of_cut_ = false;
 };
+
+// Not collective (rank 0). How many fixed steps Newton failures cut, if any.
+void warn_fixed_steps_cut(const solvers::TransientReport& r) {
+  if (r.fixed_steps_cut == 0) return;
+  std::fprintf(stderr,
+               "catena: warning: %ld fixed step%s cut after Newton failures; the smallest "
+               "step taken was %g s; a smaller integrator.dt would avoid the retries\n",
+               r.fixed_steps_cut, r.fixed_steps_cut == 1 ? " was" : "s were", r.smallest_cut_dt);
+}
 
 // Not collective (rank 0). The ParaView description of the closed output (all its samples,
 // those of earlier runs a restart continued included). A failure here costs the picture,
@@ -161,6 +187,8 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
           {"jacobian_evaluations", static_cast<double>(k.jacobian_evaluations)},
           {"factorizations", static_cast<double>(k.factorizations)},
           {"linear_solves", static_cast<double>(k.linear_solves)},
+          {"fixed_steps_cut", static_cast<double>(r.fixed_steps_cut)},
+          {"smallest_cut_dt", r.smallest_cut_dt},
           {"wall_seconds", wall}};
 }
 
@@ -318,6 +346,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 integrator->name().c_str(), options.step.adaptive ? "adaptive, first" : "fixed",
                 options.step.dt, options.t_end,
                 static_cast<long long>(system.dof_map().n_global()), mpi_size(comm));
+    if (options.step.adaptive && options.step.dt > options.t_end)
+      std::printf("note: the first step integrator.dt = %g s is longer than analysis.duration "
+                  "= %g s; it is cut to the duration\n",
+                  options.step.dt, options.t_end);
     std::fflush(stdout);
   }
 
@@ -400,6 +432,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   if (!report.interrupted) publish_completed_output(comm, partial, output);
   write_xdmf(rank, written, m);
   if (rank == 0) {
+    warn_fixed_steps_cut(report);
     std::printf("%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
                 "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
                 "(%.3g s per simulated second)\n",

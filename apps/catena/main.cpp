@@ -6,11 +6,12 @@
 //   catena stats run.h5 --section 240 360 --json
 //   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5
 //
-// Exit codes: 0 success, 2 bad input (scene or command line), 3 numerical failure
-// (no equilibrium found, singular structure, step size below its minimum), 4 output could
-// not be written (disk full, quota, I/O error: the same on every rank; the last checkpoint
-// is kept), 128 + signal after SIGTERM/SIGINT (checkpoint and output written), 1 anything
-// else.
+// Exit codes: 0 success, 2 bad input (scene, command line, unwritable output path, a run
+// estimated too large for the memory, another run writing the same output), 3 numerical
+// failure (no equilibrium found, singular structure, step size below its minimum), 4 output
+// could not be written (disk full, quota, I/O error: the same on every rank; the last
+// checkpoint is kept), 128 + signal after SIGTERM/SIGINT (checkpoint and output written),
+// 1 anything else.
 #include <cstdio>
 #include <exception>
 

@@ -8,6 +8,7 @@
 
 #include "catenary_builder.hpp"
 #include "did_you_mean.hpp"
+#include "physical_bounds.hpp"
 #include "rayleigh_reader.hpp"
 #include "run_reach.hpp"
 
@@ -329,6 +330,12 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   d.element_length = element_length.real(RealRange::positive("m"));
   double total_length = 0.0;
   for (const double l : d.span_lengths) total_length += l;
+  // Each span is within the coordinate bound; their sum must be too (node x coordinates).
+  if (total_length > kMaxCoordinate)
+    catenary.fail("the spans add up to " + format_number(total_length) +
+                  " m; at most " + format_number(kMaxCoordinate) +
+                  " m is accepted (node coordinates are bounded, docs/scene.md \"Physical "
+                  "bounds\"): fewer or shorter spans");
   if (total_length / d.element_length > max_catenary_elements)
     element_length.fail("element_length " + format_number(d.element_length) + " m gives about " +
                         format_number(total_length / d.element_length) +

@@ -208,6 +208,21 @@ void read_initial(const Field& initial, Model& model) {
   for (auto& [node, offset] : offsets) ic.offsets.push_back(offset);
 }
 
+// A fixed step longer than the run would be one step over the whole duration, with
+// the step's end clamped to it: almost certainly a unit slip (dt in ms?). An adaptive
+// run's dt is only its first step; the driver cuts that to the duration (the app notes it).
+void check_step_within_duration(const Field& dt, const Field& duration, const DynamicOptions& o) {
+  const IntegratorOptions& in = o.integrator;
+  if (in.adaptive || !(in.dt > o.duration)) return;
+  const std::string what = "integrator.dt = " + format_number(in.dt) + " s" +
+                           (dt.present() ? "" : " (the default)") +
+                           " is longer than analysis.duration = " + format_number(o.duration) +
+                           " s: a fixed step must not exceed the duration; expected dt <= " +
+                           format_number(o.duration) + " s (or adaptive: true, where dt is "
+                           "only the first step)";
+  (dt.present() ? dt : duration).fail(what);
+}
+
 }  // namespace
 
 void read_dynamics(const Field& scene, Model& model) {
@@ -222,9 +237,12 @@ void read_dynamics(const Field& scene, Model& model) {
       fail_if_present(output.child(key), std::string("'") + key + "'" + why);
     return;
   }
-  model.dynamic_options.duration = analysis.child("duration").real(RealRange::positive("s"));
+  const Field duration = analysis.child("duration");
+  model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
   read_integrator(scene.child("integrator"), model.dynamic_options.integrator);
+  check_step_within_duration(scene.child("integrator").child("dt"), duration,
+                             model.dynamic_options);
 }
 
 }  // namespace catena::model::detail

@@ -1,6 +1,9 @@
 #include "element_options.hpp"
 
 #include <array>
+#include <cmath>
+
+#include "physical_bounds.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -67,6 +70,21 @@ PrestressSpec read_prestress(const Field& entry, const Section& section) {
   return spec;
 }
 
+namespace {
+
+// A prestrain derived from a tiny unstretched length (or EA) is as absurd as one written
+// directly: it is held to the same physical bound.
+double bounded_prestrain(const PrestressSpec& spec, double prestrain, const std::string& how) {
+  const double bound = physical_magnitude_bound("");
+  if (!(std::abs(prestrain) <= bound))
+    spec.given->fail(how + " gives prestrain " + format_number(prestrain) +
+                     "; its magnitude must be at most " + format_number(bound) +
+                     " (a physical bound, docs/scene.md \"Physical bounds\")");
+  return prestrain;
+}
+
+}  // namespace
+
 double resolve_prestrain(const PrestressSpec& spec, double EA, double length) {
   switch (spec.kind) {
     case PrestressSpec::Kind::none:
@@ -74,7 +92,9 @@ double resolve_prestrain(const PrestressSpec& spec, double EA, double length) {
     case PrestressSpec::Kind::prestrain:
       return spec.value;  // range-checked when read
     case PrestressSpec::Kind::unstretched_length:
-      return length / spec.value - 1.0;
+      return bounded_prestrain(spec, length / spec.value - 1.0,
+                               "unstretched_length " + format_number(spec.value) +
+                                   " m on a chord of " + format_number(length) + " m");
     case PrestressSpec::Kind::tension: {
       const double prestrain = spec.value / EA;
       if (!(prestrain > -1.0))
@@ -83,7 +103,9 @@ double resolve_prestrain(const PrestressSpec& spec, double EA, double length) {
                          ", which is <= -1 (no positive unstretched length); expected "
                          "tension > -EA = " +
                          format_number(-EA) + " N");
-      return prestrain;
+      return bounded_prestrain(spec, prestrain,
+                               "tension " + format_number(spec.value) + " N with EA " +
+                                   format_number(EA) + " N");
     }
   }
   return 0.0;

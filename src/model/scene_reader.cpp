@@ -21,6 +21,7 @@
 #include "free_body_check.hpp"
 #include "dynamics_reader.hpp"
 #include "line_generator.hpp"
+#include "memory_check.hpp"
 #include "moving_load_reader.hpp"
 #include "nodal_frames.hpp"
 #include "pantograph_reader.hpp"
@@ -70,7 +71,7 @@ YAML::Node load_document(const std::string& text, const std::string& file_label)
 }
 
 // Reads every part of the scene into build.model, in the order the parts depend on.
-void read_model(const Field& scene, detail::SceneBuild& build) {
+void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudget& budget) {
   scene.check_keys(top_level_keys());
   Model& model = build.model;
   model.name = scene.child("name").text_or("");
@@ -80,6 +81,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::read_nodes(scene.child("nodes"), build);
   std::vector<detail::PendingElement> explicit_elements =
       detail::read_elements(scene.child("elements"), sections);
+  detail::check_lines_fit(scene.child("lines"), sections, build, budget);  // before building
   detail::generate_lines(scene.child("lines"), sections, build,
                          detail::max_element_id(explicit_elements));
   detail::add_explicit_elements(std::move(explicit_elements), build);
@@ -102,6 +104,7 @@ void read_model(const Field& scene, detail::SceneBuild& build) {
   detail::read_moving_loads(scene.child("moving_loads"), build);
   detail::read_pantographs(scene.child("pantographs"), build);
   detail::check_no_free_body(build);
+  detail::check_model_fits(scene, build, budget);
 }
 
 // The text stored with the results: the file itself, or, with overrides, the tree after
@@ -120,13 +123,13 @@ std::string source_text_after(const std::string& text, const std::string& file_l
 }  // namespace
 
 Model parse_scene(const std::string& text, const std::string& file_label,
-                  const std::vector<std::string>& overrides) {
+                  const std::vector<std::string>& overrides, const MemoryBudget& budget) {
   check_scene_text(text, file_label);
   YAML::Node root = load_document(text, file_label);
   const detail::SceneSource source{file_label,
                                    detail::apply_overrides(root, overrides, file_label)};
   detail::SceneBuild build(source);
-  read_model(Field::root(source, root), build);
+  read_model(Field::root(source, root), build, budget);
   build.model.source_file = file_label;
   build.model.source_text = source_text_after(text, file_label, root, overrides);
   return std::move(build.model);

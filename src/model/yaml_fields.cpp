@@ -8,6 +8,7 @@
 #include <map>
 
 #include "did_you_mean.hpp"
+#include "physical_bounds.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -44,6 +45,7 @@ int line_of(const YAML::Mark& mark, int fallback) {
 
 RealRange RealRange::any(std::string unit) {
   RealRange r;
+  r.max_magnitude = physical_magnitude_bound(unit);
   r.unit = std::move(unit);
   return r;
 }
@@ -53,6 +55,7 @@ RealRange RealRange::positive(std::string unit) { return greater_than(0.0, std::
 RealRange RealRange::non_negative(std::string unit) {
   RealRange r;
   r.min = 0.0;
+  r.max_magnitude = physical_magnitude_bound(unit);
   r.unit = std::move(unit);
   return r;
 }
@@ -61,20 +64,27 @@ RealRange RealRange::greater_than(double min, std::string unit) {
   RealRange r;
   r.min = min;
   r.min_inclusive = false;
+  r.max_magnitude = physical_magnitude_bound(unit);
   r.unit = std::move(unit);
   return r;
 }
 
 RealRange RealRange::between(double min, bool min_inclusive, double max, bool max_inclusive,
                              std::string unit) {
-  return RealRange{min, max, min_inclusive, max_inclusive, std::move(unit)};
+  RealRange r;
+  r.min = min;
+  r.max = max;
+  r.min_inclusive = min_inclusive;
+  r.max_inclusive = max_inclusive;
+  r.unit = std::move(unit);
+  return r;
 }
 
 bool RealRange::contains(double x) const {
   if (!std::isfinite(x)) return false;
   const bool above = min_inclusive ? x >= min : x > min;
   const bool below = max_inclusive ? x <= max : x < max;
-  return above && below;
+  return above && below && std::abs(x) <= max_magnitude;
 }
 
 std::string RealRange::describe() const {
@@ -89,7 +99,12 @@ std::string RealRange::describe() const {
   } else if (has_max) {
     text += (max_inclusive ? " <= " : " < ") + format_number(max);
   }
-  return with_unit(text, unit);
+  text = with_unit(text, unit);
+  // Kept apart from the interval, whose wording messages and tests rely on.
+  if (std::isfinite(max_magnitude))
+    text += std::string(has_min && min >= 0.0 ? " (at most " : " (magnitude at most ") +
+            format_number(max_magnitude) + ", a physical bound)";
+  return text;
 }
 
 IntRange IntRange::any(std::string meaning) {

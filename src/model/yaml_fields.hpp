@@ -38,13 +38,16 @@ struct SceneSource {
 };
 
 // Accepted interval of a real number (always finite); messages render it, e.g.
-// "a finite number > 0 [N]".
+// "a finite number > 0 [N] (magnitude at most 1e+12)". The factories without an explicit
+// maximum (any, positive, non_negative, greater_than) also bound the magnitude by the
+// unit's physical bound (physical_bounds.hpp), so that no value near DBL_MAX gets in.
 struct RealRange {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_inclusive = true;
   bool max_inclusive = true;
   std::string unit;  // SI unit shown in messages; "" = dimensionless
+  double max_magnitude = std::numeric_limits<double>::infinity();  // |x| <= this
 
   static RealRange any(std::string unit);
   static RealRange positive(std::string unit);

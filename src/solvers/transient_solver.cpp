@@ -79,6 +79,7 @@ class Driver {
         last_failure_ = a.outcome;
         h = 0.5 * step;
         if (h < c.dt_min) fail_small_step(t, h);
+        if (!c.adaptive) note_fixed_step_cut(t, step, h, rejected == 1);
         continue;
       }
       if (c.adaptive && a.error > 1.0) {
@@ -216,7 +217,18 @@ class Driver {
     committed_sample_ = next_sample_;
   }
 
+  // A fixed step failed and is retried at h_next; `first_failure` if the step was tried
+  // at dt until now (its later halvings count as the same cut step).
+  void note_fixed_step_cut(double t, double failed, double h_next, bool first_failure) {
+    if (first_failure) ++report_.fixed_steps_cut;
+    observer_.fixed_step_cut(
+        {t, failed, h_next, last_failure_.failure, report_.fixed_steps_cut});
+  }
+
   void record(double step, const Attempt& a, int rejected) {
+    if (!options_.step.adaptive && rejected > 0)
+      report_.smallest_cut_dt =
+          report_.smallest_cut_dt > 0.0 ? std::min(report_.smallest_cut_dt, step) : step;
     ++report_.steps_accepted;
     report_.smallest_dt = report_.steps_accepted == 1 ? step : std::min(report_.smallest_dt, step);
     report_.largest_dt = std::max(report_.largest_dt, step);

@@ -89,7 +89,7 @@ TEST(CatenaryAutoSpans, BadInputNamesTheKeyAndWhatIsAccepted) {
       {{"catenary.spans=auto", "catenary.run_out_spans=-1"},
        {"catenary.run_out_spans", "[0, 10000]"}},
       {{"catenary.spans=many"}, {"catenary.spans", "or 'auto'", "many"}},
-      {{"catenary.spans=auto", "pantographs[0].speed_kmh=3e7", "analysis.duration=1000"},
+      {{"catenary.spans=auto", "pantographs[0].speed_kmh=36000", "analysis.duration=1000"},
        {"catenary.spans", "at most 10000"}},
   };
   test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); },

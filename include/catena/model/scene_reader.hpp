@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "catena/model/memory_estimate.hpp"
 #include "catena/model/model.hpp"
 
 namespace catena::model {
@@ -33,9 +34,12 @@ void check_scene_text(const std::string& text, const std::string& file_label);
 // check_scene_text first. Sets Model::source_file = file_label and Model::source_text
 // (the text itself if there are no overrides; otherwise the tree after overrides,
 // re-emitted, headed by comments listing the overrides — a complete scene that reproduces
-// the run, at the cost of the original comments). Throws InputError.
+// the run, at the cost of the original comments). An active `budget` refuses a scene whose
+// run's estimated memory (memory_estimate.hpp) exceeds it, the lines before they are
+// generated. Throws InputError.
 Model parse_scene(const std::string& text, const std::string& file_label,
-                  const std::vector<std::string>& overrides = {});
+                  const std::vector<std::string>& overrides = {},
+                  const MemoryBudget& budget = {});
 
 // Not collective. Reads the file at `path` (it must exist, be a readable regular file of
 // at most max_scene_bytes) and parses it with `path` as the label. Throws InputError.

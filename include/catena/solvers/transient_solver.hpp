@@ -11,7 +11,9 @@
 // of h/2, err = ‖q_{h/2,h/2} − q_h‖ / (2^p − 1), k = p + 1, and the two half steps are
 // kept. A step change within [1, 1.2]·h is not made, so the factorisation is reused
 // (RADAU5's rule). A Newton failure halves h. Fixed steps: h = dt (the last step is cut
-// to land on t_end); a Newton failure halves h for that step and dt resumes afterwards.
+// to land on t_end); a Newton failure halves h for that step and dt resumes afterwards;
+// the observer hears of each such cut and the report counts them, since a dt that keeps
+// failing costs a failed solve per step and says the step is too long.
 // Below dt_min the run stops with a NumericalError naming the time, step, residual and
 // the worst DOF (node and component).
 #include <petscvec.h>
@@ -55,6 +57,15 @@ struct StepRecord {
   int rejected = 0;           // attempts rejected before this step was accepted
 };
 
+// A fixed step cut after a Newton failure (adaptive runs cut steps as a matter of course).
+struct StepCut {
+  double time = 0.0;         // start of the step
+  double failed_dt = 0.0;    // the step that failed
+  double next_dt = 0.0;      // the step tried next (half of it)
+  std::string failure;       // why Newton failed
+  long fixed_steps_cut = 0;  // steps of the run cut so far, this one included
+};
+
 class TransientObserver {
  public:
   virtual ~TransientObserver() = default;
@@ -62,6 +73,9 @@ class TransientObserver {
   virtual void sample(double t, Vec q, Vec v) = 0;
   // Collective. After every accepted step (identical on every rank).
   virtual void step(const StepRecord&) {}
+  // Collective (identical on every rank). A fixed step failed and is retried at half its
+  // size: every failure of a step, its first one and the retries of halves alike.
+  virtual void fixed_step_cut(const StepCut&) {}
   // Not collective: this rank's request to stop (e.g. a signal arrived). The driver
   // combines the ranks' answers so that all stop at the same step.
   virtual bool stop_requested() { return false; }
@@ -72,6 +86,10 @@ struct TransientReport {
   bool interrupted = false;  // stopped by a stop request before t_end
   long steps_accepted = 0, steps_rejected = 0, samples = 0;
   double smallest_dt = 0.0, largest_dt = 0.0;
+  // Fixed steps only: steps of dt that failed and were retried halved (each counted once,
+  // however often it was halved), and the shortest step taken in their place (0: none).
+  long fixed_steps_cut = 0;
+  double smallest_cut_dt = 0.0;
 };
 
 // Collective. Runs integrator (whose state is set) to options.t_end.

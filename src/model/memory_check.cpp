@@ -1,0 +1,101 @@
+#include "memory_check.hpp"
+
+#include <map>
+#include <optional>
+
+namespace catena::model::detail {
+namespace {
+
+std::string advice(const MemoryBudget& budget) {
+  return std::string("; expected a scene whose run fits") +
+         (budget.ranks_on_host > 1 ? " (or fewer ranks per host: each holds the whole model)"
+                                   : "") +
+         ": fewer elements, or more hosts; --memory-limit GIB overrides the limit "
+         "(docs/scene.md, \"Memory\")";
+}
+
+int node_dofs_of(SectionKind kind) {
+  switch (kind) {
+    case SectionKind::beam:
+      return 12;
+    case SectionKind::cable:
+      return 6;
+    default:
+      return 3;
+  }
+}
+
+}  // namespace
+
+void check_lines_fit(const Field& lines, const SectionTable& sections, const SceneBuild& build,
+                     const MemoryBudget& budget) {
+  if (!budget.active() || !lines.is_list()) return;
+  ProblemSize size;
+  size.nodes = build.model.nodes.size();
+  size.factor_multiple = 1.0;
+  // Fields are never assigned: a YAML::Node's operator= writes into the document.
+  std::optional<Field> largest;
+  std::int64_t largest_count = 0;
+  for (const Field& line : lines.items()) {
+    if (!line.is_map()) continue;
+    const Field count = line.child("elements");
+    const Field section = line.child("section");
+    if (!count.is_scalar() || !section.is_scalar()) continue;
+    const std::optional<std::int64_t> n = parse_integer(count.node().Scalar());
+    const auto found = sections.find(section.node().Scalar());
+    if (!n || *n < 1 || *n > 10'000'000 || found == sections.end()) continue;
+    const std::int64_t d = node_dofs_of(found->second.kind);
+    size.nodes += *n - 1;
+    size.elements += *n;
+    size.dofs += *n * d;
+    size.matrix_nonzeros += *n * 3 * d * d;  // a diagonal and two off-diagonal blocks
+    if (*n > largest_count) {
+      largest_count = *n;
+      largest.emplace(count);
+    }
+  }
+  if (largest_count == 0) return;
+  const MemoryEstimate estimate = estimate_memory(size);
+  const double need = estimate.per_host_bytes(budget.ranks, budget.ranks_on_host);
+  if (need <= budget.host_bytes) return;
+  largest->fail("the lines make " + std::to_string(size.elements) +
+               " elements, and a run of them alone needs an estimated " +
+               estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+               budget.describe() + advice(budget));
+}
+
+void check_model_fits(const Field& scene, const SceneBuild& build, const MemoryBudget& budget) {
+  if (!budget.active()) return;
+  const MemoryEstimate estimate = estimate_memory(problem_size(build.model));
+  if (estimate.per_host_bytes(budget.ranks, budget.ranks_on_host) <= budget.host_bytes) return;
+  // The entry that made the most elements: a line's count, the catenary's element length.
+  std::map<std::string, std::pair<int, Field>> per_entry;
+  for (std::size_t e = 0; e < build.model.elements.size(); ++e) {
+    const Field& origin = build.element_origin(static_cast<int>(e));
+    auto [it, inserted] = per_entry.try_emplace(origin.path(), 0, origin);
+    ++it->second.first;
+  }
+  const Field* origin = nullptr;
+  int most = 0;
+  for (const auto& [path, entry] : per_entry)
+    if (entry.first > most) {
+      most = entry.first;
+      origin = &entry.second;
+    }
+  // Fields are never assigned: a YAML::Node's operator= writes into the document.
+  std::optional<Field> where;
+  if (!origin)
+    where.emplace(scene);
+  else if (origin->is_map() && origin->child("elements").present())
+    where.emplace(origin->child("elements"));
+  else if (origin->is_map() && origin->child("element_length").present())
+    where.emplace(origin->child("element_length"));
+  else
+    where.emplace(*origin);
+  where->fail("the scene makes " + std::to_string(build.model.elements.size()) + " elements (" +
+             std::to_string(most) + " from here), and its run needs an estimated " +
+             estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+             budget.describe() + advice(budget));
+}
+
+}  // namespace catena::model::detail
