@@ -24,9 +24,11 @@
 #include "catena/solvers/transient_solver.hpp"
 #include "commands.hpp"
 #include "initial_state.hpp"
+#include "resume_checkpoint.hpp"
 #include "run_info.hpp"
 #include "shape_report.hpp"
 #include "stop_signal.hpp"
+#include "test_hooks.hpp"
 
 namespace catena::app {
 namespace {
@@ -62,9 +64,11 @@ class OutputObserver : public solvers::TransientObserver {
     system_.owned_node_rows(integrator_.a(), share.a, unused);
     std::vector<double> forces;
     system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
+    share.resume = resume_rows(system_, integrator_, driver_);
     io::write_checkpoint(system_.comm(), output_.file + ".chk", system_.model(), facts, share);
   }
   void set_last_dt(double dt) { last_dt_ = dt; }
+  void set_driver_state(const std::optional<solvers::DriverState>& d) { driver_ = d; }
 
   void sample(double t, Vec q, Vec v) override {
     std::vector<double> positions, slopes, velocities, unused;
@@ -94,16 +98,19 @@ class OutputObserver : public solvers::TransientObserver {
         record.contact_force.push_back(c.force);
     writer_.append_step(record);
     last_dt_ = r.dt;
+    driver_ = r.driver;
+    const bool hook_checkpoint = hooks_.checkpoint_due();
     double now = MPI_Wtime();
     MPI_Bcast(&now, 1, MPI_DOUBLE, 0, system_.comm());
-    if (output_.checkpoint_wall_seconds > 0.0 &&
-        now - last_checkpoint_ >= output_.checkpoint_wall_seconds) {
+    if (hook_checkpoint || (output_.checkpoint_wall_seconds > 0.0 &&
+                            now - last_checkpoint_ >= output_.checkpoint_wall_seconds)) {
       checkpoint();  // flushes too
       last_checkpoint_ = last_flush_ = now;
     } else if (now - last_flush_ >= output_.flush_wall_seconds) {
       writer_.flush();
       last_flush_ = now;
     }
+    hooks_.after_step();
   }
 
   bool stop_requested() override { return StopSignal::requested(); }
@@ -116,6 +123,8 @@ class OutputObserver : public solvers::TransientObserver {
   const solvers::TimeIntegrator& integrator_;
   double last_flush_, last_checkpoint_;
   double last_dt_ = 0.0;
+  std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
+  TestHooks hooks_ = TestHooks::from_environment();
 };
 
 // Not collective (rank 0). The ParaView description of the closed output (all its samples,
@@ -146,6 +155,18 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
           {"factorizations", static_cast<double>(k.factorizations)},
           {"linear_solves", static_cast<double>(k.linear_solves)},
           {"wall_seconds", wall}};
+}
+
+// Not collective (rank 0). Says when a restart will not continue bit for bit.
+void print_restart_exactness(const io::Checkpoint& c, int ranks) {
+  if (c.resume.empty())
+    std::printf("restart: the checkpoint holds no solver state (an older format): Newton "
+                "starts afresh, so the run agrees with an uninterrupted one to Newton's "
+                "tolerance, not bit for bit\n");
+  else if (c.facts.ranks != ranks)
+    std::printf("restart: checkpoint written on %d ranks, continuing on %d: the run agrees "
+                "with an uninterrupted one to Newton's tolerance, not bit for bit\n",
+                c.facts.ranks, ranks);
 }
 
 }  // namespace
@@ -196,6 +217,11 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     system.set_from_node_rows(v.get(), resumed->v, no_multipliers);
     system.set_from_node_rows(a.get(), resumed->a, no_multipliers);
     integrator->set_state(resumed->facts.time, q.get(), v.get(), a.get());
+    {
+      const RestoredResumeState restored(system, resumed->resume);
+      integrator->restore_resume_state(restored.state());
+      options.resume_driver = solvers::restore_driver_state(restored.state());
+    }
     options.resume = true;
     options.sample_origin = 0.0;
     if (options.step.adaptive && resumed->facts.last_dt > 0.0)
@@ -205,6 +231,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                   m.output.file.c_str(), resumed->facts.time,
                   static_cast<long long>(resumed->facts.samples),
                   static_cast<long long>(resumed->facts.steps));
+    if (rank == 0) print_restart_exactness(*resumed, mpi_size(comm));
   } else {
     if (dyn.initial.from_static) {
       solvers::StaticSolver statics(system, m.static_options);
@@ -245,7 +272,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                                                    system.dof_map().owned_nodes(),
                                                    owned_elements, owned_constraints);
   OutputObserver observer(system, *writer, m.output, *integrator);
-  if (resumed) observer.set_last_dt(resumed->facts.last_dt);
+  if (resumed) {
+    observer.set_last_dt(resumed->facts.last_dt);
+    observer.set_driver_state(options.resume_driver);
+  }
   const StopSignal signals;
   solvers::TransientReport report;
   try {
