@@ -157,18 +157,6 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
           {"wall_seconds", wall}};
 }
 
-// Not collective (rank 0). Says when a restart will not continue bit for bit.
-void print_restart_exactness(const io::Checkpoint& c, int ranks) {
-  if (c.resume.empty())
-    std::printf("restart: the checkpoint holds no solver state (an older format): Newton "
-                "starts afresh, so the run agrees with an uninterrupted one to Newton's "
-                "tolerance, not bit for bit\n");
-  else if (c.facts.ranks != ranks)
-    std::printf("restart: checkpoint written on %d ranks, continuing on %d: the run agrees "
-                "with an uninterrupted one to Newton's tolerance, not bit for bit\n",
-                c.facts.ranks, ranks);
-}
-
 }  // namespace
 
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
@@ -217,11 +205,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     system.set_from_node_rows(v.get(), resumed->v, no_multipliers);
     system.set_from_node_rows(a.get(), resumed->a, no_multipliers);
     integrator->set_state(resumed->facts.time, q.get(), v.get(), a.get());
-    {
-      const RestoredResumeState restored(system, resumed->resume);
-      integrator->restore_resume_state(restored.state());
-      options.resume_driver = solvers::restore_driver_state(restored.state());
-    }
+    options.resume_driver = restore_resume_state(system, *integrator, *resumed);
     options.resume = true;
     options.sample_origin = 0.0;
     if (options.step.adaptive && resumed->facts.last_dt > 0.0)
@@ -231,7 +215,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                   m.output.file.c_str(), resumed->facts.time,
                   static_cast<long long>(resumed->facts.samples),
                   static_cast<long long>(resumed->facts.steps));
-    if (rank == 0) print_restart_exactness(*resumed, mpi_size(comm));
+    if (rank == 0) print_restart_exactness(*resumed, *integrator, mpi_size(comm));
   } else {
     if (dyn.initial.from_static) {
       solvers::StaticSolver statics(system, m.static_options);

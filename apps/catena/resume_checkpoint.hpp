@@ -30,4 +30,15 @@ class RestoredResumeState {
   solvers::ResumeState state_;
 };
 
+// Collective. Gives the integrator, its state already set from `checkpoint`, the step-to-step
+// state saved with it; returns the driver's (none from an older checkpoint).
+std::optional<solvers::DriverState> restore_resume_state(
+    const assembly::SecondOrderSystem& system, solvers::TimeIntegrator& integrator,
+    const io::Checkpoint& checkpoint);
+
+// Not collective (rank 0). Says when a restart will not continue bit for bit (an
+// integrator without resume state, an older checkpoint, another rank count).
+void print_restart_exactness(const io::Checkpoint& c, const solvers::TimeIntegrator& integrator,
+                             int ranks);
+
 }  // namespace catena::app

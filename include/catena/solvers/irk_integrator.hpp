@@ -90,6 +90,7 @@ class IrkIntegrator final : public TimeIntegrator {
   const IntegratorCounters& counters() const override;
   void save_resume_state(ResumeState& out) const override;
   void restore_resume_state(const ResumeState& in) override;
+  bool resumes_exactly() const override { return true; }
 
   const ButcherTableau& tableau() const;
   // True if the stage Newton uses the decoupled linear algebra.

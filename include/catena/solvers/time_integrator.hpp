@@ -109,6 +109,9 @@ class TimeIntegrator {
   // An empty `in` (an older checkpoint) changes nothing. Throws catena::Error if an entry
   // is missing.
   virtual void restore_resume_state(const ResumeState& in) { (void)in; }
+  // Whether the two above carry everything, so that a restart on the same ranks continues
+  // bit for bit.
+  virtual bool resumes_exactly() const { return false; }
 };
 
 }  // namespace catena::solvers
