@@ -33,9 +33,11 @@
 #include "catena/solvers/transient_solver.hpp"
 #include "commands.hpp"
 #include "initial_state.hpp"
+#include "resume_checkpoint.hpp"
 #include "run_info.hpp"
 #include "shape_report.hpp"
 #include "stop_signal.hpp"
+#include "test_hooks.hpp"
 #include "wall_clock_schedule.hpp"
 
 namespace catena::app {
@@ -75,11 +77,13 @@ class OutputObserver : public solvers::TransientObserver {
     system_.owned_node_rows(integrator_.a(), share.a, unused);
     std::vector<double> forces;
     system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
+    share.resume = resume_rows(system_, integrator_, driver_);
     io::write_checkpoint(system_.comm(), io::checkpoint_path(output_.file), system_.model(), facts,
                          share);
     last_checkpoint_time_ = facts.time;
   }
   void set_last_dt(double dt) { last_dt_ = dt; }
+  void set_driver_state(const std::optional<solvers::DriverState>& d) { driver_ = d; }
   // A restarted run: the checkpoint it started from is there until it writes its own.
   void set_last_checkpoint_time(double t) { last_checkpoint_time_ = t; }
   // The time of the newest checkpoint on disk written by this run or the one it continues.
@@ -113,11 +117,16 @@ class OutputObserver : public solvers::TransientObserver {
         record.contact_force.push_back(c.force);
     writer_.append_step(record);
     last_dt_ = r.dt;
-    switch (schedule_.due()) {
-      case WallClockSchedule::Action::checkpoint: checkpoint(); break;  // flushes too
-      case WallClockSchedule::Action::flush: writer_.flush(); break;
-      case WallClockSchedule::Action::none: break;
+    driver_ = r.driver;
+    // Both decisions are the same on every rank: the schedule's is rank 0's, broadcast; the
+    // testing hook counts steps.
+    const WallClockSchedule::Action due = schedule_.due();
+    if (hooks_.checkpoint_due() || due == WallClockSchedule::Action::checkpoint) {
+      checkpoint();  // flushes too
+    } else if (due == WallClockSchedule::Action::flush) {
+      writer_.flush();
     }
+    hooks_.after_step();
   }
 
   bool stop_requested() override { return StopSignal::requested(); }
@@ -149,6 +158,8 @@ class OutputObserver : public solvers::TransientObserver {
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
+  std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
+  TestHooks hooks_ = TestHooks::from_environment();
 };
 
 // Not collective (rank 0). How many fixed steps Newton failures cut, if any.
@@ -320,6 +331,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     system.set_from_node_rows(v.get(), resumed->v, no_multipliers);
     system.set_from_node_rows(a.get(), resumed->a, no_multipliers);
     integrator->set_state(resumed->facts.time, q.get(), v.get(), a.get());
+    options.resume_driver = restore_resume_state(system, *integrator, *resumed);
     options.resume = true;
     options.sample_origin = 0.0;
     if (options.step.adaptive && resumed->facts.last_dt > 0.0)
@@ -329,6 +341,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                   m.output.file.c_str(), resumed->facts.time,
                   static_cast<long long>(resumed->facts.samples),
                   static_cast<long long>(resumed->facts.steps));
+    if (rank == 0) print_restart_exactness(*resumed, *integrator, mpi_size(comm));
   } else {
     if (dyn.initial.from_static) {
       solvers::StaticSolver statics(system, m.static_options);
@@ -391,6 +404,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   if (resumed) {
     observer.set_last_dt(resumed->facts.last_dt);
     observer.set_last_checkpoint_time(resumed->facts.time);
+    observer.set_driver_state(options.resume_driver);
   }
   const StopSignal signals;
   solvers::TransientReport report;

@@ -30,5 +30,6 @@ StopSignal::~StopSignal() {
 
 bool StopSignal::requested() { return received != 0; }
 int StopSignal::signal_number() { return received; }
+void StopSignal::request(int signal) { received = signal; }
 
 }  // namespace catena::app

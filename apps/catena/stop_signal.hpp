@@ -14,6 +14,8 @@ class StopSignal {
   StopSignal& operator=(const StopSignal&) = delete;
   static bool requested();
   static int signal_number();  // the signal received (0: none)
+  // As if `signal` had arrived (a testing hook, test_hooks.hpp).
+  static void request(int signal);
 };
 
 }  // namespace catena::app

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,13 @@
 namespace catena::io {
 namespace fs = std::filesystem;
 namespace {
+
+constexpr const char* kFormat = "catena-checkpoint-2";
+constexpr const char* kFormatWithoutResume = "catena-checkpoint-1";
+
+bool known_format(const std::string& format) {
+  return format == kFormat || format == kFormatWithoutResume;
+}
 
 std::int64_t count_of(const model::Model& m, const char* what) {
   const std::string w = what;
@@ -58,6 +66,36 @@ class Reader {
     H5free_memory(value);
     return out;
   }
+  bool has(const char* name) const {
+    return H5Lexists(file_.get(), name, H5P_DEFAULT) > 0;
+  }
+  // Names of the objects in group `name`, in HDF5's name order.
+  std::vector<std::string> members(const char* name) const {
+    std::vector<std::string> out;
+    check_hdf5_status(H5Literate_by_name(file_.get(), name, H5_INDEX_NAME, H5_ITER_INC,
+                                          nullptr, collect_link, &out, H5P_DEFAULT),
+                      "H5Literate_by_name", path_, name);
+    return out;
+  }
+  // The numeric attributes of group `name`: floating point as reals, integers as integers.
+  void numbers(const char* name, std::map<std::string, double>& reals,
+               std::map<std::string, std::int64_t>& integers) const {
+    const GroupHandle g(
+        checked_hdf5_id(H5Gopen2(file_.get(), name, H5P_DEFAULT), "H5Gopen2", path_, name));
+    std::vector<std::string> names;
+    check_hdf5_status(
+        H5Aiterate2(g.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute, &names),
+        "H5Aiterate2", path_, name);
+    for (const std::string& n : names) {
+      const AttributeHandle a(checked_hdf5_id(H5Aopen(g.get(), n.c_str(), H5P_DEFAULT),
+                                              "H5Aopen", path_, n));
+      const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, n));
+      if (H5Tget_class(type.get()) == H5T_FLOAT)
+        check_hdf5_status(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &reals[n]), "H5Aread", path_, n);
+      else
+        check_hdf5_status(H5Aread(a.get(), H5T_NATIVE_INT64, &integers[n]), "H5Aread", path_, n);
+    }
+  }
   std::vector<double> values(const char* name, std::size_t expected) const {
     std::vector<double> out(expected);
     const DatasetHandle d(
@@ -77,6 +115,14 @@ class Reader {
     const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
                                             path_, name));
     check_hdf5_status(H5Aread(a.get(), type, value), "H5Aread", path_, name);
+  }
+  static herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* out) {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
+  }
+  static herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* out) {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
   }
   std::string path_;
   FileHandle file_;
@@ -101,7 +147,8 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
     fail("no such file (a run writes <output>.chk at its checkpoints, at SIGTERM/SIGINT "
          "and at the end)");
   const Reader r(path);
-  if (r.text("format") != "catena-checkpoint-1") fail("not a Catena checkpoint");
+  const std::string format = r.text("format");
+  if (!known_format(format)) fail("not a Catena checkpoint (format " + format + ")");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
   if (!r.has("scene_identity"))
     fail("written by an older Catena, which did not record which run it belongs to; run "
@@ -127,7 +174,44 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   c.v = r.values("/v", 12 * n);
   c.a = r.values("/a", 12 * n);
   c.lambda = r.values("/lambda", 3 * model.constraints.size());
+  if (format == kFormatWithoutResume) return c;
+  c.facts.ranks = static_cast<int>(r.integer("ranks"));
+  r.numbers("/resume", c.resume.reals, c.resume.integers);
+  for (const std::string& name : r.members("/resume/vectors")) {
+    c.resume.rows[name] = r.values(("/resume/vectors/" + name).c_str(), 12 * n);
+    c.resume.multipliers[name] =
+        r.values(("/resume/multipliers/" + name).c_str(), 3 * model.constraints.size());
+  }
   return c;
+}
+
+// Collective. /resume: each vector's node and multiplier rows, the numbers as attributes
+// (the maps iterate in the same order on every rank, as the collective creation needs).
+void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model::Model& model,
+                       const RowRedistribution& nodes, const RowRedistribution& constraints,
+                       const ResumeRows& resume) {
+  const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
+  const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
+  const GroupHandle group = create_group(file, "/resume");
+  create_group(file, "/resume/vectors");
+  create_group(file, "/resume/multipliers");
+  for (const auto& [name, rows] : resume.rows) {
+    const std::string node_path = "/resume/vectors/" + name;
+    const std::vector<double> block = nodes.to_block(rows, 12);
+    write_block_dataset<double>(file, {node_path.c_str(), n_nodes, 12}, nodes.block(),
+                                block);
+    const std::string multiplier_path = "/resume/multipliers/" + name;
+    const std::vector<double> lambda = constraints.to_block(resume.multipliers.at(name), 3);
+    write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, 3},
+                                constraints.block(), lambda);
+  }
+  run_collective_phase(comm, [&] {
+    const AttributeTarget target{group.get(), file.path()};
+    for (const auto& [name, value] : resume.reals)
+      write_double_attribute(target, name.c_str(), value);
+    for (const auto& [name, value] : resume.integers)
+      write_int64_attribute(target, name.c_str(), value);
+  });
 }
 
 // Collective. write_checkpoint without the error's context.
@@ -154,9 +238,11 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
     const std::vector<double> lambda = constraints.to_block(share.lambda, 3);
     write_block_dataset<double>(file, {"/lambda", n_constraints, 3, "N"}, constraints.block(),
                                 lambda);
+    write_resume_rows(comm, file, model, nodes, constraints, share.resume);
     run_collective_phase(comm, [&] {
       const AttributeTarget root{file.id(), file.path()};
-      write_string_attribute(root, "format", "catena-checkpoint-1");
+      write_string_attribute(root, "format", kFormat);
+      write_int64_attribute(root, "ranks", mpi_size(comm));
       write_double_attribute(root, "time", facts.time);
       write_double_attribute(root, "last_dt", facts.last_dt);
       write_int64_attribute(root, "samples", facts.samples);
@@ -209,7 +295,7 @@ bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
     return run_collective_phase(comm, [&] {
       if (!fs::is_regular_file(path)) return false;
       const Reader r(path);
-      return r.text("format") == "catena-checkpoint-1" && !other_model(r, model).empty();
+      return known_format(r.text("format")) && !other_model(r, model).empty();
     });
   } catch (const Error&) {
     return false;  // unreadable: read_checkpoint says why

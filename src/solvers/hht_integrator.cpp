@@ -57,6 +57,9 @@ struct HhtIntegrator::Impl {
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
+  // Where K and C were last evaluated (kept for a restart, which evaluates them there again).
+  VecHandle tangent_q, tangent_v;
+  double tangent_t = 0.0;
   // M without its stored zeros, for the product M a1 of every residual (compact_matrix.hpp);
   // `mass` keeps the full pattern the Newton matrix is built on.
   MatHandle mass_product;
@@ -104,13 +107,23 @@ struct HhtIntegrator::Impl {
   // C, or null where the system has no damping (C = 0: neither assembled nor added).
   Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
 
+  // K, C and the round-off floor's tangent at (q, v, t), the point remembered.
+  void evaluate_tangent(Vec q, Vec v, double t) {
+    if (q != tangent_q.get()) {
+      CATENA_PETSC(VecCopy(q, tangent_q.get()));
+      CATENA_PETSC(VecCopy(v, tangent_v.get()));
+    }
+    tangent_t = t;
+    system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, t}, K.get(), damping_matrix());
+    round_off.set_tangent(K.get());
+  }
+
   // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
   void build_matrix(Vec a, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
       kinematics(a);
-      system.tangent_parts({q1.get(), v1.get(), {}, t0 + h}, K.get(), damping_matrix());
+      evaluate_tangent(q1.get(), v1.get(), t0 + h);
       ++counters.jacobian_evaluations;
-      round_off.set_tangent(K.get());
       if (local) local->tangent_refreshed();
     }
     const double s = 1.0 + options.alpha;
@@ -135,7 +148,8 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   impl_ = std::make_unique<Impl>(system, options);
   Impl& s = *impl_;
   for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q_prev, &s.v_prev, &s.a_prev, &s.q1,
-                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known})
+                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
+                       &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
   for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
     *m = system.create_matrix();
@@ -208,10 +222,8 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (s.local && s.local->tangent_worn()) s.newton->invalidate_tangent();
   CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
   s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
-  if (!s.round_off.known()) {  // first attempt: the floor from a tangent at the start
-    s.system.tangent_parts({s.q0.get(), s.v0.get(), {}, s.t0}, s.K.get(), s.damping_matrix());
-    s.round_off.set_tangent(s.K.get());
-  }
+  if (!s.round_off.known())  // first attempt: the floor from a tangent at the start
+    s.evaluate_tangent(s.q0.get(), s.v0.get(), s.t0);
   const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get()) +
                        (1.0 + s.options.alpha) * s.round_off.at(s.q0.get());
   const NewtonResult result =
@@ -267,6 +279,41 @@ void HhtIntegrator::interpolate(double t, Vec q, Vec v) {
   const double theta = h > 0.0 ? (t - s.t_prev) / h : 1.0;
   if (q) hermite_interpolate(theta, h, s.q_prev.get(), s.v_prev.get(), s.q0.get(), s.v0.get(), q);
   if (v) hermite_interpolate(theta, h, s.v_prev.get(), s.a_prev.get(), s.v0.get(), s.a0.get(), v);
+}
+
+// The step-to-step state: f0 and its scale (the last residual's, which a local correction
+// updated in part: recomputing f0 would differ in round-off), the tangent's point, the
+// matrix's h, Newton's and the local correction's state, the counters.
+void HhtIntegrator::save_resume_state(ResumeState& out) const {
+  const Impl& s = *impl_;
+  out.vectors["hht.f0"] = s.f0.get();
+  out.vectors["hht.tangent_q"] = s.tangent_q.get();
+  out.vectors["hht.tangent_v"] = s.tangent_v.get();
+  out.reals["hht.scale0"] = s.scale0;
+  out.reals["hht.h_matrix"] = s.h_matrix;
+  out.reals["hht.tangent_t"] = s.tangent_t;
+  out.integers["hht.round_off_known"] = s.round_off.known() ? 1 : 0;
+  save_own_counters(s.counters, out);
+  s.newton->save_resume_state(out);
+  if (s.local) s.local->save_resume_state(out);
+}
+
+void HhtIntegrator::restore_resume_state(const ResumeState& in) {
+  if (in.empty()) return;
+  Impl& s = *impl_;
+  CATENA_PETSC(VecCopy(in.vector("hht.f0"), s.f0.get()));
+  s.scale0 = in.real("hht.scale0");
+  s.h_matrix = in.real("hht.h_matrix");
+  restore_own_counters(in, s.counters);
+  s.newton->restore_resume_state(in);
+  if (s.local) s.local->restore_resume_state(in);
+  // K, C and the floor as they were: evaluated again at their point (the Newton matrix is
+  // rebuilt from them at the next attempt).
+  if (in.integer("hht.round_off_known") != 0) {
+    s.evaluate_tangent(in.vector("hht.tangent_q"), in.vector("hht.tangent_v"),
+                       in.real("hht.tangent_t"));
+    ++s.counters.jacobian_evaluations;
+  }
 }
 
 double HhtIntegrator::time() const { return impl_->t0; }

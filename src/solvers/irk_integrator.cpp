@@ -54,6 +54,9 @@ struct IrkIntegrator::Impl {
   VecHandle q0, v0, a0, q_prev, v_prev, a_prev, q1, v1, a1, scratch;
   std::vector<VecHandle> Kst, Klast, U, V, F;
   MatHandle mass, K, C;
+  // Where K and C were last evaluated (kept for a restart, which evaluates them there again).
+  VecHandle tangent_q, tangent_v;
+  double tangent_t = 0.0;
   std::vector<MatHandle> Ks, Cs;  // full Newton: per-stage tangents
   // Constraints: the multiplier slots of stage i's unknown hold Λ_i; `mass_coupling` is
   // M + Gᵀ, the block-diagonal part of the stage matrix (coefficient δ_ij).
@@ -175,7 +178,12 @@ struct IrkIntegrator::Impl {
 
   // The one K, C of the simplified Newton (and the round-off floor's tangent) at p.
   void evaluate_tangent(const assembly::EvalPoint& p) {
-    system.tangent_parts(p, K.get(), C.get());
+    if (p.q != tangent_q.get()) {
+      CATENA_PETSC(VecCopy(p.q, tangent_q.get()));
+      CATENA_PETSC(VecCopy(p.v, tangent_v.get()));
+    }
+    tangent_t = p.t;
+    system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, p.t}, K.get(), C.get());
     ++counters.jacobian_evaluations;
     ++tangent_serial;
     round_off.set_tangent(K.get());
@@ -305,7 +313,8 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     : impl_(std::make_unique<Impl>(system, options)) {
   Impl& m = *impl_;
   for (VecHandle* v : {&m.q0, &m.v0, &m.a0, &m.q_prev, &m.v_prev, &m.a_prev, &m.q1, &m.v1,
-                       &m.a1, &m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv})
+                       &m.a1, &m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv, &m.tangent_q,
+                       &m.tangent_v})
     *v = system.create_vector();
   m.Kst = vectors(system, m.s);
   m.Klast = vectors(system, m.s);
@@ -511,6 +520,52 @@ void IrkIntegrator::interpolate(double t, Vec q, Vec v) {
     }
   }
   if (v) m.algebraic->zero_algebraic(v);
+}
+
+// The step-to-step state: the last step's stages and size (the predictor), the scale of the
+// Newton tolerance, the tangent's point and serial, the matrix's h, Newton's state, the
+// counters. The blocks and the estimate's filter are refactored at the next attempt.
+void IrkIntegrator::save_resume_state(ResumeState& out) const {
+  const Impl& m = *impl_;
+  for (int j = 0; j < m.s; ++j) out.vectors["irk.stage" + std::to_string(j)] = m.Klast[j].get();
+  out.vectors["irk.tangent_q"] = m.tangent_q.get();
+  out.vectors["irk.tangent_v"] = m.tangent_v.get();
+  out.reals["irk.scale0"] = m.scale0;
+  out.reals["irk.h_last"] = m.h_last;
+  out.reals["irk.klast_end"] = m.klast_end;
+  out.reals["irk.h_matrix"] = m.h_matrix;
+  out.reals["irk.tangent_t"] = m.tangent_t;
+  out.integers["irk.tangent_serial"] = m.tangent_serial;
+  out.integers["irk.estimate_factorizations"] = m.estimate_factorizations;
+  out.integers["irk.estimate_solves"] = m.estimate_solves;
+  out.integers["irk.residual_evaluations"] = m.counters.residual_evaluations;
+  save_own_counters(m.counters, out);
+  m.newton->save_resume_state(out);
+}
+
+void IrkIntegrator::restore_resume_state(const ResumeState& in) {
+  if (in.empty()) return;
+  Impl& m = *impl_;
+  for (int j = 0; j < m.s; ++j)
+    CATENA_PETSC(VecCopy(in.vector("irk.stage" + std::to_string(j)), m.Klast[j].get()));
+  m.scale0 = in.real("irk.scale0");
+  m.h_last = in.real("irk.h_last");
+  m.klast_end = in.real("irk.klast_end");
+  m.h_matrix = in.real("irk.h_matrix");
+  m.estimate_factorizations = in.integer("irk.estimate_factorizations");
+  m.estimate_solves = in.integer("irk.estimate_solves");
+  restore_own_counters(in, m.counters);
+  m.counters.residual_evaluations = in.integer("irk.residual_evaluations");
+  m.newton->restore_resume_state(in);
+  // K, C and the floor as they were, evaluated again at their point; the stage blocks and
+  // the estimate's filter are assembled and factored again from them when next needed.
+  const long serial = static_cast<long>(in.integer("irk.tangent_serial"));
+  if (serial > 0)
+    m.evaluate_tangent({in.vector("irk.tangent_q"), in.vector("irk.tangent_v"), {},
+                        in.real("irk.tangent_t")});
+  m.tangent_serial = serial;
+  m.blocks_h = m.estimate_h = -1.0;
+  m.blocks_tangent = m.estimate_tangent = -1;
 }
 
 double IrkIntegrator::time() const { return impl_->t0; }

@@ -72,6 +72,30 @@ LocalNewton::LocalNewton(assembly::SecondOrderSystem& system, const LocalNewtonS
   worn_limit_ = settings_.worn_fraction * static_cast<double>(system_.dof_map().n_global());
 }
 
+void LocalNewton::save_resume_state(ResumeState& out) const {
+  out.integers["local_newton.layers"] = layers_;
+  out.integers["local_newton.misses"] = misses_;
+  out.integers["local_newton.skip"] = skip_;
+  out.reals["local_newton.worked_since_tangent"] = worked_since_tangent_;
+  out.integers["local_newton.attempts"] = counters_.attempts;
+  out.integers["local_newton.successes"] = counters_.successes;
+  out.integers["local_newton.iterations"] = counters_.iterations;
+  out.integers["local_newton.unknowns"] = counters_.unknowns;
+}
+
+void LocalNewton::restore_resume_state(const ResumeState& in) {
+  // A run saved without local corrections (-hht_local_newton_layers 0) restores none.
+  if (!in.integers.contains("local_newton.layers")) return;
+  layers_ = static_cast<int>(in.integer("local_newton.layers"));
+  misses_ = static_cast<int>(in.integer("local_newton.misses"));
+  skip_ = static_cast<int>(in.integer("local_newton.skip"));
+  worked_since_tangent_ = in.real("local_newton.worked_since_tangent");
+  counters_.attempts = in.integer("local_newton.attempts");
+  counters_.successes = in.integer("local_newton.successes");
+  counters_.iterations = in.integer("local_newton.iterations");
+  counters_.unknowns = in.integer("local_newton.unknowns");
+}
+
 bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol,
                           double* norm) {
   PetscLogEventBegin(local_newton_event(), 0, 0, 0, 0);

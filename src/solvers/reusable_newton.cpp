@@ -134,6 +134,27 @@ bool ReusableNewton::try_local_correction(SNES snes) {
   return true;
 }
 
+void ReusableNewton::save_resume_state(ResumeState& out) const {
+  out.integers["newton.tangent_valid"] = tangent_valid_ ? 1 : 0;
+  out.integers["newton.iterations"] = counters_.iterations;
+  out.integers["newton.local_corrections"] = counters_.local_corrections;
+  out.integers["newton.residual_evaluations"] = counters_.residual_evaluations;
+  out.integers["newton.tangent_evaluations"] = counters_.tangent_evaluations;
+  out.integers["newton.factorizations"] = counters_.factorizations;
+  out.integers["newton.linear_solves"] = counters_.linear_solves;
+}
+
+void ReusableNewton::restore_resume_state(const ResumeState& in) {
+  tangent_valid_ = in.integer("newton.tangent_valid") != 0;
+  matrix_valid_ = false;  // the PC holds no factors yet
+  counters_.iterations = in.integer("newton.iterations");
+  counters_.local_corrections = in.integer("newton.local_corrections");
+  counters_.residual_evaluations = in.integer("newton.residual_evaluations");
+  counters_.tangent_evaluations = in.integer("newton.tangent_evaluations");
+  counters_.factorizations = in.integer("newton.factorizations");
+  counters_.linear_solves = in.integer("newton.linear_solves");
+}
+
 NewtonResult ReusableNewton::solve(Vec x, double atol) {
   // A solve that fails after starting from the tangent of an earlier solve is tried once
   // more from the same guess by full Newton (RADAU5 retries with a fresh Jacobian): the

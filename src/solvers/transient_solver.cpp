@@ -52,6 +52,12 @@ class Driver {
     const double t_end = options_.t_end;
     double h = c.dt;
     next_sample_ = 0;
+    if (options_.resume && options_.resume_driver) {
+      const DriverState& d = *options_.resume_driver;
+      if (c.adaptive) h = d.next_dt;
+      report_ = d.report;
+      report_.interrupted = false;
+    }
     if (options_.resume) {
       origin_ = options_.sample_origin;
       if (options_.sample_interval > 0.0)
@@ -97,8 +103,6 @@ class Driver {
       } else {
         release_pending_samples();
       }
-      record(step, a, rejected);
-      rejected = 0;
       if (c.adaptive) {
         const double factor =
             a.error > 0.0 ? std::min(c.growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
@@ -108,6 +112,8 @@ class Driver {
       } else {
         h = c.dt;
       }
+      record(step, a, rejected, h);
+      rejected = 0;
     }
     report_.t_reached = in_.time();
     return report_;
@@ -225,14 +231,15 @@ class Driver {
         {t, failed, h_next, last_failure_.failure, report_.fixed_steps_cut});
   }
 
-  void record(double step, const Attempt& a, int rejected) {
+  void record(double step, const Attempt& a, int rejected, double next_h) {
     if (!options_.step.adaptive && rejected > 0)
       report_.smallest_cut_dt =
           report_.smallest_cut_dt > 0.0 ? std::min(report_.smallest_cut_dt, step) : step;
     ++report_.steps_accepted;
     report_.smallest_dt = report_.steps_accepted == 1 ? step : std::min(report_.smallest_dt, step);
     report_.largest_dt = std::max(report_.largest_dt, step);
-    observer_.step({in_.time(), step, a.newton_iterations, a.error, rejected});
+    report_.t_reached = in_.time();
+    observer_.step({in_.time(), step, a.newton_iterations, a.error, rejected, {next_h, report_}});
   }
 
   bool stop_requested() {
@@ -270,6 +277,35 @@ class Driver {
 };
 
 }  // namespace
+
+void save_driver_state(const DriverState& state, ResumeState& out) {
+  const TransientReport& r = state.report;
+  out.reals["driver.next_dt"] = state.next_dt;
+  out.integers["driver.steps_accepted"] = r.steps_accepted;
+  out.integers["driver.steps_rejected"] = r.steps_rejected;
+  out.integers["driver.samples"] = r.samples;
+  out.reals["driver.smallest_dt"] = r.smallest_dt;
+  out.reals["driver.largest_dt"] = r.largest_dt;
+  out.integers["driver.fixed_steps_cut"] = r.fixed_steps_cut;
+  out.reals["driver.smallest_cut_dt"] = r.smallest_cut_dt;
+}
+
+std::optional<DriverState> restore_driver_state(const ResumeState& in) {
+  if (!in.reals.contains("driver.next_dt")) return std::nullopt;  // saved before a step
+  DriverState state;
+  TransientReport& r = state.report;
+  state.next_dt = in.real("driver.next_dt");
+  r.steps_accepted = in.integer("driver.steps_accepted");
+  r.steps_rejected = in.integer("driver.steps_rejected");
+  r.samples = in.integer("driver.samples");
+  r.smallest_dt = in.real("driver.smallest_dt");
+  r.largest_dt = in.real("driver.largest_dt");
+  if (in.integers.contains("driver.fixed_steps_cut")) {
+    r.fixed_steps_cut = in.integer("driver.fixed_steps_cut");
+    r.smallest_cut_dt = in.real("driver.smallest_cut_dt");
+  }
+  return state;
+}
 
 TransientReport run_transient(assembly::SecondOrderSystem& system, TimeIntegrator& integrator,
                               const TransientOptions& options, TransientObserver& observer) {

@@ -1,21 +1,34 @@
 #pragma once
 // Checkpoints of a dynamic run: the integrator's state at an accepted step, enough to
 // continue the run with `catena run SCENE --restart` after a crash, a SIGTERM or a queue
-// time limit, on any number of ranks.
+// time limit, on any number of ranks — bit for bit as the uninterrupted run on the same
+// number of ranks, to the Newton tolerance on another.
 //
-// File `<output>.chk` (HDF5, docs/output.md): /q, /v, /a (n_nodes × 12: the nodal layout
-// [r, r_x, r_y, r_z] of assembly/dof_map.hpp, fixed and absent components 0), /lambda
-// (n_constraints × 3) and attributes time, last_dt, samples, steps (the output file's row
-// counts at the checkpoint), integrator, n_nodes, n_elements, n_constraints, run_id (pairs
-// the checkpoint with its run's output file), code_version and scene_identity
-// (model/scene_identity.hpp: a restart of another run is refused). Node-indexed rather
-// than DOF-indexed, so it does not depend on the partition.
+// File `<output>.chk` (HDF5, docs/output.md), format "catena-checkpoint-2":
+//   /q, /v, /a     n_nodes × 12: the nodal layout [r, r_x, r_y, r_z] of
+//                  assembly/dof_map.hpp, fixed and absent components 0;
+//   /lambda        n_constraints × 3, the multipliers;
+//   attributes     time, last_dt, samples, steps (the output file's row counts at the
+//                  checkpoint), integrator, ranks (of the run that wrote it), n_nodes,
+//                  n_elements, n_constraints, format, and which run it belongs to:
+//                  run_id (pairs it with its run's time series), code_version and
+//                  scene_identity (model/scene_identity.hpp: a restart of another run
+//                  is refused);
+//   /resume        the step driver's and the integrator's step-to-step state
+//                  (solvers/resume_state.hpp: the next step size, the point at which the
+//                  reused tangent was evaluated, its age and freshness flags, the
+//                  predictor's history, the counters): /resume/vectors/<name>
+//                  (n_nodes × 12) and /resume/multipliers/<name> (n_constraints × 3) per
+//                  vector, numbers as attributes of /resume (double or int64).
+// Node-indexed rather than DOF-indexed, so it does not depend on the partition. Format 1
+// (no /resume, no ranks) is still read: such a restart starts its Newton iteration afresh.
 //
 // Written atomically: a temporary sibling is written in parallel, fsynced, and renamed over
 // the previous checkpoint by rank 0, so a crash during a checkpoint leaves the previous one.
 #include <mpi.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,6 +43,18 @@ struct CheckpointFacts {
   std::string integrator;               // TimeIntegrator::name() of the run
   std::string run_id;        // the run's identifier, also in its output file (run_id)
   std::string code_version;  // Catena version that wrote it
+  int ranks = 0;                        // of the run that wrote it (0: not recorded)
+};
+
+// The solvers' step-to-step state (solvers/resume_state.hpp) in checkpoint form: each
+// vector as node rows (12 per node) and multiplier rows (3 per constraint) — this rank's
+// share in CheckpointShare, every node's in Checkpoint — and numbers identical on every
+// rank.
+struct ResumeRows {
+  std::map<std::string, std::vector<double>> rows, multipliers;
+  std::map<std::string, double> reals;
+  std::map<std::string, std::int64_t> integers;
+  bool empty() const { return rows.empty() && reals.empty() && integers.empty(); }
 };
 
 // This rank's share: owned nodes (ascending) with 12 values each of q, v, a, and owned
@@ -39,6 +64,7 @@ struct CheckpointShare {
   std::vector<double> q, v, a;
   std::vector<int> constraints;
   std::vector<double> lambda;
+  ResumeRows resume;  // rows of the same nodes and constraints
 };
 
 // Collective. Writes `path` atomically. On failure throws catena::OutputError on every
@@ -51,6 +77,7 @@ struct Checkpoint {
   CheckpointFacts facts;
   std::vector<double> q, v, a;  // 12 per node
   std::vector<double> lambda;   // 3 per constraint
+  ResumeRows resume;            // empty from a format-1 checkpoint
 };
 
 // Collective (every rank reads the file). Throws catena::InputError naming the file if it

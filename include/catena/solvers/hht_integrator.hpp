@@ -65,6 +65,9 @@ class HhtIntegrator final : public TimeIntegrator {
   Vec pending_q() const override;
   Vec pending_v() const override;
   const IntegratorCounters& counters() const override;
+  void save_resume_state(ResumeState& out) const override;
+  void restore_resume_state(const ResumeState& in) override;
+  bool resumes_exactly() const override { return true; }
 
   // Spectral radius at infinite h·ω for these options: (1 + α)/(1 − α).
   double spectral_radius_at_infinity() const;

@@ -88,6 +88,9 @@ class IrkIntegrator final : public TimeIntegrator {
   Vec pending_q() const override;
   Vec pending_v() const override;
   const IntegratorCounters& counters() const override;
+  void save_resume_state(ResumeState& out) const override;
+  void restore_resume_state(const ResumeState& in) override;
+  bool resumes_exactly() const override { return true; }
 
   const ButcherTableau& tableau() const;
   // True if the stage Newton uses the decoupled linear algebra.

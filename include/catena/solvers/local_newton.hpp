@@ -18,6 +18,7 @@
 #include <petscvec.h>
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/solvers/resume_state.hpp"
 
 namespace catena::solvers {
 
@@ -79,6 +80,11 @@ class LocalNewton {
     worked_since_tangent_ = 0.0;
     layers_ = settings_.layers;
   }
+
+  // Restarts (resume_state.hpp). Not collective. The window width, the skip state, the
+  // work since the last tangent and the counters, as entries "local_newton.*".
+  void save_resume_state(ResumeState& out) const;
+  void restore_resume_state(const ResumeState& in);
 
  private:
   enum class Outcome { converged, no_window, too_narrow, too_wide, failed };

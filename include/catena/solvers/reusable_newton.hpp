@@ -29,6 +29,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/petsc_handle.hpp"
 #include "catena/solvers/direct_newton.hpp"
+#include "catena/solvers/resume_state.hpp"
 
 namespace catena::solvers {
 
@@ -88,6 +89,14 @@ class ReusableNewton {
   Vec last_residual() const { return residual_; }
   const NewtonCounters& counters() const { return counters_; }
   KSP ksp() const;
+
+  // Restarts (resume_state.hpp). Not collective. Whether the tangent is current, and the
+  // counters, as entries "newton.*".
+  void save_resume_state(ResumeState& out) const;
+  // Not collective. Restores them. The owner restores its tangent (the element matrices)
+  // itself; the Newton matrix is rebuilt from it and refactored at the next solve (the
+  // same matrix as the saved run's, so the same factors; one more factorisation counted).
+  void restore_resume_state(const ResumeState& in);
 
   // For an owner that puts its own linear solver into the KSP (a PCSHELL, e.g. the
   // decoupled IRK stage solve): its callbacks store their exceptions in this guard, which

@@ -10,6 +10,8 @@
 
 #include <string>
 
+#include "catena/solvers/resume_state.hpp"
+
 namespace catena::solvers {
 
 // Cumulative work counters (reported per run and in the output's statistics).
@@ -25,6 +27,12 @@ struct IntegratorCounters {
   long local_corrections = 0;    // Newton solves finished by a local correction (HHT)
   long local_unknowns = 0;       // window unknowns of local Newton iterations, summed
 };
+
+// Not collective. The counters an integrator keeps itself (steps, Newton iterations and
+// failures, element tangents) as resume-state entries "counters.*", and back (resume_state.hpp;
+// the Newton solver's own counters travel with its state).
+void save_own_counters(const IntegratorCounters& c, ResumeState& out);
+void restore_own_counters(const ResumeState& in, IntegratorCounters& c);
 
 // Weighted RMS norm of a local error in the displacement q − q_ref (q_ref: the reference
 // configuration), the usual mixed test of ODE codes (Hairer & Wanner I, II.4):
@@ -91,6 +99,19 @@ class TimeIntegrator {
   virtual Vec pending_v() const = 0;
 
   virtual const IntegratorCounters& counters() const = 0;
+
+  // Restarts (resume_state.hpp). Not collective. After accept(): what this integrator
+  // carries to its next step beyond (t, q, v, a), its counters included; the vectors are
+  // its own, valid until the next attempt. Default: nothing (a restart then starts afresh).
+  virtual void save_resume_state(ResumeState& out) const { (void)out; }
+  // Collective. After set_state() with the saved (t, q, v, a): continue as the integrator
+  // that saved `in` would have (re-evaluating its reused tangent where it was evaluated).
+  // An empty `in` (an older checkpoint) changes nothing. Throws catena::Error if an entry
+  // is missing.
+  virtual void restore_resume_state(const ResumeState& in) { (void)in; }
+  // Whether the two above carry everything, so that a restart on the same ranks continues
+  // bit for bit.
+  virtual bool resumes_exactly() const { return false; }
 };
 
 }  // namespace catena::solvers

@@ -18,6 +18,7 @@
 // the worst DOF (node and component).
 #include <petscvec.h>
 
+#include <optional>
 #include <string>
 
 #include "catena/assembly/second_order_system.hpp"
@@ -37,6 +38,28 @@ struct StepControl {
   double growth = 5.0, shrink = 0.2, safety = 0.9;
 };
 
+struct TransientReport {
+  double t_reached = 0.0;
+  bool interrupted = false;  // stopped by a stop request before t_end
+  long steps_accepted = 0, steps_rejected = 0, samples = 0;
+  double smallest_dt = 0.0, largest_dt = 0.0;
+  // Fixed steps only: steps of dt that failed and were retried halved (each counted once,
+  // however often it was halved), and the shortest step taken in their place (0: none).
+  long fixed_steps_cut = 0;
+  double smallest_cut_dt = 0.0;
+};
+
+// The driver's step-to-step state after an accepted step. With the integrator's
+// (TimeIntegrator::save_resume_state) it is what a restart needs to continue as the
+// uninterrupted run: the step size tried next (adaptive steps) and the counters so far.
+struct DriverState {
+  double next_dt = 0.0;  // s
+  TransientReport report;
+};
+// Not collective. As resume-state entries "driver.*", and back (none if not saved).
+void save_driver_state(const DriverState& state, ResumeState& out);
+std::optional<DriverState> restore_driver_state(const ResumeState& in);
+
 struct TransientOptions {
   double t_end = 0.0;            // s
   double sample_interval = 0.0;  // s, 0: sample every accepted step
@@ -46,6 +69,10 @@ struct TransientOptions {
   // were written before the checkpoint).
   bool resume = false;
   double sample_origin = 0.0;  // s
+  // With resume: the driver's state at the checkpoint (adaptive steps continue with its
+  // next step; the counters continue). None (an older checkpoint): the first step is
+  // step.dt and the counters start at 0.
+  std::optional<DriverState> resume_driver;
 };
 
 // One accepted step, for statistics output.
@@ -55,6 +82,7 @@ struct StepRecord {
   int newton_iterations = 0;  // summed over the step's attempts that were kept
   double error = -1.0;        // weighted local error estimate, −1 if none
   int rejected = 0;           // attempts rejected before this step was accepted
+  DriverState driver;         // after this step (for checkpoints)
 };
 
 // A fixed step cut after a Newton failure (adaptive runs cut steps as a matter of course).
@@ -79,17 +107,6 @@ class TransientObserver {
   // Not collective: this rank's request to stop (e.g. a signal arrived). The driver
   // combines the ranks' answers so that all stop at the same step.
   virtual bool stop_requested() { return false; }
-};
-
-struct TransientReport {
-  double t_reached = 0.0;
-  bool interrupted = false;  // stopped by a stop request before t_end
-  long steps_accepted = 0, steps_rejected = 0, samples = 0;
-  double smallest_dt = 0.0, largest_dt = 0.0;
-  // Fixed steps only: steps of dt that failed and were retried halved (each counted once,
-  // however often it was halved), and the shortest step taken in their place (0: none).
-  long fixed_steps_cut = 0;
-  double smallest_cut_dt = 0.0;
 };
 
 // Collective. Runs integrator (whose state is set) to options.t_end.

@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# Restarts continue bit for bit on the same rank count (docs/output.md, "Checkpoints and
+# --restart"): every dataset of the restarted output file (samples, steps, contact forces,
+# mesh) equals the uninterrupted run's exactly (numpy array_equal). The stop and crash
+# points are the testing hooks CATENA_STOP_AFTER_STEPS, CATENA_KILL_AFTER_STEPS and
+# CATENA_CHECKPOINT_EVERY_STEPS (apps/catena/test_hooks.hpp), not the wall clock.
+#  A. Stop (as SIGTERM) after N steps, --restart, same rank count:
+#     HHT on meshes/pantograph_wire.yaml (moving contact, local Newton), np 1 and np 2;
+#     Radau IIA s = 3 on meshes/taut_string.yaml, np 1 and np 2;
+#     adaptive steps (embedded estimates): Radau IIA on the taut string and HHT on the
+#     pantograph, np 1; step doubling (HHT on the pantograph), np 2.
+#  B. A crash: checkpoints every 7 steps, SIGKILL after 40 (HHT on the pantograph, np 2)
+#     or 19 (Radau IIA, np 1) steps, so that the last checkpoint (step 35 or 14) is not the
+#     stop point, then --restart.
+#  C. Twice: stop after N, restart and stop again, restart to the end (np 2, pantograph).
+#  D. Another rank count: stopped at np 2, restarted at np 1: equal to the Newton tolerance
+#     (positions 1e-9 m, contact force 1e-4 N), not bit for bit.
+#  E. A format-1 checkpoint (no solver state) still restarts, to the same tolerance.
+# Usage: restart_exact.sh CATENA MPIEXEC WORKDIR
+set -u
+catena=$1 mpiexec=$2 dir=$3
+fail() { echo "restart_exact: FAILED: $*"; exit 1; }
+run() {  # ranks, then catena's arguments
+  local n=$1
+  shift
+  if [ "$n" -eq 1 ]; then "$catena" run "$@"; else "$mpiexec" -n "$n" --oversubscribe "$catena" run "$@"; fi
+}
+compare() {  # reference, restarted, exact|<position tolerance> [force tolerance]
+  /usr/bin/python3 - "$@" <<'PY'
+import sys
+import h5py
+import numpy as np
+ref, out, mode = sys.argv[1], sys.argv[2], sys.argv[3]
+def datasets(f):
+    names = []
+    f.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
+    return sorted(names)
+with h5py.File(ref) as a, h5py.File(out) as b:
+    assert b.attrs["status"] == "complete", b.attrs["status"]
+    assert datasets(a) == datasets(b), (datasets(a), datasets(b))
+    assert a["steps/time"].shape[0] > 0
+    if mode == "exact":
+        differ = [n for n in datasets(a) if not np.array_equal(a[n][()], b[n][()])]
+        assert not differ, f"datasets not bit-identical: {differ}"
+        print(f"restart_exact: {out}: {len(datasets(a))} datasets identical "
+              f"({a['time'].shape[0]} samples, {a['steps/time'].shape[0]} steps)")
+    else:
+        tol_p, tol_f = float(mode), float(sys.argv[4])
+        assert a["time"].shape == b["time"].shape
+        assert np.abs(a["time"][:] - b["time"][:]).max() < 1e-12
+        dp = np.abs(a["samples/positions"][:] - b["samples/positions"][:]).max()
+        df = np.abs(a["samples/contact_force"][:] - b["samples/contact_force"][:]).max()
+        print(f"restart_exact: {out}: positions within {dp:.2e} m, contact force {df:.2e} N")
+        assert dp < tol_p and df < tol_f
+PY
+}
+# case NAME RANKS_FIRST RANKS_RESTART STOP_ENV COMPARE SCENE ARGS...: the reference run
+# (cached per scene and arguments), the stopped run, its restart, the comparison.
+declare -A references=()
+case_() {
+  local name=$1 n1=$2 n2=$3 stop=$4 mode=$5
+  shift 5
+  local key="$n2 $*"
+  local ref=${references[$key]:-}
+  if [ -z "$ref" ]; then
+    ref=$dir/exact_ref_${#references[@]}.h5
+    rm -f "$ref" "$ref.chk"
+    run "$n2" "$@" -o "$ref" > "$ref.log" 2>&1 || fail "$name: reference run (log $ref.log)"
+    references[$key]=$ref
+  fi
+  local out=$dir/exact_$name.h5
+  rm -f "$out" "$out.chk"
+  (export $stop; run "$n1" "$@" -o "$out") > "$out.log" 2>&1
+  local code=$?
+  case "$stop" in
+    *KILL*) [ "$code" -ne 0 ] || fail "$name: the killed run exited 0" ;;
+    *) [ "$code" -eq 143 ] || fail "$name: the stopped run exited $code, expected 143" ;;
+  esac
+  [ -f "$out.chk" ] || fail "$name: no checkpoint"
+  run "$n2" "$@" -o "$out" --restart >> "$out.log" 2>&1 || fail "$name: restart (log $out.log)"
+  if [ "$mode" = exact ]; then
+    compare "$ref" "$out" exact || fail "$name: restarted output differs (log $out.log)"
+  else
+    compare "$ref" "$out" $mode || fail "$name: restarted output differs (log $out.log)"
+  fi
+}
+
+pantograph=(meshes/pantograph_wire.yaml --set analysis.duration=0.06)
+string=(meshes/taut_string.yaml --set analysis.duration=0.6 --set integrator.stages=3)
+adaptive_string=("${string[@]}" --set integrator.adaptive=true --set integrator.rtol=1e-6)
+adaptive_pantograph=("${pantograph[@]}" --set integrator.adaptive=true --set integrator.rtol=1e-3)
+doubling_pantograph=("${adaptive_pantograph[@]}" --set integrator.error_estimate=step_doubling)
+
+# A.
+case_ hht_np1 1 1 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}"
+case_ hht_np2 2 2 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}"
+case_ radau_np1 1 1 CATENA_STOP_AFTER_STEPS=13 exact "${string[@]}"
+case_ radau_np2 2 2 CATENA_STOP_AFTER_STEPS=13 exact "${string[@]}"
+case_ radau_adaptive_np1 1 1 CATENA_STOP_AFTER_STEPS=9 exact "${adaptive_string[@]}"
+case_ hht_adaptive_np1 1 1 CATENA_STOP_AFTER_STEPS=25 exact "${adaptive_pantograph[@]}"
+case_ hht_doubling_np2 2 2 CATENA_STOP_AFTER_STEPS=6 exact "${doubling_pantograph[@]}"
+# B.
+case_ hht_crash_np2 2 2 "CATENA_CHECKPOINT_EVERY_STEPS=7 CATENA_KILL_AFTER_STEPS=40" exact \
+  "${pantograph[@]}"
+case_ radau_crash_np1 1 1 "CATENA_CHECKPOINT_EVERY_STEPS=7 CATENA_KILL_AFTER_STEPS=19" exact \
+  "${string[@]}"
+# C.
+out=$dir/exact_twice.h5
+rm -f "$out" "$out.chk"
+CATENA_STOP_AFTER_STEPS=60 run 2 "${pantograph[@]}" -o "$out" > "$out.log" 2>&1
+[ $? -eq 143 ] || fail "twice: first stop"
+CATENA_STOP_AFTER_STEPS=90 run 2 "${pantograph[@]}" -o "$out" --restart >> "$out.log" 2>&1
+[ $? -eq 143 ] || fail "twice: second stop"
+run 2 "${pantograph[@]}" -o "$out" --restart >> "$out.log" 2>&1 || fail "twice: restart"
+compare "${references[2 ${pantograph[*]}]}" "$out" exact || fail "twice: restarted output differs"
+# D.
+case_ hht_np2_to_np1 2 1 CATENA_STOP_AFTER_STEPS=130 "1e-9 1e-4" "${pantograph[@]}"
+# E. A checkpoint of the first format (no /resume) still restarts, to the Newton tolerance,
+#    and says why it is not exact.
+out=$dir/exact_format1.h5
+rm -f "$out" "$out.chk"
+CATENA_STOP_AFTER_STEPS=130 run 1 "${pantograph[@]}" -o "$out" > "$out.log" 2>&1
+[ $? -eq 143 ] || fail "format 1: stop"
+/usr/bin/python3 - "$out.chk" <<'PY' || fail "format 1: could not rewrite the checkpoint"
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    del f["resume"]
+    del f.attrs["ranks"]
+    f.attrs["format"] = "catena-checkpoint-1"
+PY
+run 1 "${pantograph[@]}" -o "$out" --restart > "$out.restart.log" 2>&1 || fail "format 1: restart"
+grep -q "holds no solver state" "$out.restart.log" || fail "format 1: no note"
+compare "${references[1 ${pantograph[*]}]}" "$out" 1e-9 1e-4 || fail "format 1: differs"
+echo "restart_exact: passed"
