@@ -55,7 +55,7 @@ class Reader {
     read_attribute(name, H5T_NATIVE_INT64, &value);
     return value;
   }
-  bool has(const char* name) const { return H5Aexists(file_.get(), name) > 0; }
+  bool has_attribute(const char* name) const { return H5Aexists(file_.get(), name) > 0; }
   std::string text(const char* name) const {
     const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
                                             path_, name));
@@ -150,7 +150,7 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   const std::string format = r.text("format");
   if (!known_format(format)) fail("not a Catena checkpoint (format " + format + ")");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
-  if (!r.has("scene_identity"))
+  if (!r.has_attribute("scene_identity"))
     fail("written by an older Catena, which did not record which run it belongs to; run "
          "afresh (without --restart)");
   if (const std::string why = model::first_identity_difference(
