@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/io/output_error.hpp"
@@ -35,17 +36,8 @@ namespace {
 namespace fs = std::filesystem;
 using catena::io::WriteFault;
 
-int comm_rank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
-int comm_size() {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
+int comm_rank() { return catena::mpi_rank(MPI_COMM_WORLD); }
+int comm_size() { return catena::mpi_size(MPI_COMM_WORLD); }
 
 // The rank that fails: the last one, so that at np > 1 it is not the rank that prints.
 int failing_rank() { return comm_size() - 1; }
