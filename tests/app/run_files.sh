@@ -9,7 +9,8 @@
 #  C. two runs cannot write the same output at once: the second is refused (exit 2,
 #     "another run is writing this output") and the first goes on undisturbed;
 #  D. after SIGTERM the time series is OUT.part.h5 ("interrupted"), and --restart makes
-#     OUT.h5 ("complete") and removes the partial file.
+#     OUT.h5 ("complete"), removes the partial file and any temporary checkpoint file
+#     a killed run left.
 # Usage: run_files.sh CATENA WORKDIR
 set -u
 catena=$1 dir=$2
@@ -78,7 +79,10 @@ in_dynamics "$dir/files_d.log"; kill -TERM $pid; wait $pid
 [ -e "$out" ] && fail "D: OUT.h5 exists after an interrupted first run"
 [ "$(status "${out%.h5}.part.h5")" = interrupted ] || fail "D: partial output status"
 t=$(/usr/bin/python3 -c "import h5py, sys; print(h5py.File(sys.argv[1]).attrs['time'] + 0.05)" "$out.chk")
+# A checkpoint a killed run was writing (its temporary file) is removed by the next run.
+echo "half a checkpoint" > "$out.chk.tmp-999999"
 "$catena" run $scene --set analysis.duration="$t" -o "$out" --restart > /dev/null || fail "D: restart"
 [ "$(status "$out")" = complete ] || fail "D: restarted output not complete"
 [ -e "${out%.h5}.part.h5" ] && fail "D: partial output left after completion"
+[ -e "$out.chk.tmp-999999" ] && fail "D: an abandoned temporary checkpoint was left"
 echo "run_files: passed"
