@@ -44,8 +44,8 @@
 // src/solvers/petsc_ts_methods.hpp, order() too.
 //
 // Restarts are not bit for bit (resumes_exactly() is false): the TS keeps its history (BDF's
-// back values, its SNES and factorisation) inside the TS object, which PETSc 3.18 gives no
-// way to set from outside; a restart starts the TS afresh from (t, q, v, a).
+// back values, its SNES and factorisation) inside the TS object, which PETSc 3.18's public API
+// does not let us save and set; a restart starts the TS afresh from (t, q, v, a).
 //
 // Not supported: Lagrange-multiplier constraints.
 #include <memory>
