@@ -18,7 +18,7 @@ struct Stage {
 };
 
 // EN 50318's two-stage reference pantograph as reproduced in published validations
-// (../shared/reference/en50318.md): head m1 on frame m2.
+// (EN 50318:2002 as reproduced in published validations; docs/validation.md): head m1 on frame m2.
 const std::vector<Stage>& en50318_stages() {
   static const std::vector<Stage> stages{{7.2, 4200.0, 10.0}, {15.0, 50.0, 90.0}};
   return stages;

@@ -1,5 +1,5 @@
 // Large-deflection cantilever (elastica) with the ANCF beam: Mattiasson, IJNME 17 (1981)
-// 145–153, Table 1 (/work/shared/reference/analytic.md), bending about both section axes,
+// 145–153, Table 1, bending about both section axes,
 // and a straight cantilever under a tip torque. Solved with the dense Newton solver of
 // tests/support/dense_statics.hpp.
 //

@@ -1,6 +1,6 @@
 #pragma once
 // EN 50318 contact-force statistics of one pantograph (docs/output.md, "Contact-force
-// statistics"; /work/shared/reference/en50318.md for the acceptance ranges): from a dynamic
+// statistics"; docs/validation.md for the acceptance ranges): from a dynamic
 // run's sampled contact force, contact position and registration-point heights, over an
 // evaluation section [x_start, x_end] along the pantograph's path.
 //

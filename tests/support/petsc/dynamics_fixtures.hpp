@@ -37,8 +37,8 @@ void advance_fixed(solvers::TimeIntegrator& integrator, double dt, int n);
 struct TautString {
   double L = 60.0, T = 20000.0, EA = 1.8e7, EI = 195.0, mu = 1.35;
   int n = 60;
-  // f₁ of the tensioned Euler–Bernoulli beam (../shared/reference/analytic.md), μ per
-  // tensioned length.
+  // f₁ of the tensioned Euler–Bernoulli beam, pinned ends:
+  // f_n = n/(2L)·sqrt(T/μ)·sqrt(1 + n²π²EI/(T L²)), μ per tensioned length.
   double first_frequency() const;
   model::Model model() const;
   void pluck(const assembly::SecondOrderSystem& system, Vec q, double amplitude) const;
