@@ -27,12 +27,12 @@ io::StaticResult collect_result(assembly::SecondOrderSystem& system, Vec q,
   r.owned_nodes = system.dof_map().owned_nodes();
   system.owned_node_values(q, r.positions, r.slopes);
   std::vector<elements::SectionResult> sections;
-  system.section_results({q, nullptr, 1.0}, r.owned_elements, sections);
+  system.section_results({q, nullptr, {}}, r.owned_elements, sections);
   for (const auto& s : sections) {
     r.axial_force.push_back(s.axial_force);
     r.axial_strain.push_back(s.axial_strain);
   }
-  const assembly::Reactions reactions = system.reactions({q, nullptr, 1.0});
+  const assembly::Reactions reactions = system.reactions({q, nullptr, {}});
   r.support_nodes = reactions.nodes;
   r.reaction_force = reactions.force;
   r.reaction_moment = reactions.moment;

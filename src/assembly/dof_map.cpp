@@ -7,7 +7,8 @@
 
 namespace catena::assembly {
 
-DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
+DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
+               std::vector<int> touched)
     : partition_(&partition), rank_(rank) {
   const int n_nodes = static_cast<int>(model.nodes.size());
   const std::vector<int> counts = model::all_node_dofs(model);
@@ -55,22 +56,7 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank)
       const PetscInt g = global_[node_offset_[n] + k];
       if (g >= 0) local_[node_offset_[n] + k] = g - first_owned_;
     }
-  std::vector<int> touched;
-  for (size_t e = 0; e < model.elements.size(); ++e)
-    if (partition.element_owner[e] == rank)
-      for (int n : model.elements[e].nodes)
-        if (partition.node_owner[n] != rank) touched.push_back(n);
-  // A moving contact is evaluated by its head node's owner, which reads every node of the
-  // path the head may reach.
-  for (const model::MovingContact& c : model.contacts)
-    if (partition.node_owner[c.head_node] == rank)
-      for (int e : model.paths[static_cast<size_t>(c.path)].elements)
-        for (int n : model.elements[static_cast<size_t>(e)].nodes)
-          if (partition.node_owner[n] != rank) touched.push_back(n);
-  for (const model::Constraint& c : model.constraints)
-    if (partition.node_owner[c.node_a] == rank && c.node_b >= 0 &&
-        partition.node_owner[c.node_b] != rank)
-      touched.push_back(c.node_b);
+  std::erase_if(touched, [&](int n) { return partition.node_owner[n] == rank; });
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (int n : touched)

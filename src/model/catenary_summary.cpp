@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "catena/model/path_stations.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
 
@@ -22,13 +23,6 @@ std::string range_text(std::vector<double> values, const std::string& unit) {
   if (*hi - *lo <= 1e-9 * std::max(std::abs(*lo), std::abs(*hi)))
     return cat(format_number(*lo), " ", unit);
   return cat(format_number(*lo), " to ", format_number(*hi), " ", unit);
-}
-
-double element_length(const Model& m, int e) {
-  const std::vector<int>& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
-  return (m.nodes[static_cast<std::size_t>(nodes.back())].position -
-          m.nodes[static_cast<std::size_t>(nodes.front())].position)
-      .norm();
 }
 
 double point_mass_at(const Model& m, int node) {
@@ -56,7 +50,7 @@ const CableProps& wire_props(const Model& m, const CatenaryWire& wire) {
 std::string wire_text(const Model& m, const CatenaryWire& wire) {
   const CableProps& p = wire_props(m, wire);
   std::vector<double> lengths;
-  for (const int e : wire.elements) lengths.push_back(element_length(m, e));
+  for (const int e : wire.elements) lengths.push_back(element_chord(m, e));
   return cat(plural(static_cast<long long>(wire.elements.size()), "cable"), " of ",
              range_text(lengths, "m"), ", tension ", format_number(wire.tension), " N, EA ",
              format_number(p.EA), " N, EI ", format_number(p.EI), " N*m^2, ",

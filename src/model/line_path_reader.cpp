@@ -101,14 +101,4 @@ std::vector<int> read_path(const Field& line, const LineTable& lines, const Mode
   return elements;
 }
 
-// Reference (mesh) length of the path: the arc length the load travels along.
-double path_length(const std::vector<int>& elements, const Model& model) {
-  double length = 0.0;
-  for (int e : elements) {
-    const std::vector<int>& nodes = model.elements[e].nodes;
-    length += (model.nodes[nodes.back()].position - model.nodes[nodes.front()].position).norm();
-  }
-  return length;
-}
-
 }  // namespace catena::model::detail

@@ -25,7 +25,4 @@ LineTable named_lines(const SceneBuild& build);
 std::vector<int> read_path(const Field& line, const LineTable& lines, const Model& model,
                            const char* what);
 
-// Reference (mesh) length of a path.
-double path_length(const std::vector<int>& elements, const Model& model);
-
 }  // namespace catena::model::detail

@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "catena/model/path_stations.hpp"
 #include "did_you_mean.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
@@ -39,7 +40,7 @@ void read_moving_loads(const Field& moving_loads, SceneBuild& build) {
     load.elements = read_path(entry.child("line"), lines, model, "moving loads");
     load.force = entry.child("force").vec3(RealRange::any("N"));
     load.speed = read_speed(entry);
-    const double length = path_length(load.elements, model);
+    const double length = path_stations(model, load.elements).length();
     load.start =
         entry.child("start").real_or(0.0, RealRange::between(0.0, true, length, true, "m"));
     load.start_time = entry.child("start_time")

@@ -7,24 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "catena/model/path_stations.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
 
 namespace catena::model::detail {
 namespace {
-
-// Length of a path of elements on the reference geometry (chords of the elements, as the
-// moving loads and contacts measure their arc length).
-double path_length(const Model& m, const std::vector<int>& elements) {
-  double length = 0.0;
-  for (const int e : elements) {
-    const std::vector<int>& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
-    length += (m.nodes[static_cast<std::size_t>(nodes.back())].position -
-               m.nodes[static_cast<std::size_t>(nodes.front())].position)
-                  .norm();
-  }
-  return length;
-}
 
 // The sets (line names) of a path's elements, in path order, each once: "cw1, cw2".
 std::string path_sets(const Model& m, const std::vector<int>& elements) {
@@ -101,7 +89,7 @@ void warn_evaluation(const Model& m, const MovingContact& c, double t_end, Summa
 void describe_moving_loads(const Model& m, double t_end, SummaryTable& t, SummaryNotes& notes) {
   t.row("moving loads", std::to_string(m.moving_loads.size()));
   for (const MovingLoad& load : m.moving_loads) {
-    const double length = path_length(m, load.elements);
+    const double length = path_stations(m, load.elements).length();
     t.row(load.name,
           cat("lines ", path_sets(m, load.elements), " (", format_number(length), " m), force ",
               format_vector(load.force), " N, ", speed_text(load.speed), ", at ",
@@ -138,7 +126,7 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
     const ElementPath& path = m.paths[static_cast<std::size_t>(c.path)];
-    const double length = path_length(m, path.elements);
+    const double length = path_stations(m, path.elements).length();
     const double uplift = c.static_force + c.aerodynamic_coefficient * c.speed * c.speed;
     // A path the reader made from `line:` is named after the pantograph: show its lines.
     const std::string path_text = path.name == cat("pantograph ", c.name)

@@ -228,12 +228,12 @@ TEST(LocalPatch, AContactCountsAsAKernel) {
   for (int k = 0; k < 3; ++k)
     if (const PetscInt l = system.dof_map().local_dof(head, k); l >= 0 && l < n) seeds.push_back(l);
   const assembly::LocalPatch patch = system.local_patch(seeds, 8, t);
-  int with_contact = patch.contacts.empty() ? 0 : 1, any = 0;
+  int with_contact = patch.n_timed == 0 ? 0 : 1, any = 0;
   MPI_Allreduce(&with_contact, &any, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   if (catena::mpi_size(MPI_COMM_WORLD) == 1) {
     ASSERT_EQ(any, 1);
   }
-  if (patch.contacts.empty()) {
+  if (patch.n_timed == 0) {
     for (PetscInt l : seeds)  // the head is the contact's: fixed if the contact is out
       EXPECT_FALSE(std::binary_search(patch.unknowns.begin(), patch.unknowns.end(), l));
     return;

@@ -120,7 +120,7 @@ std::vector<double> assemble_residual(const DenseStaticsProblem& p, const std::v
     f_e.resize(m);
     K_e.resize(static_cast<size_t>(m) * m);
     for (int i = 0; i < m; ++i) q_e[i] = q[dofs[i]];
-    e.element->evaluate({q_e, {}, load_factor}, {true, K != nullptr, false},
+    e.element->evaluate({q_e, {}, elements::LoadPath(load_factor)}, {true, K != nullptr, false},
                         {f_e.data(), K != nullptr ? K_e.data() : nullptr, nullptr});
     for (int i = 0; i < m; ++i) {
       r[dofs[i]] += f_e[i];

@@ -19,4 +19,16 @@ JacobianCheck check_element_jacobians(const elements::Element& e, const std::vec
                                       const std::vector<double>& v, elements::LoadPath path,
                                       double h = 1e-6);
 
+// The same with the prestrain in place and the loads scaled by `load_factor`.
+inline std::vector<double> element_force(const elements::Element& e, const std::vector<double>& q,
+                                         const std::vector<double>& v, double load_factor) {
+  return element_force(e, q, v, elements::LoadPath(load_factor));
+}
+inline JacobianCheck check_element_jacobians(const elements::Element& e,
+                                             const std::vector<double>& q,
+                                             const std::vector<double>& v, double load_factor,
+                                             double h = 1e-6) {
+  return check_element_jacobians(e, q, v, elements::LoadPath(load_factor), h);
+}
+
 }  // namespace catena::test

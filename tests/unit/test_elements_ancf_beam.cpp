@@ -99,7 +99,7 @@ Evaluation evaluate(const AncfBeam& e, const std::vector<double>& q,
                     const std::vector<double>& v = {}, double load_factor = 1.0) {
   Evaluation out{std::vector<double>(kN), std::vector<double>(kN * kN),
                  std::vector<double>(kN * kN)};
-  e.evaluate({q, v, load_factor}, {true, true, true}, {out.f.data(), out.K.data(), out.C.data()});
+  e.evaluate({q, v, catena::elements::LoadPath(load_factor)}, {true, true, true}, {out.f.data(), out.K.data(), out.C.data()});
   return out;
 }
 
@@ -288,7 +288,7 @@ TEST(AncfBeam, ExternalLoadsIntegrateToTheResultant) {
   const auto q = to_vector(beam.reference_state());
   const double lambda = 0.7;
   std::vector<double> f(kN);
-  beam.evaluate({q, {}, lambda}, {true, false, false}, {f.data(), nullptr, nullptr});
+  beam.evaluate({q, {}, catena::elements::LoadPath(lambda)}, {true, false, false}, {f.data(), nullptr, nullptr});
   const Vec3 resultant = block(f, kRA) + block(f, kRB);
   const Vec3 expected =
       -lambda * beam.length() * (s.mass_per_length * kLoads.gravity + kLoads.distributed);
@@ -316,7 +316,7 @@ TEST(AncfBeam, PatchUniformStretch) {
     EXPECT_LT((block(e.f, kRA) + N * t).norm(), 1e-10 * s.EA);
     for (int b : {kRxA, kRxB, kRyA, kRzA, kRyB, kRzB})
       EXPECT_LT(block(e.f, b).norm(), 1e-10 * s.EA) << b;
-    const auto sr = beam.section_result({qs, {}, 1.0});
+    const auto sr = beam.section_result({qs, {}, {}});
     EXPECT_NEAR(sr.axial_strain, eps, 1e-14);
     EXPECT_NEAR(sr.axial_force, N, 1e-10 * s.EA);
     EXPECT_NEAR(beam.strain_energy(qs), 0.5 * s.EA * eps * eps * L, 1e-12 * s.EA);
@@ -394,7 +394,7 @@ TEST(AncfBeam, SectionResultIncludesKelvinVoigtRate) {
   set_block(v, kRB, eps_dot * beam.length() * t);
   set_block(v, kRxA, eps_dot * t);
   set_block(v, kRxB, eps_dot * t);
-  const auto sr = beam.section_result({q, v, 1.0});
+  const auto sr = beam.section_result({q, v, {}});
   EXPECT_NEAR(sr.axial_strain, 0.0, 1e-15);
   EXPECT_NEAR(sr.axial_force, s.EA * s.damping_time * eps_dot, 1e-10 * s.EA);
 }

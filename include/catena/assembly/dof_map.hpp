@@ -13,8 +13,7 @@
 // that rank's nodal DOFs (so every rank's block stays contiguous).
 //
 // Local (ghosted) indices address PETSc's ghosted local form: [owned dofs | ghost dofs],
-// ghosts being the free DOFs of non-owned nodes touched by this rank's elements or
-// constraints.
+// ghosts being the free DOFs of the non-owned nodes this rank's couplings act on.
 #include <petscsys.h>
 
 #include <vector>
@@ -26,8 +25,10 @@ namespace catena::assembly {
 
 class DofMap {
  public:
-  // Not collective (deterministic on every rank).
-  DofMap(const model::Model& model, const Partition& partition, int rank);
+  // Not collective (deterministic on every rank). `touched`: the nodes this rank's
+  // couplings act on (any order, repeats allowed; owned ones are ignored).
+  DofMap(const model::Model& model, const Partition& partition, int rank,
+         std::vector<int> touched);
 
   int n_nodes() const { return static_cast<int>(node_offset_.size()) - 1; }
   int node_dofs(int node) const { return node_offset_[node + 1] - node_offset_[node]; }
@@ -35,7 +36,6 @@ class DofMap {
   PetscInt global_dof(int node, int k) const { return global_[node_offset_[node] + k]; }
   // Index into the ghosted local form, −1 if fixed or not present on this rank.
   PetscInt local_dof(int node, int k) const { return local_[node_offset_[node] + k]; }
-  bool is_fixed(int node, int k) const { return global_dof(node, k) < 0; }
 
   PetscInt n_global() const { return n_global_; }
   PetscInt n_owned() const { return n_owned_; }

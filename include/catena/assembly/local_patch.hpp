@@ -9,12 +9,13 @@
 // iteration costs a residual evaluation and a pair of triangular solves over the whole
 // line.
 //
-// The unknowns are DOFs this rank can change alone: every kernel that touches them is
-// this rank's and touches only DOFs this rank owns, no constraint acts on them (its
-// forces are not re-evaluated here), and a moving contact that acts on them at the
-// patch's time is this rank's with all its DOFs owned (it then counts as a kernel of the
-// patch). Changing them then changes the residual only in `rows`, the DOFs of the
-// kernels and contacts that touch them, all owned.
+// The unknowns are DOFs this rank can change alone: every kernel coupling (an element)
+// that touches them is this rank's and touches only DOFs this rank owns, no excluded
+// coupling acts on their nodes (a constraint: its forces are not re-evaluated here), and a
+// coupling active at the patch's time (a pantograph contact) that acts on them is this
+// rank's with all its active DOFs owned (it then counts as a kernel of the patch). Changing
+// them then changes the residual only in `rows`, the DOFs of the couplings that touch
+// them, all owned. State-independent couplings (moving loads) cancel in such a change.
 // SecondOrderSystem builds patches (local_patch) and evaluates on them (patch_force,
 // patch_mass_product, patch_matrix); indices are into the owned part of global vectors.
 #include <petscsys.h>
@@ -25,18 +26,18 @@
 namespace catena::assembly {
 
 struct LocalPatch {
+  double t = 0.0;                  // s: the time the couplings' active DOFs are taken at
   std::vector<PetscInt> unknowns;  // owned local indices, ascending
-  std::vector<PetscInt> rows;      // owned local indices the kernels touch (⊇ unknowns), ascending
-  std::vector<size_t> kernels;     // this rank's kernels touching an unknown
-  // Per DOF of each kernel in `kernels` (concatenated): its position in `rows`, −1 if fixed.
-  std::vector<PetscInt> kernel_rows;
+  std::vector<PetscInt> rows;      // owned local indices the couplings touch (⊇ unknowns), ascending
+  // This rank's couplings acting on an unknown (indices into its coupling list): the kernel
+  // couplings in ascending order, then the n_timed ones active at t (contacts).
+  std::vector<size_t> couplings;
+  size_t n_timed = 0;
+  // Per active DOF of each coupling in `couplings` (concatenated): its position in `rows`,
+  // −1 if fixed.
+  std::vector<PetscInt> coupling_rows;
   // Per row: its position in `unknowns`, or −1.
   std::vector<PetscInt> unknown_of_row;
-  // Moving contacts acting on the unknowns (this rank's, indices into its contact list),
-  // at time t, with the position in `rows` of each of their 15 DOFs (−1: fixed).
-  double t = 0.0;
-  std::vector<size_t> contacts;
-  std::vector<PetscInt> contact_rows;
 
   bool empty() const { return unknowns.empty(); }
 };

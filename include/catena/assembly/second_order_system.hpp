@@ -13,18 +13,25 @@
 // residual hold g(q, t), in metres. algebraic_mask() marks the multiplier slots, so
 // integrators can treat them as the algebraic part of the DAE (docs/integrators.md).
 // The constraints are linear in q (positions only), so G is constant.
+//
+// Every term is a coupling (couplings/coupling.hpp): this class partitions the model,
+// numbers the unknowns the couplings name, and runs the one gather–evaluate–scatter loop
+// over them for residuals, matrices and local patches. Queries for output (node values,
+// section results, reactions, contact states) are in state_queries.cpp.
 #include <mpi.h>
 #include <petscmat.h>
 
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "catena/assembly/dof_map.hpp"
-#include "catena/assembly/element_factory.hpp"
 #include "catena/assembly/local_patch.hpp"
 #include "catena/assembly/partition.hpp"
 #include "catena/assembly/petsc_handle.hpp"
+#include "catena/couplings/coupling.hpp"
 #include "catena/elements/element.hpp"
 #include "catena/model/model.hpp"
 
@@ -38,15 +45,8 @@ struct EvalPoint {
   double t = 0.0;           // s: time, for time-dependent loads (moving loads)
 };
 
-struct JacobianCoefficients {
-  double c_K = 1.0;       // ∂f/∂q
-  double c_C = 0.0;       // ∂f/∂v
-  double c_M = 0.0;       // M
-  double c_lambda = 0.0;  // Gᵀ (nodal rows, multiplier columns)
-  double c_g = 0.0;       // G (multiplier rows, nodal columns)
-};
-// Statics: J = ∂f/∂q + Gᵀ + G (symmetric).
-inline constexpr JacobianCoefficients kStaticJacobian{1.0, 0.0, 0.0, 1.0, 1.0};
+using couplings::JacobianCoefficients;
+using couplings::kStaticJacobian;
 
 // Per supported node (owned by this rank): reaction of the supports on the node.
 struct Reactions {
@@ -57,7 +57,7 @@ struct Reactions {
 
 class SecondOrderSystem {
  public:
-  // Collective: partitions the model, numbers DOFs, builds this rank's kernels.
+  // Collective: partitions the model, builds this rank's couplings, numbers the DOFs.
   SecondOrderSystem(MPI_Comm comm, const model::Model& model);
   SecondOrderSystem(const SecondOrderSystem&) = delete;  // dofs_ points into partition_
   SecondOrderSystem& operator=(const SecondOrderSystem&) = delete;
@@ -68,8 +68,10 @@ class SecondOrderSystem {
 
   // Collective. A ghosted vector laid out as the free DOFs.
   VecHandle create_vector() const;
-  // Collective. An MPIAIJ matrix with exact preallocation; inserting outside the pattern
-  // is an error (MAT_NEW_NONZERO_ALLOCATION_ERR), so assembly never mallocs.
+  // Collective. An assembled MPIAIJ matrix holding the union of the couplings' patterns as
+  // explicit zeros; inserting outside it is an error (MAT_NEW_NONZERO_ALLOCATION_ERR), so
+  // assembly never mallocs, and every matrix from here has the same nonzero pattern
+  // (MatAXPY with SAME_NONZERO_PATTERN).
   MatHandle create_matrix() const;
   // Collective. q at the reference configuration (positions and nodal frames).
   void reference_state(Vec q) const;
@@ -163,91 +165,62 @@ class SecondOrderSystem {
   // node 5)" (node ids as in the scene; constraints numbered from 1 in scene order).
   std::string describe_dof(PetscInt global) const;
 
-  // Number of kernels this rank evaluates (for load-balance reports).
-  size_t n_local_kernels() const { return kernels_.size(); }
-
  private:
+  // Buffers of the evaluation loop, grown to the largest active set.
+  struct Buffers {
+    std::vector<int> positions;
+    std::vector<PetscInt> local, global;
+    std::vector<double> fixed;
+    std::vector<double> q, v, f, block, block2;
+    couplings::Scratch scratch;
+    std::vector<std::pair<int, int>> entries;
+  };
+  // The active DOFs of coupling i at time t: ghosted local indices (−1: fixed or absent),
+  // global indices (−1: fixed or absent) and the values used where fixed.
+  struct ActiveDofs {
+    const PetscInt* local = nullptr;
+    const PetscInt* global = nullptr;
+    const double* fixed = nullptr;
+    size_t n = 0;
+  };
+  ActiveDofs active(size_t i, double t, Buffers& b) const;
+  // Gathers the active DOFs' values from local arrays (v may be null) into b.q, b.v and
+  // evaluates coupling i there into f (may be null) and m.
+  void evaluate(size_t i, const ActiveDofs& dofs, const double* q_local, const double* v_local,
+                const elements::LoadPath& path, double t, double* f,
+                std::span<const couplings::MatrixRequest> m, Buffers& b) const;
+  // Adds coupling i's block (dofs.n², row-major) into A: whole if dense, else its nonzeros
+  // (the rest of its pattern is in A already).
+  void insert_block(size_t i, const ActiveDofs& dofs, const double* block, Mat A) const;
   void scatter_to_local(Vec global, Vec local_ghosted);
-  // Collective. Evaluates every local kernel's force at p and calls fn(kernel, f_el).
-  template <class Fn>
-  void visit_element_forces(const EvalPoint& p, Fn&& fn);
-  // Gathers kernel k's local state from the ghosted local arrays.
-  void gather(size_t k, const double* q_local, const double* v_local, double* q_el,
-              double* v_el) const;
-  // Evaluates kernel k at owned arrays q, v (v may be null; every DOF of k owned, as in a
-  // local patch) into out, with caller buffers for its local state; returns its DOF count.
-  size_t evaluate_owned(size_t k, const double* q, const double* v, elements::Request request,
-                        elements::LocalOutput out, double* q_el, double* v_el) const;
-  void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
-  // Adds −f_ext of the moving loads at time t into the ghosted local force array.
-  void add_moving_loads(double t, double* f_local) const;
-  // Adds Gᵀλ and g(q, t) of this rank's constraints into the ghosted local force array.
-  void add_constraint_forces(double t, const double* q_local, double* f_local) const;
-  // Inserts c_λ Gᵀ + c_g G of this rank's constraints (and a zero multiplier diagonal).
-  void add_constraint_entries(double c_lambda, double c_g, Mat J) const;
-
-  // Moving contacts evaluated by this rank (the owner of the head node): the path's
-  // cumulative reference lengths and the DOFs involved.
-  struct LocalContact {
-    int index = 0;                // into Model::contacts
-    std::vector<double> start;    // per path element, + total length at the end
-    std::vector<PetscInt> path_global;  // free DOFs of the path's nodes (pattern)
-  };
-  std::vector<LocalContact> contacts_;
-  // The contact's penetration δ = N·q (and δ̇ = N·v + D·q) over its 15 involved DOFs at
-  // time t: head position (3), then the wire element's r_A, r_A,x, r_B, r_B,x; local and
-  // global indices (−1 fixed) and the fixed values; false when off the path.
-  struct ContactGeometry {
-    PetscInt local[15], global[15];
-    double fixed[15];
-    double N[15], D[15];
-    double position = 0.0;
-  };
-  bool contact_geometry(const LocalContact& c, double t, ContactGeometry& g) const;
-  // Penalty force from the geometry and the local state arrays (0 if separated).
-  double contact_force(const model::MovingContact& c, const ContactGeometry& g, const double* q,
-                       const double* v, double* penetration = nullptr) const;
-  // Adds this rank's contact forces into the ghosted local force array.
-  void add_contact_forces(double t, const double* q_local, const double* v_local,
-                          double* f_local) const;
-  // Inserts c_K K + c_C C of the contacts (and zeros over the whole preallocated coupling).
-  void add_contact_entries(double t, const double* q_local, const double* v_local, double c_K,
-                           double c_C, Mat J) const;
-
-  // A constraint owned by this rank: indices of its multipliers and of the position DOFs
-  // of its nodes (B: −1 when absent), ghosted local and global.
-  struct LocalConstraint {
-    int index = 0;
-    PetscInt lam_local[3], lam_global[3];
-    PetscInt a_local[3], a_global[3];
-    PetscInt b_local[3], b_global[3];
-  };
-  std::vector<LocalConstraint> constraints_;
-
-  // Per moving load: cumulative reference length at the start of each path element, and
-  // the local kernel index of each path element (−1: another rank's).
-  struct MovingPath {
-    std::vector<double> start;   // size n_elements + 1 (last: total length)
-    std::vector<int> kernel;
-  };
-  std::vector<MovingPath> moving_paths_;
+  // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el).
+  using ForceVisitor = std::function<void(size_t, const ActiveDofs&, std::span<const double>)>;
+  void visit_forces(const EvalPoint& p, const ForceVisitor& fn);
+  // Collective. Each combination c[r] over every coupling at p into matrices[r] (zeroed
+  // first, assembled on return; null matrices are skipped).
+  void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
+                         std::span<const Mat> matrices);
+  // Collective. An assembled matrix holding the union of the couplings' patterns (zeros).
+  MatHandle build_pattern() const;
 
   MPI_Comm comm_;
   const model::Model* model_;
   Partition partition_;
+  couplings::CouplingList couplings_;
   DofMap dofs_;
-  std::vector<Kernel> kernels_;
-  // Per kernel: offset into the flat per-local-DOF arrays below.
-  std::vector<size_t> kernel_offset_;
+  // Per coupling: offset into the flat per-DOF arrays below (its dofs() resolved).
+  std::vector<size_t> offset_;
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
   std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
   VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
-  size_t max_kernel_dofs_ = 0;
+  mutable MatHandle pattern_;           // built on the first create_matrix()
   bool has_damping_ = true;
-  // Local patches (prepare_local_patches): per owned DOF, the kernels touching it (CSR) and
-  // whether a patch may change it; marks for local_patch's search (kept all zero between calls).
+  Buffers work_;
+  // Local patches (prepare_local_patches): per owned DOF, the kernel couplings touching it
+  // (CSR) and whether a patch may change it; marks for local_patch's search (all zero
+  // between calls).
   std::vector<size_t> dof_kernel_start_, dof_kernels_;
   std::vector<char> patch_eligible_, patch_mark_;
 };

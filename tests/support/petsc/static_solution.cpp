@@ -35,9 +35,9 @@ GatheredStatic solve_static(MPI_Comm comm, const model::Model& m) {
     }
   std::vector<int> elements;
   std::vector<elements::SectionResult> sections;
-  system.section_results({q.get(), nullptr, 1.0}, elements, sections);
+  system.section_results({q.get(), nullptr, {}}, elements, sections);
   for (size_t i = 0; i < elements.size(); ++i) g.axial_force[elements[i]] = sections[i].axial_force;
-  const assembly::Reactions r = system.reactions({q.get(), nullptr, 1.0});
+  const assembly::Reactions r = system.reactions({q.get(), nullptr, {}});
   for (size_t i = 0; i < r.nodes.size(); ++i)
     for (int d = 0; d < 3; ++d) {
       g.reaction_force[3 * r.nodes[i] + d] = r.force[3 * i + d];

@@ -1,4 +1,4 @@
-#include "catena/assembly/element_factory.hpp"
+#include "catena/couplings/element_factory.hpp"
 
 #include <type_traits>
 
@@ -10,7 +10,7 @@
 #include "catena/elements/rayleigh_damped.hpp"
 #include "catena/elements/tension_bar.hpp"
 
-namespace catena::assembly {
+namespace catena::couplings {
 namespace {
 
 // The element's reference state: per node the first dofs_per_node() of
@@ -39,16 +39,12 @@ std::unique_ptr<elements::Element> with_rayleigh(std::unique_ptr<elements::Eleme
 
 }  // namespace
 
-Kernel make_element_kernel(const model::Model& model, int index) {
+std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index) {
   const model::ElementDesc& desc = model.elements[index];
   const Vec3& xa = model.nodes[desc.nodes[0]].position;
   const Vec3& xb = model.nodes[desc.nodes[1]].position;
   const double length = (xb - xa).norm();
-  Kernel k;
-  k.nodes = desc.nodes;
-  k.origin = KernelOrigin::element;
-  k.source = index;
-  k.element = std::visit(
+  std::unique_ptr<elements::Element> element = std::visit(
       [&](const auto& p) -> std::unique_ptr<elements::Element> {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, model::CableProps>) {
@@ -83,36 +79,33 @@ Kernel make_element_kernel(const model::Model& model, int index) {
         }
       },
       desc.props);
-  return k;
+  return std::make_unique<ElementCoupling>(std::move(element), desc.nodes, ElementOrigin::element,
+                                           index);
 }
 
-std::vector<Kernel> make_node_kernels(const model::Model& model) {
-  std::vector<Kernel> kernels;
-  auto add = [&](std::unique_ptr<elements::Element> e, int node, KernelOrigin origin, int src) {
-    Kernel k;
-    k.element = std::move(e);
-    k.nodes = {node};
-    k.origin = origin;
-    k.source = src;
-    kernels.push_back(std::move(k));
+std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::Model& model) {
+  std::vector<std::unique_ptr<ElementCoupling>> couplings;
+  auto add = [&](std::unique_ptr<elements::Element> e, int node, ElementOrigin origin, int src) {
+    couplings.push_back(
+        std::make_unique<ElementCoupling>(std::move(e), std::vector<int>{node}, origin, src));
   };
   for (size_t i = 0; i < model.point_masses.size(); ++i) {
     const auto& m = model.point_masses[i];
     add(std::make_unique<elements::PointMass>(m.mass, model.gravity), m.node,
-        KernelOrigin::point_mass, static_cast<int>(i));
+        ElementOrigin::point_mass, static_cast<int>(i));
   }
   for (size_t i = 0; i < model.elastic_supports.size(); ++i) {
     const auto& s = model.elastic_supports[i];
     add(std::make_unique<elements::GroundSpring>(model.nodes[s.node].position,
                                                  elements::SpringSection{s.stiffness, s.damping}),
-        s.node, KernelOrigin::elastic_support, static_cast<int>(i));
+        s.node, ElementOrigin::elastic_support, static_cast<int>(i));
   }
   for (size_t i = 0; i < model.nodal_loads.size(); ++i) {
     const auto& l = model.nodal_loads[i];
-    add(std::make_unique<elements::NodalForce>(l.force), l.node, KernelOrigin::nodal_load,
+    add(std::make_unique<elements::NodalForce>(l.force), l.node, ElementOrigin::nodal_load,
         static_cast<int>(i));
   }
-  return kernels;
+  return couplings;
 }
 
-}  // namespace catena::assembly
+}  // namespace catena::couplings

@@ -1,0 +1,40 @@
+#pragma once
+// An element kernel (elements/element.hpp) as a coupling: it acts on every DOF of its nodes
+// (node-major, the first dofs_per_node() of each node's layout), densely.
+// Node-attached items (point masses, elastic supports, nodal loads) are one-node elements,
+// so that assembly has a single loop; `origin` says which model item a coupling came from.
+#include <memory>
+#include <vector>
+
+#include "catena/couplings/coupling.hpp"
+#include "catena/elements/element.hpp"
+
+namespace catena::couplings {
+
+enum class ElementOrigin { element, point_mass, elastic_support, nodal_load };
+
+class ElementCoupling final : public Coupling {
+ public:
+  // `source` indexes the model vector named by `origin`.
+  ElementCoupling(std::unique_ptr<elements::Element> element, std::vector<int> nodes,
+                  ElementOrigin origin, int source);
+
+  void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
+                Scratch& scratch) const override;
+  bool has_damping() const override { return element_->has_damping(); }
+  bool in_force_scale() const override { return true; }
+  PatchRole patch_role() const override { return PatchRole::kernel; }
+
+  const elements::Element& element() const { return *element_; }
+  const std::vector<int>& nodes() const { return nodes_; }
+  ElementOrigin origin() const { return origin_; }
+  int source() const { return source_; }
+
+ private:
+  std::unique_ptr<elements::Element> element_;
+  std::vector<int> nodes_;  // model node indices
+  ElementOrigin origin_;
+  int source_;
+};
+
+}  // namespace catena::couplings

@@ -1,0 +1,17 @@
+#pragma once
+// Turns the model's plain descriptions of elements and node-attached items (point masses,
+// elastic supports, nodal loads) into element couplings.
+#include <memory>
+#include <vector>
+
+#include "catena/couplings/element_coupling.hpp"
+#include "catena/model/model.hpp"
+
+namespace catena::couplings {
+
+// Not collective. The coupling of model.elements[index].
+std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index);
+// Not collective. One-node couplings for every point mass, elastic support and nodal load.
+std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::Model& model);
+
+}  // namespace catena::couplings

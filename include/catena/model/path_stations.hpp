@@ -1,0 +1,31 @@
+#pragma once
+// Arc length along a path of elements (model::ElementPath, a moving load's elements),
+// measured on the reference geometry as the sum of the elements' chords: the coordinate in
+// which moving loads and pantograph contacts travel, and which `catena check` reports.
+#include <cstddef>
+#include <vector>
+
+#include "catena/model/model.hpp"
+
+namespace catena::model {
+
+// Not collective. Chord of element e between its end nodes on the reference geometry, m.
+double element_chord(const Model& model, int element);
+
+// Stations of a path: start[i] is the arc length at the start of its element i, and the
+// last entry the path's length.
+struct PathStations {
+  std::vector<double> start;  // n_elements + 1, ascending, start[0] = 0
+
+  double length() const { return start.back(); }
+  bool contains(double s) const { return s >= 0.0 && s <= length(); }
+  // The element (index into the path) holding s ∈ [0, length()]: at a boundary between two
+  // elements, the first.
+  std::size_t element_at(double s) const;
+  double element_length(std::size_t i) const { return start[i + 1] - start[i]; }
+};
+
+// Not collective.
+PathStations path_stations(const Model& model, const std::vector<int>& elements);
+
+}  // namespace catena::model

@@ -1,0 +1,36 @@
+#include "catena/couplings/model_couplings.hpp"
+
+#include "catena/couplings/element_factory.hpp"
+#include "catena/couplings/moving_load.hpp"
+#include "catena/couplings/node_constraint.hpp"
+#include "catena/couplings/pantograph_contact.hpp"
+
+namespace catena::couplings {
+
+CouplingList make_couplings(const model::Model& model, const std::vector<int>& element_owner,
+                            const std::vector<int>& node_owner, int rank) {
+  CouplingList list;
+  for (int e = 0; e < static_cast<int>(model.elements.size()); ++e)
+    if (element_owner[static_cast<size_t>(e)] == rank)
+      list.push_back(make_element_coupling(model, e));
+  for (auto& c : make_node_couplings(model))
+    if (node_owner[static_cast<size_t>(c->nodes().front())] == rank) list.push_back(std::move(c));
+  for (const model::MovingLoad& load : model.moving_loads) {
+    std::vector<bool> evaluated;
+    bool any = false;
+    for (int e : load.elements) {
+      evaluated.push_back(element_owner[static_cast<size_t>(e)] == rank);
+      any = any || evaluated.back();
+    }
+    if (any) list.push_back(std::make_unique<MovingLoad>(model, load, evaluated));
+  }
+  for (int c = 0; c < static_cast<int>(model.constraints.size()); ++c)
+    if (node_owner[static_cast<size_t>(model.constraints[static_cast<size_t>(c)].node_a)] == rank)
+      list.push_back(std::make_unique<NodeConstraint>(model, c));
+  for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c)
+    if (node_owner[static_cast<size_t>(model.contacts[static_cast<size_t>(c)].head_node)] == rank)
+      list.push_back(std::make_unique<PantographContact>(model, c));
+  return list;
+}
+
+}  // namespace catena::couplings
