@@ -75,10 +75,23 @@ void write_dataset(hid_t file, const char* name, const std::vector<hsize_t>& dim
   }
 }
 
-// The layout of docs/output.md with `times` as /time.
-void write_series_file(const fs::path& path, const std::vector<double>& times) {
+// A variable-length string attribute of the root group, as the writer stores them.
+void write_root_string(hid_t file, const char* name, const char* value) {
+  const OpenId type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  const OpenId space(H5Screate(H5S_SCALAR));
+  const OpenId attribute(H5Acreate2(file, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  ASSERT_GE(attribute.get(), 0) << name;
+  ASSERT_GE(H5Awrite(attribute.get(), type.get(), &value), 0) << name;
+}
+
+// The layout of docs/output.md with `times` as /time; root attribute format = `format`
+// (none if null).
+void write_series_file(const fs::path& path, const std::vector<double>& times,
+                       const char* format = "catena-transient-1") {
   const OpenId file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   ASSERT_GE(file.get(), 0) << path;
+  if (format != nullptr) write_root_string(file.get(), "format", format);
   const auto s = static_cast<hsize_t>(times.size());
   const auto n = static_cast<hsize_t>(n_nodes), e = static_cast<hsize_t>(n_elements);
   write_dataset<std::int64_t>(file.get(), "/mesh/node_ids", {n}, H5T_STD_I64LE, false);
@@ -342,6 +355,28 @@ TEST_F(TransientXdmfTest, RefusesShapesThatDoNotMatchTheFile) {
                                          n_elements, sample_times);
       },
       {"H5Fopen", "missing.h5"}, only_h5);
+}
+
+// A file of another format (another version, or a static result) or of none is refused by
+// both functions, naming the file, the format found and the one expected.
+TEST_F(TransientXdmfTest, RefusesAFileOfAnotherFormat) {
+  const fs::path h5 = directory_ / "other.h5";
+  const std::string xmf = (directory_ / "other.xmf").string();
+  for (const char* format : {"catena-transient-0", "catena-static-1"}) {
+    write_series_file(h5, sample_times, format);
+    const std::string found = std::string("format '") + format + "'";
+    expect_refused(directory_, [&] { catena::io::read_sample_times(h5.string()); },
+                   {"other.h5", found, "expected 'catena-transient-1'"}, {"other.h5"});
+    expect_refused(directory_,
+                   [&] {
+                     catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements,
+                                                      sample_times);
+                   },
+                   {"other.xmf", "other.h5", found, "expected 'catena-transient-1'"}, {"other.h5"});
+  }
+  write_series_file(h5, sample_times, nullptr);
+  expect_refused(directory_, [&] { catena::io::read_sample_times(h5.string()); },
+                 {"other.h5", "'format': missing", "expected 'catena-transient-1'"}, {"other.h5"});
 }
 
 TEST_F(TransientXdmfTest, RefusesAnXdmfOutsideTheHdf5Directory) {
