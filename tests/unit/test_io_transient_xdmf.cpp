@@ -20,25 +20,14 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/transient_xdmf.hpp"
+#include "hdf5_id.hpp"
+#include "test_directory.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// Any HDF5 identifier, released on scope exit (H5Idec_ref closes whatever kind it is).
-class OpenId {
- public:
-  explicit OpenId(hid_t id) : id_(id) {}
-  ~OpenId() {
-    if (id_ >= 0) H5Idec_ref(id_);
-  }
-  OpenId(const OpenId&) = delete;
-  OpenId& operator=(const OpenId&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-};
+using catena::test::directory_listing;
+using catena::test::OpenId;
 
 constexpr std::int64_t n_nodes = 4;
 constexpr std::int64_t n_elements = 3;
@@ -143,14 +132,6 @@ std::vector<std::int64_t> dataset_dims(hid_t file, const std::string& dataset) {
   std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
   H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
   return {dims.begin(), dims.end()};
-}
-
-std::vector<std::string> directory_listing(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 // Every DataItem pointing into the HDF5 file: the base name, an existing dataset, its shape.
