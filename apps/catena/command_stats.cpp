@@ -141,7 +141,9 @@ void stats_on_this_rank(const CommandLine& cl) {
     } catch (const InputError& e) {
       // Name the file, and the dataset or option the library's key stands for.
       const std::string& k = e.where().key;
-      const std::string key = k == "cutoff" ? "--cutoff" : k == "dt" ? "/time" : k;
+      const std::string key = k == "cutoff" ? "--cutoff"
+                              : k == "dt"   ? io::contact_run_times_dataset()
+                                            : k;
       throw InputError({args.file, 0, key}, e.message());
     }
   }

@@ -350,4 +350,6 @@ ContactRun read_contact_run(const std::string& path) {
   return run;
 }
 
+const char* contact_run_times_dataset() { return time_name; }
+
 }  // namespace catena::io

@@ -28,4 +28,7 @@ struct ContactRun {
 // pantographs, is not uniformly sampled or its datasets' shapes disagree.
 ContactRun read_contact_run(const std::string& path);
 
+// Not collective. The dataset ContactRun::dt comes from ("/time"), for messages naming it.
+const char* contact_run_times_dataset();
+
 }  // namespace catena::io
