@@ -14,9 +14,9 @@
 
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/contact_run_reader.hpp"
 #include "catena/post/contact_statistics.hpp"
 #include "commands.hpp"
-#include "contact_run_reader.hpp"
 
 namespace catena::app {
 namespace {
@@ -79,7 +79,7 @@ void print_json(const std::vector<PantographResult>& results,
   std::fputs(out.c_str(), stdout);
 }
 
-void print_table(const std::string& path, const ContactRun& run,
+void print_table(const std::string& path, const io::ContactRun& run,
                  const std::vector<PantographResult>& results,
                  const post::EvaluationSection& section, const StatsArguments& args) {
   std::printf("catena stats: %s\n", path.c_str());
@@ -118,7 +118,7 @@ void print_table(const std::string& path, const ContactRun& run,
 // Rank 0's whole work: read, compute, print. Throws InputError for bad files/arguments.
 void stats_on_this_rank(const CommandLine& cl) {
   const StatsArguments& args = cl.stats;
-  const ContactRun run = read_contact_run(args.file);
+  const io::ContactRun run = io::read_contact_run(args.file);
   post::EvaluationSection section;
   if (args.section) {
     section = {(*args.section)[0], (*args.section)[1]};
@@ -141,7 +141,9 @@ void stats_on_this_rank(const CommandLine& cl) {
     } catch (const InputError& e) {
       // Name the file, and the dataset or option the library's key stands for.
       const std::string& k = e.where().key;
-      const std::string key = k == "cutoff" ? "--cutoff" : k == "dt" ? "/time" : k;
+      const std::string key = k == "cutoff" ? "--cutoff"
+                              : k == "dt"   ? io::contact_run_times_dataset()
+                                            : k;
       throw InputError({args.file, 0, key}, e.message());
     }
   }

@@ -27,6 +27,20 @@ namespace {
 constexpr const char* kFormat = "catena-checkpoint-2";
 constexpr const char* kFormatWithoutResume = "catena-checkpoint-1";
 
+// The checkpoint's objects (checkpoint.hpp), written and read here only.
+constexpr const char* kPositions = "/q";
+constexpr const char* kVelocities = "/v";
+constexpr const char* kAccelerations = "/a";
+constexpr const char* kMultipliers = "/lambda";
+constexpr const char* kResumeGroup = "/resume";
+constexpr const char* kResumeVectors = "/resume/vectors";
+constexpr const char* kResumeMultipliers = "/resume/multipliers";
+
+// "<group>/<name>", a member of one of the /resume groups.
+std::string member_path(const char* group, const std::string& name) {
+  return std::string(group) + "/" + name;
+}
+
 bool known_format(const std::string& format) {
   return format == kFormat || format == kFormatWithoutResume;
 }
@@ -170,17 +184,17 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   c.facts.samples = r.integer("samples");
   c.facts.steps = r.integer("steps");
   const std::size_t n = model.nodes.size();
-  c.q = r.values("/q", 12 * n);
-  c.v = r.values("/v", 12 * n);
-  c.a = r.values("/a", 12 * n);
-  c.lambda = r.values("/lambda", 3 * model.constraints.size());
+  c.q = r.values(kPositions, 12 * n);
+  c.v = r.values(kVelocities, 12 * n);
+  c.a = r.values(kAccelerations, 12 * n);
+  c.lambda = r.values(kMultipliers, 3 * model.constraints.size());
   if (format == kFormatWithoutResume) return c;
   c.facts.ranks = static_cast<int>(r.integer("ranks"));
-  r.numbers("/resume", c.resume.reals, c.resume.integers);
-  for (const std::string& name : r.members("/resume/vectors")) {
-    c.resume.rows[name] = r.values(("/resume/vectors/" + name).c_str(), 12 * n);
+  r.numbers(kResumeGroup, c.resume.reals, c.resume.integers);
+  for (const std::string& name : r.members(kResumeVectors)) {
+    c.resume.rows[name] = r.values(member_path(kResumeVectors, name).c_str(), 12 * n);
     c.resume.multipliers[name] =
-        r.values(("/resume/multipliers/" + name).c_str(), 3 * model.constraints.size());
+        r.values(member_path(kResumeMultipliers, name).c_str(), 3 * model.constraints.size());
   }
   return c;
 }
@@ -192,15 +206,15 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
                        const ResumeRows& resume) {
   const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
   const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
-  const GroupHandle group = create_group(file, "/resume");
-  create_group(file, "/resume/vectors");
-  create_group(file, "/resume/multipliers");
+  const GroupHandle group = create_group(file, kResumeGroup);
+  create_group(file, kResumeVectors);
+  create_group(file, kResumeMultipliers);
   for (const auto& [name, rows] : resume.rows) {
-    const std::string node_path = "/resume/vectors/" + name;
+    const std::string node_path = member_path(kResumeVectors, name);
     const std::vector<double> block = nodes.to_block(rows, 12);
     write_block_dataset<double>(file, {node_path.c_str(), n_nodes, 12}, nodes.block(),
                                 block);
-    const std::string multiplier_path = "/resume/multipliers/" + name;
+    const std::string multiplier_path = member_path(kResumeMultipliers, name);
     const std::vector<double> lambda = constraints.to_block(resume.multipliers.at(name), 3);
     write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, 3},
                                 constraints.block(), lambda);
@@ -231,12 +245,13 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
     const RowRedistribution nodes(comm, n_nodes, share.nodes, "checkpoint nodes");
     const RowRedistribution constraints(comm, n_constraints, share.constraints,
                                         "checkpoint constraints");
-    for (auto [name, values] : {std::pair{"/q", &share.q}, {"/v", &share.v}, {"/a", &share.a}}) {
+    for (auto [name, values] :
+         {std::pair{kPositions, &share.q}, {kVelocities, &share.v}, {kAccelerations, &share.a}}) {
       const std::vector<double> block = nodes.to_block(*values, 12);
       write_block_dataset<double>(file, {name, n_nodes, 12}, nodes.block(), block);
     }
     const std::vector<double> lambda = constraints.to_block(share.lambda, 3);
-    write_block_dataset<double>(file, {"/lambda", n_constraints, 3, "N"}, constraints.block(),
+    write_block_dataset<double>(file, {kMultipliers, n_constraints, 3, "N"}, constraints.block(),
                                 lambda);
     write_resume_rows(comm, file, model, nodes, constraints, share.resume);
     run_collective_phase(comm, [&] {

@@ -1,5 +1,6 @@
 #include "hdf5_attributes.hpp"
 
+#include "catena/core/error.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
 
@@ -68,6 +69,33 @@ void write_int64_attribute(const AttributeTarget& target, const char* name, std:
 void write_double_attribute(const AttributeTarget& target, const char* name, double value) {
   create_and_write(target, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, scalar_space(target, name),
                    &value);
+}
+
+std::optional<std::string> read_string_attribute(const AttributeTarget& target, const char* name) {
+  const std::string label = attribute_label(name);
+  const htri_t exists = H5Aexists(target.object, name);
+  check_hdf5_status(exists, "H5Aexists", target.file_path, label);
+  if (exists == 0) return std::nullopt;
+  const AttributeHandle attribute(checked_hdf5_id(H5Aopen(target.object, name, H5P_DEFAULT),
+                                                  "H5Aopen", target.file_path, label));
+  const DatatypeHandle type(
+      checked_hdf5_id(H5Aget_type(attribute.get()), "H5Aget_type", target.file_path, label));
+  const DataspaceHandle space(
+      checked_hdf5_id(H5Aget_space(attribute.get()), "H5Aget_space", target.file_path, label));
+  if (H5Tget_class(type.get()) != H5T_STRING || H5Sget_simple_extent_npoints(space.get()) != 1)
+    throw Error("'" + target.file_path + "' at " + label + ": not a single string");
+  if (H5Tis_variable_str(type.get()) > 0) {
+    char* text = nullptr;
+    check_hdf5_status(H5Aread(attribute.get(), type.get(), &text), "H5Aread", target.file_path,
+                      label);
+    std::string value = text != nullptr ? text : "";
+    H5free_memory(text);
+    return value;
+  }
+  std::string buffer(H5Tget_size(type.get()), '\0');
+  check_hdf5_status(H5Aread(attribute.get(), type.get(), buffer.data()), "H5Aread",
+                    target.file_path, label);
+  return buffer.substr(0, buffer.find('\0'));
 }
 
 }  // namespace catena::io

@@ -8,6 +8,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,10 @@ void write_string_list_attribute(const AttributeTarget& target, const char* name
                                  const std::vector<std::string>& values);
 void write_int64_attribute(const AttributeTarget& target, const char* name, std::int64_t value);
 void write_double_attribute(const AttributeTarget& target, const char* name, double value);
+
+// Not collective. The string attribute `name` of target.object, variable- or fixed-length
+// (h5py writes either); nothing if the object has no such attribute. Throws catena::Error
+// naming the file and the attribute if it is not a single string or cannot be read.
+std::optional<std::string> read_string_attribute(const AttributeTarget& target, const char* name);
 
 }  // namespace catena::io

@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <random>
 
+#include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
+#include "transient_layout.hpp"
 
 namespace catena::io {
 namespace fs = std::filesystem;
@@ -43,18 +46,12 @@ std::string read_run_id(const std::string& path) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) return "";
   const FileHandle owned(file);
-  if (H5Aexists(file, "run_id") <= 0) return "";
-  const hid_t attribute = H5Aopen(file, "run_id", H5P_DEFAULT);
-  if (attribute < 0) return "";
-  const AttributeHandle a(attribute);
-  const DatatypeHandle type(H5Aget_type(a.get()));
-  if (type.get() < 0 || H5Tget_class(type.get()) != H5T_STRING || !H5Tis_variable_str(type.get()))
-    return "";
-  char* value = nullptr;
-  if (H5Aread(a.get(), type.get(), &value) < 0 || !value) return "";
-  std::string id = value;
-  H5free_memory(value);
-  return id;
+  try {
+    return read_string_attribute({file, path}, transient_layout::root_attribute::run_id)
+        .value_or("");
+  } catch (const Error&) {
+    return "";  // not a string: no Catena time series
+  }
 }
 
 int remove_abandoned_checkpoint_temporaries(const std::string& output_path) {

@@ -4,16 +4,19 @@
 // Changing a name or a meaning means a new `format` string.
 #include <cstdint>
 
+#include "mesh_layout.hpp"
+
 namespace catena::io::static_layout {
 
 inline constexpr const char* format = "catena-static-1";
 inline constexpr const char* units = "SI";
 
-inline constexpr const char* mesh_group = "/mesh";
-inline constexpr const char* node_ids = "/mesh/node_ids";
-inline constexpr const char* node_positions = "/mesh/node_positions";
-inline constexpr const char* element_ids = "/mesh/element_ids";
-inline constexpr const char* element_nodes = "/mesh/element_nodes";
+// The reference mesh (mesh_layout.hpp), and what only the static file adds to it.
+inline constexpr const char* mesh_group = mesh_layout::group;
+inline constexpr const char* node_ids = mesh_layout::node_ids;
+inline constexpr const char* node_positions = mesh_layout::node_positions;
+inline constexpr const char* element_ids = mesh_layout::element_ids;
+inline constexpr const char* element_nodes = mesh_layout::element_nodes;
 inline constexpr const char* element_kind = "/mesh/element_kind";
 inline constexpr const char* element_set = "/mesh/element_set";
 
@@ -27,8 +30,7 @@ inline constexpr const char* support_nodes = "/static/support_nodes";
 inline constexpr const char* reaction_force = "/static/reaction_force";
 inline constexpr const char* reaction_moment = "/static/reaction_moment";
 
-// Every element is a 2-node element so far; the XDMF topology relies on it.
-inline constexpr int nodes_per_element = 2;
+inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
 
 // Values of /mesh/element_kind; the attribute "kinds" lists the names in this order.
 enum class ElementKind : std::int8_t { cable = 0, beam = 1, bar = 2, spring = 3 };

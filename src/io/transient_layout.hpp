@@ -1,23 +1,106 @@
 #pragma once
-// The names in a time-series HDF5 file (dynamic runs), in one place for the readers of the
-// file inside the io layer (the XDMF description); docs/output.md documents shapes and
-// units. TransientWriter (transient_writer.cpp) writes these names: keep the two in step.
+// The time-series HDF5 file of a dynamic run, in one place: every group, dataset and
+// attribute name, with its shape, type and unit. The writer (transient_writer.cpp) and
+// every reader — the XDMF description (transient_xdmf.cpp), the run reader of
+// `catena stats` (contact_run_reader.cpp), the run id of a restart (run_files.cpp) —
+// use these names and no others; docs/output.md ("Time series") lists the same.
+// Changing a name or a meaning means a new `format` string.
+//
+// Shapes are in HDF5 (row-major) order; n_samples and n_steps grow as the run goes on.
+// Types are little-endian: float64, int64, int32.
+#include <hdf5.h>
+
+#include <string>
+
+#include "mesh_layout.hpp"
+
 namespace catena::io::transient_layout {
 
-inline constexpr const char* time = "/time";  // (n_samples,)
+// The root attribute `format` of every time-series file; readers refuse any other.
+inline constexpr const char* format = "catena-transient-1";
 
-inline constexpr const char* node_ids = "/mesh/node_ids";              // (n_nodes,) int64
-inline constexpr const char* node_positions = "/mesh/node_positions";  // (n_nodes, 3)
-inline constexpr const char* element_ids = "/mesh/element_ids";        // (n_elements,) int64
-inline constexpr const char* element_nodes = "/mesh/element_nodes";    // (n_elements, 2) int64
+// A dataset: its absolute path and the string attribute `unit` it carries (nullptr: none,
+// for indices, ids and counts).
+struct Dataset {
+  const char* path;
+  const char* unit;
+};
 
-// (n_samples, n_nodes, 3)
-inline constexpr const char* positions = "/samples/positions";
-inline constexpr const char* velocities = "/samples/velocities";
-inline constexpr const char* slopes = "/samples/slopes";
-// (n_samples, n_elements)
-inline constexpr const char* axial_force = "/samples/axial_force";
+// ---- /mesh: the reference mesh, as in the static file (mesh_layout.hpp). ----
+inline constexpr const char* mesh_group = mesh_layout::group;
+inline constexpr Dataset node_ids{mesh_layout::node_ids, nullptr};  // (n_nodes,) int64
+// (n_nodes, 3) float64: reference positions.
+inline constexpr Dataset node_positions{mesh_layout::node_positions, "m"};
+inline constexpr Dataset element_ids{mesh_layout::element_ids, nullptr};  // (n_elements,) int64
+// (n_elements, 2) int64: node indices (0-based rows) of the first and last node.
+inline constexpr Dataset element_nodes{mesh_layout::element_nodes, nullptr};
+inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
+// (n_constraints, 2) int64: node indices A and B of each constraint (B = −1: none). Only
+// with constraints.
+inline constexpr Dataset constraint_nodes{"/mesh/constraint_nodes", nullptr};
+// (n_registration,) int64: node indices of the contact wire's registration points.
+inline constexpr Dataset registration_nodes{"/mesh/registration_nodes", nullptr};
 
-inline constexpr int nodes_per_element = 2;
+// ---- Samples, one row per output time (output.interval apart). ----
+inline constexpr Dataset time{"/time", "s"};  // (n_samples,) float64
+// (n_samples, n_nodes, 3) float64: position, velocity and slope ∂r/∂x of every node.
+inline constexpr Dataset positions{"/samples/positions", "m"};
+inline constexpr Dataset velocities{"/samples/velocities", "m/s"};
+inline constexpr Dataset slopes{"/samples/slopes", "1"};
+// (n_samples, n_elements) float64: axial force at the element's mid-point.
+inline constexpr Dataset axial_force{"/samples/axial_force", "N"};
+// (n_samples, n_constraints, 3) float64: the force on node A. Only with constraints.
+inline constexpr Dataset constraint_forces{"/samples/constraint_forces", "N"};
+// (n_samples, n_pantographs) float64, column j = the pantograph whose `index` is j. Only
+// with pantographs.
+inline constexpr Dataset contact_force{"/samples/contact_force", "N"};
+inline constexpr Dataset contact_position{"/samples/contact_position", "m"};
+
+// ---- Steps, one row per accepted step. ----
+// (n_steps,) float64: end and size of the step, its weighted local error estimate.
+inline constexpr Dataset step_time{"/steps/time", "s"};
+inline constexpr Dataset step_dt{"/steps/dt", "s"};
+inline constexpr Dataset step_error{"/steps/error", "1"};
+// (n_steps,) int32: Newton iterations of the kept attempts, attempts rejected before it.
+inline constexpr Dataset step_newton_iterations{"/steps/newton_iterations", nullptr};
+inline constexpr Dataset step_rejected{"/steps/rejected", nullptr};
+// (n_steps, n_pantographs) float64. Only with pantographs.
+inline constexpr Dataset step_contact_force{"/steps/contact_force", "N"};
+
+// ---- Pantographs: a group /pantographs/<name> each (the scene's name). ----
+inline constexpr const char* pantographs_group = "/pantographs";
+namespace pantograph_attribute {
+inline constexpr const char* index = "index";  // int64: its column in the contact datasets
+inline constexpr const char* speed = "speed";  // float64, m/s along its path
+inline constexpr const char* start = "start";  // float64, m: arc length at t = 0
+inline constexpr const char* path = "path";    // string: the name of its path
+}  // namespace pantograph_attribute
+
+// ---- Root attributes. ----
+namespace root_attribute {
+inline constexpr const char* format = "format";                // string: transient_layout::format
+inline constexpr const char* scene_text = "scene_text";        // string: the scene as run
+inline constexpr const char* scene_file = "scene_file";        // string
+inline constexpr const char* code_version = "code_version";    // string
+inline constexpr const char* command_line = "command_line";    // string
+inline constexpr const char* run_id = "run_id";                // string: 32 hex digits
+inline constexpr const char* petsc_options = "petsc_options";  // string
+inline constexpr const char* n_ranks = "n_ranks";              // int64
+inline constexpr const char* n_dofs = "n_dofs";                // int64
+inline constexpr const char* analysis = "analysis";            // string: analysis_dynamic
+inline constexpr const char* status = "status";                // string: "running", then the end
+inline constexpr const char* evaluation_start = "evaluation_start";  // float64, m
+inline constexpr const char* evaluation_end = "evaluation_end";      // float64, m
+// After the run, the work statistics (float64) the caller of TransientWriter::close names.
+}  // namespace root_attribute
+inline constexpr const char* analysis_dynamic = "dynamic";
+inline constexpr const char* status_running = "running";
+
+// Not collective. Throws catena::InputError naming `path` and the attribute `format`
+// unless the open file `file` is a time series of this layout: its root attribute format
+// is transient_layout::format. The message names the format found and the one expected;
+// a time series written before the attribute existed (analysis = "dynamic", no format)
+// is said to come from an older Catena, to be run again.
+void require_transient_format(hid_t file, const std::string& path);
 
 }  // namespace catena::io::transient_layout

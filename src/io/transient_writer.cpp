@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <type_traits>
 
 #include "catena/core/error.hpp"
 #include "catena/io/output_error.hpp"
@@ -16,18 +17,27 @@
 #include "hdf5_parallel_write.hpp"
 #include "row_redistribution.hpp"
 #include "space_probe.hpp"
+#include "transient_layout.hpp"
 
 namespace catena::io {
 namespace {
+
+namespace layout = transient_layout;
 
 // An extendible dataset: rows appended along the first dimension.
 class Series {
  public:
   Series() = default;
-  // Collective. shape: the per-row shape (empty: scalar rows).
-  Series(const ParallelHdf5File& file, const char* name, std::vector<hsize_t> shape, hid_t type,
-         const char* unit)
-      : file_(&file), name_(name), path_(file.path()), shape_(std::move(shape)), type_(type) {
+  // Collective. Creates `dataset` with no rows. shape: the per-row shape (empty: scalar
+  // rows).
+  Series(const ParallelHdf5File& file, const layout::Dataset& dataset, std::vector<hsize_t> shape,
+         hid_t type)
+      : file_(&file),
+        name_(dataset.path),
+        path_(file.path()),
+        shape_(std::move(shape)),
+        type_(type) {
+    const char* name = dataset.path;
     std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
     hsize_t row = 1;
     for (hsize_t n : shape_) {
@@ -58,22 +68,23 @@ class Series {
     dataset_ = file.agreed_create<DatasetHandle>({"H5Dcreate2", path_, name_}, [&] {
       return H5Dcreate2(file.id(), name, type, space.get(), links.get(), create.get(), H5P_DEFAULT);
     });
-    if (unit)
-      run_output_phase(file.comm(),
-                       [&] { write_string_attribute({dataset_.get(), path_}, "unit", unit); });
+    if (dataset.unit)
+      run_output_phase(file.comm(), [&] {
+        write_string_attribute({dataset_.get(), path_}, "unit", dataset.unit);
+      });
   }
 
-  // Collective. Opens the existing dataset `name` and cuts it to `rows` rows.
-  Series(const ParallelHdf5File& file, const char* name, std::vector<hsize_t> shape, hid_t type,
-         hsize_t rows)
+  // Collective. Opens the existing `dataset` and cuts it to `rows` rows.
+  Series(const ParallelHdf5File& file, const layout::Dataset& dataset, std::vector<hsize_t> shape,
+         hid_t type, hsize_t rows)
       : file_(&file),
-        name_(name),
+        name_(dataset.path),
         path_(file.path()),
         shape_(std::move(shape)),
         type_(type),
         rows_(rows) {
     dataset_ = DatasetHandle(
-        checked_hdf5_id(H5Dopen2(file.id(), name, H5P_DEFAULT), "H5Dopen2", path_, name_));
+        checked_hdf5_id(H5Dopen2(file.id(), dataset.path, H5P_DEFAULT), "H5Dopen2", path_, name_));
     const DataspaceHandle space(
         checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
     std::vector<hsize_t> dims(shape_.size() + 1);
@@ -205,6 +216,40 @@ struct TransientWriter::Impl {
     if (file.failed()) abandon_file();
   }
 
+  // Collective. Every series `model` has: created empty, or (`resume`) reopened and cut
+  // to the rows the checkpoint had.
+  void open_series(const model::Model& model, const ResumePoint* resume) {
+    const auto series = [&](const layout::Dataset& dataset, std::vector<hsize_t> shape, hid_t type,
+                            std::int64_t resumed_rows) {
+      if (!resume) return Series(file, dataset, std::move(shape), type);
+      return Series(file, dataset, std::move(shape), type, static_cast<hsize_t>(resumed_rows));
+    };
+    const std::int64_t samples = resume ? resume->samples : 0;
+    const std::int64_t steps = resume ? resume->steps : 0;
+    const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
+    const auto n_elements = static_cast<hsize_t>(model.elements.size());
+    const hid_t real = H5T_IEEE_F64LE, count = H5T_STD_I32LE;
+    if (has_constraints)
+      constraint_forces =
+          series(layout::constraint_forces, {static_cast<hsize_t>(model.constraints.size()), 3},
+                 real, samples);
+    if (n_contacts > 0) {
+      contact_force = series(layout::contact_force, {n_contacts}, real, samples);
+      contact_position = series(layout::contact_position, {n_contacts}, real, samples);
+      step_contact_force = series(layout::step_contact_force, {n_contacts}, real, steps);
+    }
+    time = series(layout::time, {}, real, samples);
+    positions = series(layout::positions, {n_nodes, 3}, real, samples);
+    velocities = series(layout::velocities, {n_nodes, 3}, real, samples);
+    slopes = series(layout::slopes, {n_nodes, 3}, real, samples);
+    axial = series(layout::axial_force, {n_elements}, real, samples);
+    step_time = series(layout::step_time, {}, real, steps);
+    step_dt = series(layout::step_dt, {}, real, steps);
+    step_iterations = series(layout::step_newton_iterations, {}, count, steps);
+    step_error = series(layout::step_error, {}, real, steps);
+    step_rejected = series(layout::step_rejected, {}, count, steps);
+  }
+
   std::vector<Series*> all_series() {
     return {&time, &positions, &velocities, &slopes, &axial, &constraint_forces,
             &contact_force, &contact_position, &step_contact_force, &step_time,
@@ -232,8 +277,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
                                    owned_constraints)) {
   Impl& s = *impl_;
   const hid_t f = s.file.id();
-  const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
-  const auto n_elements = static_cast<hsize_t>(model.elements.size());
+  const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
+  const auto n_elements = static_cast<std::int64_t>(model.elements.size());
   const std::string& p = s.path;
   // Mesh: every rank holds the model and writes its balanced block.
   const RowBlock& nb = s.nodes.block();
@@ -245,11 +290,15 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     ids.push_back(node.id);
     reference.insert(reference.end(), {node.position.x(), node.position.y(), node.position.z()});
   }
-  create_group(s.file, "/mesh");
-  write_block_dataset<std::int64_t>(s.file, {"/mesh/node_ids", static_cast<std::int64_t>(n_nodes), 1},
-                                    nb, ids);
-  write_block_dataset<double>(
-      s.file, {"/mesh/node_positions", static_cast<std::int64_t>(n_nodes), 3, "m"}, nb, reference);
+  // A mesh dataset of `rows` × `columns`, this rank's `block` of them.
+  const auto write_mesh = [&](const layout::Dataset& dataset, std::int64_t rows, int columns,
+                              const RowBlock& block, const auto& values) {
+    using Value = typename std::decay_t<decltype(values)>::value_type;
+    write_block_dataset<Value>(s.file, {dataset.path, rows, columns, dataset.unit}, block, values);
+  };
+  create_group(s.file, layout::mesh_group);
+  write_mesh(layout::node_ids, n_nodes, 1, nb, ids);
+  write_mesh(layout::node_positions, n_nodes, 3, nb, reference);
   std::vector<std::int64_t> element_ids, element_nodes;
   for (std::int64_t k = 0; k < eb.count; ++k) {
     const model::ElementDesc& e = model.elements[static_cast<size_t>(eb.begin + k)];
@@ -257,10 +306,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     element_nodes.push_back(e.nodes.front());
     element_nodes.push_back(e.nodes.back());
   }
-  write_block_dataset<std::int64_t>(
-      s.file, {"/mesh/element_ids", static_cast<std::int64_t>(n_elements), 1}, eb, element_ids);
-  write_block_dataset<std::int64_t>(
-      s.file, {"/mesh/element_nodes", static_cast<std::int64_t>(n_elements), 2}, eb, element_nodes);
+  write_mesh(layout::element_ids, n_elements, 1, eb, element_ids);
+  write_mesh(layout::element_nodes, n_elements, layout::nodes_per_element, eb, element_nodes);
 
   if (s.has_constraints) {
     const RowBlock& cb = s.constraints.block();
@@ -270,32 +317,23 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
       ends.push_back(c.node_a);
       ends.push_back(c.node_b);
     }
-    write_block_dataset<std::int64_t>(
-        s.file,
-        {"/mesh/constraint_nodes", static_cast<std::int64_t>(model.constraints.size()), 2},
-        cb, ends);
+    write_mesh(layout::constraint_nodes, static_cast<std::int64_t>(model.constraints.size()), 2, cb,
+               ends);
   }
 
-  if (s.has_constraints)
-    s.constraint_forces =
-        Series(s.file, "/samples/constraint_forces",
-               {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, "N");
   if (s.n_contacts > 0) {
-    s.contact_force = Series(s.file, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
-    s.contact_position =
-        Series(s.file, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, "m");
-    s.step_contact_force =
-        Series(s.file, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, "N");
-    create_group(s.file, "/pantographs");
+    create_group(s.file, layout::pantographs_group);
     for (size_t i = 0; i < model.contacts.size(); ++i) {
-      const std::string name = "/pantographs/" + model.contacts[i].name;
+      const std::string name =
+          std::string(layout::pantographs_group) + "/" + model.contacts[i].name;
       const GroupHandle group = create_group(s.file, name.c_str());
       run_output_phase(s.comm, [&] {
+        namespace attribute = layout::pantograph_attribute;
         const AttributeTarget target{group.get(), p};
-        write_int64_attribute(target, "index", static_cast<std::int64_t>(i));
-        write_double_attribute(target, "speed", model.contacts[i].speed);
-        write_double_attribute(target, "start", model.contacts[i].start);
-        write_string_attribute(target, "path",
+        write_int64_attribute(target, attribute::index, static_cast<std::int64_t>(i));
+        write_double_attribute(target, attribute::speed, model.contacts[i].speed);
+        write_double_attribute(target, attribute::start, model.contacts[i].start);
+        write_string_attribute(target, attribute::path,
                                model.paths[static_cast<size_t>(model.contacts[i].path)].name);
       });
     }
@@ -305,33 +343,26 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     std::vector<std::int64_t> reg;
     const RowBlock rb{0, s.rank == 0 ? n_reg : 0};
     if (s.rank == 0) reg.assign(model.registration_nodes.begin(), model.registration_nodes.end());
-    write_block_dataset<std::int64_t>(s.file, {"/mesh/registration_nodes", n_reg, 1}, rb, reg);
+    write_mesh(layout::registration_nodes, n_reg, 1, rb, reg);
   }
-  s.time = Series(s.file, "/time", {}, H5T_IEEE_F64LE, "s");
-  s.positions = Series(s.file, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, "m");
-  s.velocities = Series(s.file, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, "m/s");
-  s.slopes = Series(s.file, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, "1");
-  s.axial = Series(s.file, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, "N");
-  s.step_time = Series(s.file, "/steps/time", {}, H5T_IEEE_F64LE, "s");
-  s.step_dt = Series(s.file, "/steps/dt", {}, H5T_IEEE_F64LE, "s");
-  s.step_iterations = Series(s.file, "/steps/newton_iterations", {}, H5T_STD_I32LE, nullptr);
-  s.step_error = Series(s.file, "/steps/error", {}, H5T_IEEE_F64LE, "1");
-  s.step_rejected = Series(s.file, "/steps/rejected", {}, H5T_STD_I32LE, nullptr);
+  s.open_series(model, nullptr);
 
   run_output_phase(s.comm, [&] {
+    namespace attribute = layout::root_attribute;
     const AttributeTarget root{f, p};
-    write_string_attribute(root, "scene", model.source_text);
-    write_string_attribute(root, "scene_file", model.source_file);
-    write_string_attribute(root, "code_version", info.code_version);
-    write_string_attribute(root, "command_line", info.command_line);
-    write_string_attribute(root, "run_id", info.run_id);
-    write_string_attribute(root, "petsc_options", info.petsc_options);
-    write_int64_attribute(root, "n_ranks", info.n_ranks);
-    write_int64_attribute(root, "n_dofs", info.n_dofs);
-    write_string_attribute(root, "analysis", "dynamic");
-    write_string_attribute(root, "status", "running");
-    write_double_attribute(root, "evaluation_start", model.evaluation_start);
-    write_double_attribute(root, "evaluation_end", model.evaluation_end);
+    write_string_attribute(root, attribute::format, layout::format);
+    write_string_attribute(root, attribute::scene_text, model.source_text);
+    write_string_attribute(root, attribute::scene_file, model.source_file);
+    write_string_attribute(root, attribute::code_version, info.code_version);
+    write_string_attribute(root, attribute::command_line, info.command_line);
+    write_string_attribute(root, attribute::run_id, info.run_id);
+    write_string_attribute(root, attribute::petsc_options, info.petsc_options);
+    write_int64_attribute(root, attribute::n_ranks, info.n_ranks);
+    write_int64_attribute(root, attribute::n_dofs, info.n_dofs);
+    write_string_attribute(root, attribute::analysis, layout::analysis_dynamic);
+    write_string_attribute(root, attribute::status, layout::status_running);
+    write_double_attribute(root, attribute::evaluation_start, model.evaluation_start);
+    write_double_attribute(root, attribute::evaluation_end, model.evaluation_end);
   });
   flush();
 }
@@ -343,35 +374,12 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
                                    owned_constraints, true)) {
   Impl& s = *impl_;
   const hid_t f = s.file.id();
-  const auto n_nodes = static_cast<hsize_t>(model.nodes.size());
-  const auto n_elements = static_cast<hsize_t>(model.elements.size());
-  const auto samples = static_cast<hsize_t>(resume.samples);
-  const auto steps = static_cast<hsize_t>(resume.steps);
-  if (s.has_constraints)
-    s.constraint_forces =
-        Series(s.file, "/samples/constraint_forces",
-               {static_cast<hsize_t>(model.constraints.size()), 3}, H5T_IEEE_F64LE, samples);
-  if (s.n_contacts > 0) {
-    s.contact_force =
-        Series(s.file, "/samples/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, samples);
-    s.contact_position =
-        Series(s.file, "/samples/contact_position", {s.n_contacts}, H5T_IEEE_F64LE, samples);
-    s.step_contact_force =
-        Series(s.file, "/steps/contact_force", {s.n_contacts}, H5T_IEEE_F64LE, steps);
-  }
-  s.time = Series(s.file, "/time", {}, H5T_IEEE_F64LE, samples);
-  s.positions = Series(s.file, "/samples/positions", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.velocities = Series(s.file, "/samples/velocities", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.slopes = Series(s.file, "/samples/slopes", {n_nodes, 3}, H5T_IEEE_F64LE, samples);
-  s.axial = Series(s.file, "/samples/axial_force", {n_elements}, H5T_IEEE_F64LE, samples);
-  s.step_time = Series(s.file, "/steps/time", {}, H5T_IEEE_F64LE, steps);
-  s.step_dt = Series(s.file, "/steps/dt", {}, H5T_IEEE_F64LE, steps);
-  s.step_iterations = Series(s.file, "/steps/newton_iterations", {}, H5T_STD_I32LE, steps);
-  s.step_error = Series(s.file, "/steps/error", {}, H5T_IEEE_F64LE, steps);
-  s.step_rejected = Series(s.file, "/steps/rejected", {}, H5T_STD_I32LE, steps);
+  run_collective_phase(s.comm, [&] { layout::require_transient_format(f, s.path); });
+  s.open_series(model, &resume);
   run_output_phase(s.comm, [&] {
-    check_hdf5_status(H5Adelete(f, "status"), "H5Adelete", s.path, "status");
-    write_string_attribute({f, s.path}, "status", "running");
+    const char* status = layout::root_attribute::status;
+    check_hdf5_status(H5Adelete(f, status), "H5Adelete", s.path, status);
+    write_string_attribute({f, s.path}, status, layout::status_running);
   });
   flush();
 }
@@ -488,8 +496,9 @@ void TransientWriter::close(const std::string& status,
   attempt([&] {
     run_output_phase(s.comm, [&] {
       const AttributeTarget root{s.file.id(), s.path};
-      check_hdf5_status(H5Adelete(s.file.id(), "status"), "H5Adelete", s.path, "status");
-      write_string_attribute(root, "status", recorded_status);
+      const char* status_name = layout::root_attribute::status;
+      check_hdf5_status(H5Adelete(s.file.id(), status_name), "H5Adelete", s.path, status_name);
+      write_string_attribute(root, status_name, recorded_status);
       for (const auto& [name, value] : statistics) {
         // A restarted run replaces its predecessor's statistics (they describe the last run).
         if (H5Aexists(s.file.id(), name.c_str()) > 0)

@@ -97,31 +97,31 @@ class TransientXdmfText {
          << "        <Time Value=\"" << time_text(t) << "\"/>\n"
          << "        <Topology TopologyType=\"Polyline\" NodesPerElement=\""
          << layout::nodes_per_element << "\" NumberOfElements=\"" << n_elements << "\">\n";
-    data_item(10, layout::element_nodes, {n_elements, layout::nodes_per_element}, int64);
+    data_item(10, layout::element_nodes.path, {n_elements, layout::nodes_per_element}, int64);
     xml_ << "        </Topology>\n"
          << "        <Geometry GeometryType=\"XYZ\">\n";
     // ParaView's XDMF Reader keys its geometry cache on the content of the first child node
     // of the Geometry's first DataItem: here the comment. With no content there (an
     // element) it logs an error at every time step; with the same content in every grid it
     // could reuse sample 0's points at every time. "sample k" differs per grid.
-    sample_slab(10, layout::positions, {n_nodes, 3}, k, "sample " + std::to_string(k));
+    sample_slab(10, layout::positions.path, {n_nodes, 3}, k, "sample " + std::to_string(k));
     xml_ << "        </Geometry>\n";
 
     begin_attribute("displacement", "Vector", "Node");
     xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
          << dimensions_text({n_nodes, 3}) << "\">\n";
-    sample_slab(12, layout::positions, {n_nodes, 3}, k);
-    data_item(12, layout::node_positions, {n_nodes, 3}, float64);
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
+    data_item(12, layout::node_positions.path, {n_nodes, 3}, float64);
     xml_ << indent(10) << "</DataItem>\n";
     end_attribute();
-    sampled_attribute("velocities", "Vector", "Node", layout::velocities, {n_nodes, 3}, k);
-    sampled_attribute("slopes", "Vector", "Node", layout::slopes, {n_nodes, 3}, k);
-    sampled_attribute("axial_force", "Scalar", "Cell", layout::axial_force, {n_elements}, k);
+    sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
+    sampled_attribute("slopes", "Vector", "Node", layout::slopes.path, {n_nodes, 3}, k);
+    sampled_attribute("axial_force", "Scalar", "Cell", layout::axial_force.path, {n_elements}, k);
     begin_attribute("node_ids", "Scalar", "Node");
-    data_item(10, layout::node_ids, {n_nodes}, int64);
+    data_item(10, layout::node_ids.path, {n_nodes}, int64);
     end_attribute();
     begin_attribute("element_ids", "Scalar", "Cell");
-    data_item(10, layout::element_ids, {n_elements}, int64);
+    data_item(10, layout::element_ids.path, {n_elements}, int64);
     end_attribute();
     xml_ << "      </Grid>\n";
   }
@@ -189,9 +189,12 @@ struct ExpectedDataset {
   StoredNumber number;
 };
 
-FileHandle open_for_reading(const std::string& path) {
-  return FileHandle(
+// Opens the time series for reading; throws unless it has this layout's format.
+FileHandle open_time_series(const std::string& path) {
+  FileHandle file(
       checked_hdf5_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "H5Fopen", path));
+  layout::require_transient_format(file.get(), path);
+  return file;
 }
 
 std::vector<std::int64_t> dataset_dimensions(hid_t dataset, const std::string& path,
@@ -207,18 +210,18 @@ std::vector<std::int64_t> dataset_dimensions(hid_t dataset, const std::string& p
 
 // Throws unless every dataset the XDMF refers to exists with the announced shape and type.
 void check_datasets(const std::string& path, const SeriesShape& shape) {
-  const FileHandle file = open_for_reading(path);
+  const FileHandle file = open_time_series(path);
   const std::int64_t s = shape.n_samples, n = shape.n_nodes, e = shape.n_elements;
   const std::vector<ExpectedDataset> expected{
-      {layout::time, {s}, float64},
-      {layout::node_ids, {n}, int64},
-      {layout::node_positions, {n, 3}, float64},
-      {layout::element_ids, {e}, int64},
-      {layout::element_nodes, {e, layout::nodes_per_element}, int64},
-      {layout::positions, {s, n, 3}, float64},
-      {layout::velocities, {s, n, 3}, float64},
-      {layout::slopes, {s, n, 3}, float64},
-      {layout::axial_force, {s, e}, float64},
+      {layout::time.path, {s}, float64},
+      {layout::node_ids.path, {n}, int64},
+      {layout::node_positions.path, {n, 3}, float64},
+      {layout::element_ids.path, {e}, int64},
+      {layout::element_nodes.path, {e, layout::nodes_per_element}, int64},
+      {layout::positions.path, {s, n, 3}, float64},
+      {layout::velocities.path, {s, n, 3}, float64},
+      {layout::slopes.path, {s, n, 3}, float64},
+      {layout::axial_force.path, {s, e}, float64},
   };
   for (const ExpectedDataset& dataset : expected) {
     const DatasetHandle handle(checked_hdf5_id(H5Dopen2(file.get(), dataset.name, H5P_DEFAULT),
@@ -257,19 +260,19 @@ std::string transient_xdmf_path(const std::string& hdf5_path) {
 
 std::vector<double> read_sample_times(const std::string& hdf5_path) {
   const Hdf5ErrorPrintingSuppressed quiet_hdf5;
-  const FileHandle file = open_for_reading(hdf5_path);
-  const DatasetHandle dataset(checked_hdf5_id(H5Dopen2(file.get(), layout::time, H5P_DEFAULT),
-                                              "H5Dopen2", hdf5_path, layout::time));
-  const std::vector<std::int64_t> dimensions =
-      dataset_dimensions(dataset.get(), hdf5_path, layout::time);
+  const FileHandle file = open_time_series(hdf5_path);
+  const char* time = layout::time.path;
+  const DatasetHandle dataset(
+      checked_hdf5_id(H5Dopen2(file.get(), time, H5P_DEFAULT), "H5Dopen2", hdf5_path, time));
+  const std::vector<std::int64_t> dimensions = dataset_dimensions(dataset.get(), hdf5_path, time);
   if (dimensions.size() != 1)
-    throw Error("'" + hdf5_path + "' at " + layout::time + ": shape (" +
-                dimensions_text(dimensions) + "), expected one dimension");
+    throw Error("'" + hdf5_path + "' at " + time + ": shape (" + dimensions_text(dimensions) +
+                "), expected one dimension");
   std::vector<double> times(static_cast<std::size_t>(dimensions[0]));
   if (!times.empty())
     check_hdf5_status(
         H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()),
-        "H5Dread", hdf5_path, layout::time);
+        "H5Dread", hdf5_path, time);
   return times;
 }
 

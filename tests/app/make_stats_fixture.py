@@ -4,7 +4,7 @@
 The layout is the one of docs/output.md ("Contact forces and pantographs"): /time,
 /samples/contact_force and /samples/contact_position (n_samples x n_pantographs), a group
 per pantograph under /pantographs (attributes index, speed), /mesh/registration_nodes,
-/mesh/node_positions, /samples/positions, root attributes analysis, status,
+/mesh/node_positions, /samples/positions, root attributes format, analysis, status,
 evaluation_start, evaluation_end.
 
 stats_run.h5: 5 s at 1 kHz, two pantographs on a straight line from x = 0:
@@ -16,7 +16,9 @@ stats_run.h5: 5 s at 1 kHz, two pantographs on a straight line from x = 0:
   evaluation section [100, 300] m.
 The variants, each breaking one thing: stats_running.h5 (status "running"),
 stats_no_section.h5 (no evaluation section), stats_coarse.h5 (100 Hz sampling),
-stats_static.h5 (a static result), stats_no_pantographs.h5 (no contact datasets).
+stats_static.h5 (a static result), stats_no_pantographs.h5 (no contact datasets),
+stats_old_format.h5 (no format attribute: an older Catena's), stats_other_format.h5
+(format "catena-transient-0").
 Usage: make_stats_fixture.py OUTDIR
 """
 import os
@@ -42,7 +44,11 @@ def signals(t):
     return x, np.column_stack([lead, trail])
 
 
-def write(path, dt=DT, status="complete", section=SECTION, static=False, contact=True):
+FORMAT = "catena-transient-1"
+
+
+def write(path, dt=DT, status="complete", section=SECTION, static=False, contact=True,
+          file_format=FORMAT):
     t = np.arange(0, round(DURATION / dt) + 1) * dt
     x, force = signals(t)
     reference = np.zeros((len(REGISTRATION_X) + 3, 3))
@@ -58,6 +64,8 @@ def write(path, dt=DT, status="complete", section=SECTION, static=False, contact
             f.attrs["format"] = "catena-static-1"
             f["mesh/node_positions"] = reference
             return
+        if file_format is not None:
+            f.attrs["format"] = file_format
         f.attrs["analysis"] = "dynamic"
         f.attrs["status"] = status
         if section is not None:
@@ -84,6 +92,8 @@ def main():
     write(os.path.join(out, "stats_coarse.h5"), dt=0.01)
     write(os.path.join(out, "stats_static.h5"), static=True)
     write(os.path.join(out, "stats_no_pantographs.h5"), contact=False)
+    write(os.path.join(out, "stats_old_format.h5"), file_format=None)
+    write(os.path.join(out, "stats_other_format.h5"), file_format="catena-transient-0")
 
 
 if __name__ == "__main__":

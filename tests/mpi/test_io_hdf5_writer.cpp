@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <mpi.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -23,6 +22,8 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/hdf5_writer.hpp"
+#include "hdf5_id.hpp"
+#include "test_directory.hpp"
 
 namespace {
 
@@ -30,6 +31,8 @@ namespace fs = std::filesystem;
 using catena::io::RunInfo;
 using catena::io::StaticResult;
 using catena::model::Model;
+using catena::test::directory_listing;
+using catena::test::OpenId;
 
 int comm_rank() {
   int rank = 0;
@@ -164,21 +167,6 @@ RunInfo run_info() {
 }
 
 // ---- Serial reading on rank 0. ----
-
-// Any HDF5 identifier, released on scope exit (H5Idec_ref closes whatever kind it is).
-class OpenId {
- public:
-  explicit OpenId(hid_t id) : id_(id) {}
-  ~OpenId() {
-    if (id_ >= 0) H5Idec_ref(id_);
-  }
-  OpenId(const OpenId&) = delete;
-  OpenId& operator=(const OpenId&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-};
 
 template <class Value>
 struct Dataset {
@@ -413,37 +401,16 @@ void check_xdmf(const fs::path& xdmf_path, const fs::path& hdf5_path) {
     EXPECT_EQ(dimensions_of.count(required), 1u) << required;
 }
 
-std::vector<std::string> directory_listing(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 // ---- Fixture: a fresh directory per test, shared by all ranks. ----
 
 class Hdf5WriterTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    long long root_pid = ::getpid();
-    MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-    root_pid_ = root_pid;
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ =
-        fs::temp_directory_path() / ("catena_test_io_" + std::string(test->name()) + "_np" +
-                                     std::to_string(comm_size()) + "_" + std::to_string(root_pid));
-    if (comm_rank() == 0) {
-      fs::remove_all(directory_);
-      fs::create_directories(directory_);
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
+    root_pid_ = catena::test::root_process_id();
+    directory_ = catena::test::fresh_test_directory("catena_test_io");
   }
 
-  void TearDown() override {
-    MPI_Barrier(MPI_COMM_WORLD);
-    if (comm_rank() == 0) fs::remove_all(directory_);
-  }
+  void TearDown() override { catena::test::remove_test_directory(directory_); }
 
   fs::path temporary_name(const fs::path& target) const {
     fs::path name = target;

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <mpi.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -30,11 +29,13 @@
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/write_fault_injection.hpp"
 #include "model_builders.hpp"
+#include "test_directory.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using catena::io::WriteFault;
+using catena::test::directory_listing;
 
 int comm_rank() { return catena::mpi_rank(MPI_COMM_WORLD); }
 int comm_size() { return catena::mpi_size(MPI_COMM_WORLD); }
@@ -117,36 +118,17 @@ std::string root_string_attribute(const fs::path& path, const char* name) {
   return value;
 }
 
-std::vector<std::string> directory_listing(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 // A fresh directory per test, shared by all ranks; no fault armed before or after.
 class WriteFailureTest : public ::testing::Test {
  protected:
   void SetUp() override {
     catena::io::set_write_fault(std::nullopt);
-    long long root_pid = ::getpid();
-    MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("catena_test_write_failures_" + std::string(test->name()) + "_np" +
-                  std::to_string(comm_size()) + "_" + std::to_string(root_pid));
-    if (comm_rank() == 0) {
-      fs::remove_all(directory_);
-      fs::create_directories(directory_);
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
+    directory_ = catena::test::fresh_test_directory("catena_test_write_failures");
   }
 
   void TearDown() override {
     catena::io::set_write_fault(std::nullopt);
-    MPI_Barrier(MPI_COMM_WORLD);
-    if (comm_rank() == 0) fs::remove_all(directory_);
+    catena::test::remove_test_directory(directory_);
   }
 
   static void inject(std::int64_t call, const std::string& at) {

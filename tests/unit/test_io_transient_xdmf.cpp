@@ -20,25 +20,14 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/transient_xdmf.hpp"
+#include "hdf5_id.hpp"
+#include "test_directory.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// Any HDF5 identifier, released on scope exit (H5Idec_ref closes whatever kind it is).
-class OpenId {
- public:
-  explicit OpenId(hid_t id) : id_(id) {}
-  ~OpenId() {
-    if (id_ >= 0) H5Idec_ref(id_);
-  }
-  OpenId(const OpenId&) = delete;
-  OpenId& operator=(const OpenId&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-};
+using catena::test::directory_listing;
+using catena::test::OpenId;
 
 constexpr std::int64_t n_nodes = 4;
 constexpr std::int64_t n_elements = 3;
@@ -75,10 +64,23 @@ void write_dataset(hid_t file, const char* name, const std::vector<hsize_t>& dim
   }
 }
 
-// The layout of docs/output.md with `times` as /time.
-void write_series_file(const fs::path& path, const std::vector<double>& times) {
+// A variable-length string attribute of the root group, as the writer stores them.
+void write_root_string(hid_t file, const char* name, const char* value) {
+  const OpenId type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  const OpenId space(H5Screate(H5S_SCALAR));
+  const OpenId attribute(H5Acreate2(file, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  ASSERT_GE(attribute.get(), 0) << name;
+  ASSERT_GE(H5Awrite(attribute.get(), type.get(), &value), 0) << name;
+}
+
+// The layout of docs/output.md with `times` as /time; root attribute format = `format`
+// (none if null).
+void write_series_file(const fs::path& path, const std::vector<double>& times,
+                       const char* format = "catena-transient-1") {
   const OpenId file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   ASSERT_GE(file.get(), 0) << path;
+  if (format != nullptr) write_root_string(file.get(), "format", format);
   const auto s = static_cast<hsize_t>(times.size());
   const auto n = static_cast<hsize_t>(n_nodes), e = static_cast<hsize_t>(n_elements);
   write_dataset<std::int64_t>(file.get(), "/mesh/node_ids", {n}, H5T_STD_I64LE, false);
@@ -130,14 +132,6 @@ std::vector<std::int64_t> dataset_dims(hid_t file, const std::string& dataset) {
   std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space.get())));
   H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
   return {dims.begin(), dims.end()};
-}
-
-std::vector<std::string> directory_listing(const fs::path& directory) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(directory))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 // Every DataItem pointing into the HDF5 file: the base name, an existing dataset, its shape.
@@ -342,6 +336,28 @@ TEST_F(TransientXdmfTest, RefusesShapesThatDoNotMatchTheFile) {
                                          n_elements, sample_times);
       },
       {"H5Fopen", "missing.h5"}, only_h5);
+}
+
+// A file of another format (another version, or a static result) or of none is refused by
+// both functions, naming the file, the format found and the one expected.
+TEST_F(TransientXdmfTest, RefusesAFileOfAnotherFormat) {
+  const fs::path h5 = directory_ / "other.h5";
+  const std::string xmf = (directory_ / "other.xmf").string();
+  for (const char* format : {"catena-transient-0", "catena-static-1"}) {
+    write_series_file(h5, sample_times, format);
+    const std::string found = std::string("format '") + format + "'";
+    expect_refused(directory_, [&] { catena::io::read_sample_times(h5.string()); },
+                   {"other.h5", found, "expected 'catena-transient-1'"}, {"other.h5"});
+    expect_refused(directory_,
+                   [&] {
+                     catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements,
+                                                      sample_times);
+                   },
+                   {"other.xmf", "other.h5", found, "expected 'catena-transient-1'"}, {"other.h5"});
+  }
+  write_series_file(h5, sample_times, nullptr);
+  expect_refused(directory_, [&] { catena::io::read_sample_times(h5.string()); },
+                 {"other.h5", "'format': missing", "expected 'catena-transient-1'"}, {"other.h5"});
 }
 
 TEST_F(TransientXdmfTest, RefusesAnXdmfOutsideTheHdf5Directory) {

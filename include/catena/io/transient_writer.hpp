@@ -8,7 +8,9 @@
 // step), with pantographs /samples/contact_force and /samples/contact_position
 // (n_samples × n_pantographs), /steps/contact_force (n_steps × n_pantographs), a group
 // /pantographs/<name> each (attributes index, speed), /mesh/registration_nodes and root
-// attributes evaluation_start/end, and root attributes (scene text, run facts, `status`).
+// attributes evaluation_start/end, and root attributes (`format` = "catena-transient-1",
+// `scene_text`, run facts, `status`). Every name is defined once, in
+// src/io/transient_layout.hpp.
 //
 // The file is written in place (not atomically) so that a long run's results up to the
 // last flush() are readable after a crash: flush() writes the buffered step rows and
@@ -65,7 +67,8 @@ class TransientWriter {
                   std::vector<int> owned_elements, std::vector<int> owned_constraints = {});
   // Collective. Reopens `path`, written by an earlier run of the same model, and continues
   // it at `resume` (status back to "running"). Throws catena::Error naming the file if it
-  // does not have the layout above, or fewer rows than `resume`.
+  // does not have the layout above (another `format`, or none: the format found and the
+  // one expected), or fewer rows than `resume`.
   TransientWriter(MPI_Comm comm, const std::string& path, const model::Model& model,
                   std::vector<int> owned_nodes, std::vector<int> owned_elements,
                   std::vector<int> owned_constraints, const ResumePoint& resume);

@@ -25,7 +25,9 @@ namespace catena::io {
 std::string transient_xdmf_path(const std::string& hdf5_path);
 
 // Not collective. The sample times /time [s] of a closed time-series file.
-// Throws catena::Error naming the file and the failing HDF5 call.
+// Throws catena::Error naming the file and the failing HDF5 call, or catena::InputError
+// naming the file if its root attribute `format` is not "catena-transient-1" (the format
+// found and the one expected).
 std::vector<double> read_sample_times(const std::string& hdf5_path);
 
 // Not collective. Writes `xdmf_path` atomically (a temporary sibling renamed into place, so
@@ -34,7 +36,8 @@ std::vector<double> read_sample_times(const std::string& hdf5_path);
 // one: a file without samples gets no XDMF, and the call throws).
 // `xdmf_path` must be in the same directory as `hdf5_path` and differ from it. The
 // datasets' shapes and types are checked against n_nodes, n_elements and times.size()
-// first, so the XDMF never selects outside them. Throws catena::Error naming the files.
+// first (and the file's format, as read_sample_times does), so the XDMF never selects
+// outside them. Throws catena::Error naming the files.
 void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_path,
                           std::int64_t n_nodes, std::int64_t n_elements,
                           const std::vector<double>& times);

@@ -1,69 +1,38 @@
-#include "contact_run_reader.hpp"
+#include "catena/io/contact_run_reader.hpp"
 
 #include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <type_traits>
 #include <utility>
 
 #include "catena/core/error.hpp"
+#include "hdf5_attributes.hpp"
+#include "hdf5_error.hpp"
+#include "hdf5_handles.hpp"
+#include "transient_layout.hpp"
 
-namespace catena::app {
+namespace catena::io {
 namespace {
 
-// Names in the time-series file (docs/output.md); the writer is src/io/transient_writer.cpp.
-constexpr const char* time_name = "/time";
-constexpr const char* contact_force_name = "/samples/contact_force";
-constexpr const char* contact_position_name = "/samples/contact_position";
-constexpr const char* positions_name = "/samples/positions";
-constexpr const char* pantographs_name = "/pantographs";
-constexpr const char* node_positions_name = "/mesh/node_positions";
-constexpr const char* registration_nodes_name = "/mesh/registration_nodes";
+namespace layout = transient_layout;
+constexpr const char* time_name = layout::time.path;
+constexpr const char* contact_force_name = layout::contact_force.path;
+constexpr const char* contact_position_name = layout::contact_position.path;
+constexpr const char* positions_name = layout::positions.path;
+constexpr const char* pantographs_name = layout::pantographs_group;
+constexpr const char* node_positions_name = layout::node_positions.path;
+constexpr const char* registration_nodes_name = layout::registration_nodes.path;
+namespace root_attribute = layout::root_attribute;
+namespace pantograph_attribute = layout::pantograph_attribute;
 
 // Relative tolerance on the spacing of /time (dense output at k × output.interval).
 constexpr double sampling_tolerance = 1e-6;
-
-template <herr_t (*Close)(hid_t)>
-class Handle {
- public:
-  explicit Handle(hid_t id) : id_(id) {}
-  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() {
-    if (id_ >= 0) Close(id_);
-  }
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-};
-using File = Handle<&H5Fclose>;
-using Group = Handle<&H5Gclose>;
-using Dataset = Handle<&H5Dclose>;
-using Dataspace = Handle<&H5Sclose>;
-using Datatype = Handle<&H5Tclose>;
-using Attribute = Handle<&H5Aclose>;
-
-// HDF5 prints its error stack to stderr by default; failures here become one InputError.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &handler_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, handler_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t handler_ = nullptr;
-  void* data_ = nullptr;
-};
 
 class Reader {
  public:
@@ -89,33 +58,22 @@ class Reader {
   hid_t root() const { return file_.get(); }
 
   std::string text_attribute(hid_t object, const char* name, const std::string& where) const {
-    const Attribute a(H5Aopen(object, name, H5P_DEFAULT));
-    if (a.get() < 0) fail(where, std::string("cannot open attribute ") + name);
-    const Datatype type(H5Aget_type(a.get()));
-    if (H5Tget_class(type.get()) != H5T_STRING)
-      fail(where, std::string("attribute ") + name + " is not a string");
-    std::string out;
-    if (H5Tis_variable_str(type.get()) > 0) {
-      char* value = nullptr;
-      if (H5Aread(a.get(), type.get(), &value) < 0)
-        fail(where, std::string("cannot read attribute ") + name);
-      out = value ? value : "";
-      H5free_memory(value);
-    } else {
-      std::string buffer(H5Tget_size(type.get()), '\0');
-      if (H5Aread(a.get(), type.get(), buffer.data()) < 0)
-        fail(where, std::string("cannot read attribute ") + name);
-      out = buffer.substr(0, buffer.find('\0'));
+    std::optional<std::string> value;
+    try {
+      value = read_string_attribute({object, path_}, name);
+    } catch (const Error& e) {
+      fail(where, e.what());
     }
-    return out;
+    if (!value) fail(where, std::string("cannot open attribute ") + name);
+    return *value;
   }
 
   template <class T>
   T number_attribute(hid_t object, const char* name, const std::string& where) const {
-    const Attribute a(H5Aopen(object, name, H5P_DEFAULT));
+    const AttributeHandle a(H5Aopen(object, name, H5P_DEFAULT));
     if (a.get() < 0) fail(where, std::string("cannot open attribute ") + name);
-    const Dataspace space(H5Aget_space(a.get()));
-    const Datatype type(H5Aget_type(a.get()));
+    const DataspaceHandle space(H5Aget_space(a.get()));
+    const DatatypeHandle type(H5Aget_type(a.get()));
     const H5T_class_t cls = H5Tget_class(type.get());
     if (H5Sget_simple_extent_npoints(space.get()) != 1 || (cls != H5T_INTEGER && cls != H5T_FLOAT))
       fail(where, std::string("attribute ") + name + " is not a single number");
@@ -127,8 +85,8 @@ class Reader {
   }
 
   std::vector<hsize_t> dims(const char* name) const {
-    const Dataset d = open_dataset(name);
-    const Dataspace space(H5Dget_space(d.get()));
+    const DatasetHandle d = open_dataset(name);
+    const DataspaceHandle space(H5Dget_space(d.get()));
     const int rank = H5Sget_simple_extent_ndims(space.get());
     if (rank < 0) fail(name, "cannot read the dataset's shape");
     std::vector<hsize_t> out(static_cast<std::size_t>(rank));
@@ -148,8 +106,8 @@ class Reader {
   // out[k * nodes.size() + j] is z of nodes[j] at sample k (HDF5 maps a union selection in
   // the file's row-major order).
   std::vector<double> node_heights(const std::vector<hsize_t>& nodes, hsize_t n_samples) const {
-    const Dataset d = open_dataset(positions_name);
-    const Dataspace file_space(H5Dget_space(d.get()));
+    const DatasetHandle d = open_dataset(positions_name);
+    const DataspaceHandle file_space(H5Dget_space(d.get()));
     H5Sselect_none(file_space.get());
     for (hsize_t node : nodes) {
       const hsize_t start[3] = {0, node, 2};
@@ -158,7 +116,7 @@ class Reader {
         fail(positions_name, "cannot select the registration nodes");
     }
     const hsize_t memory_dims[2] = {n_samples, nodes.size()};
-    const Dataspace memory_space(H5Screate_simple(2, memory_dims, nullptr));
+    const DataspaceHandle memory_space(H5Screate_simple(2, memory_dims, nullptr));
     std::vector<double> out(n_samples * nodes.size());
     if (!out.empty() && H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(),
                                 H5P_DEFAULT, out.data()) < 0)
@@ -166,8 +124,8 @@ class Reader {
     return out;
   }
 
-  Group open_group(const char* name) const {
-    Group g(H5Gopen2(file_.get(), name, H5P_DEFAULT));
+  GroupHandle open_group(const char* name) const {
+    GroupHandle g(H5Gopen2(file_.get(), name, H5P_DEFAULT));
     if (g.get() < 0) fail(name, "not a group");
     return g;
   }
@@ -185,8 +143,8 @@ class Reader {
     return id;
   }
 
-  Dataset open_dataset(const char* name) const {
-    Dataset d(H5Dopen2(file_.get(), name, H5P_DEFAULT));
+  DatasetHandle open_dataset(const char* name) const {
+    DatasetHandle d(H5Dopen2(file_.get(), name, H5P_DEFAULT));
     if (d.get() < 0) fail(name, "cannot open the dataset");
     return d;
   }
@@ -194,8 +152,8 @@ class Reader {
   template <class T>
   std::vector<T> read(const char* name, const std::vector<hsize_t>& shape, H5T_class_t kind,
                       hid_t memory_type) const {
-    const Dataset d = open_dataset(name);
-    const Datatype type(H5Dget_type(d.get()));
+    const DatasetHandle d = open_dataset(name);
+    const DatatypeHandle type(H5Dget_type(d.get()));
     const H5T_class_t cls = H5Tget_class(type.get());
     if (cls != kind && !(kind == H5T_FLOAT && cls == H5T_INTEGER))
       fail(name, kind == H5T_FLOAT ? "not a numeric dataset" : "not an integer dataset");
@@ -219,24 +177,24 @@ class Reader {
   }
 
   std::string path_;
-  File file_;
+  FileHandle file_;
 };
 
+// After the format check (a time series of this format), which analysis and status.
 void check_is_complete_dynamic_output(const Reader& r) {
   const std::string not_dynamic = "not a Catena dynamic output";
-  if (!r.has_attribute(r.root(), "analysis")) {
-    if (r.has_attribute(r.root(), "format"))
-      r.fail("", not_dynamic + " (format '" + r.text_attribute(r.root(), "format", "format") +
-                     "', no root attribute analysis = \"dynamic\")");
+  const char* analysis_name = root_attribute::analysis;
+  if (!r.has_attribute(r.root(), analysis_name))
     r.fail("", not_dynamic + " (no root attribute analysis = \"dynamic\")");
-  }
-  const std::string analysis = r.text_attribute(r.root(), "analysis", "analysis");
-  if (analysis != "dynamic") r.fail("analysis", not_dynamic + " (analysis = '" + analysis + "')");
-  if (!r.has_attribute(r.root(), "status"))
-    r.fail("status", "missing: the file was not written by a complete dynamic run");
-  const std::string status = r.text_attribute(r.root(), "status", "status");
+  const std::string analysis = r.text_attribute(r.root(), analysis_name, analysis_name);
+  if (analysis != layout::analysis_dynamic)
+    r.fail(analysis_name, not_dynamic + " (analysis = '" + analysis + "')");
+  const char* status_name = root_attribute::status;
+  if (!r.has_attribute(r.root(), status_name))
+    r.fail(status_name, "missing: the file was not written by a complete dynamic run");
+  const std::string status = r.text_attribute(r.root(), status_name, status_name);
   if (status != "complete")
-    r.fail("status",
+    r.fail(status_name,
            "the run's status is '" + status + "', not 'complete': statistics need a finished run");
 }
 
@@ -258,16 +216,18 @@ double uniform_interval(const Reader& r, const std::vector<double>& t) {
 
 std::optional<post::EvaluationSection> evaluation_section(const Reader& r) {
   post::EvaluationSection s;
-  if (r.has_attribute(r.root(), "evaluation_start"))
-    s.x_start = r.number_attribute<double>(r.root(), "evaluation_start", "evaluation_start");
-  if (r.has_attribute(r.root(), "evaluation_end"))
-    s.x_end = r.number_attribute<double>(r.root(), "evaluation_end", "evaluation_end");
+  const char* start_name = root_attribute::evaluation_start;
+  const char* end_name = root_attribute::evaluation_end;
+  if (r.has_attribute(r.root(), start_name))
+    s.x_start = r.number_attribute<double>(r.root(), start_name, start_name);
+  if (r.has_attribute(r.root(), end_name))
+    s.x_end = r.number_attribute<double>(r.root(), end_name, end_name);
   if (s.x_start == 0.0 && s.x_end == 0.0) return std::nullopt;
   if (!(s.x_end > s.x_start)) {
     std::ostringstream os;
     os << "evaluation_start " << s.x_start << " m, evaluation_end " << s.x_end
        << " m: the end must lie beyond the start (give --section X0 X1 instead)";
-    r.fail("evaluation_end", os.str());
+    r.fail(end_name, os.str());
   }
   return s;
 }
@@ -276,7 +236,7 @@ std::optional<post::EvaluationSection> evaluation_section(const Reader& r) {
 std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_columns) {
   if (!r.has_link(pantographs_name))
     r.fail(pantographs_name, "missing: the run had no pantographs");
-  const Group group = r.open_group(pantographs_name);
+  const GroupHandle group = r.open_group(pantographs_name);
   H5G_info_t info;
   if (H5Gget_info(group.get(), &info) < 0) r.fail(pantographs_name, "cannot list the group");
   if (info.nlinks == 0) r.fail(pantographs_name, "empty: the run had no pantographs");
@@ -296,11 +256,12 @@ std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_c
                        H5P_DEFAULT);
     name.resize(static_cast<std::size_t>(length));
     const std::string where = std::string(pantographs_name) + "/" + name;
-    const Group g = r.open_group(where.c_str());
-    for (const char* attribute : {"index", "speed"})
+    const GroupHandle g = r.open_group(where.c_str());
+    for (const char* attribute : {pantograph_attribute::index, pantograph_attribute::speed})
       if (!r.has_attribute(g.get(), attribute))
         r.fail(where, std::string("missing attribute ") + attribute);
-    const auto index = r.number_attribute<std::int64_t>(g.get(), "index", where);
+    const auto index =
+        r.number_attribute<std::int64_t>(g.get(), pantograph_attribute::index, where);
     if (index < 0 || static_cast<hsize_t>(index) >= n_columns ||
         seen[static_cast<std::size_t>(index)]) {
       std::ostringstream os;
@@ -311,7 +272,7 @@ std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_c
     const auto column = static_cast<std::size_t>(index);
     seen[column] = true;
     out[column].name = name;
-    out[column].speed = r.number_attribute<double>(g.get(), "speed", where);
+    out[column].speed = r.number_attribute<double>(g.get(), pantograph_attribute::speed, where);
   }
   return out;
 }
@@ -319,8 +280,9 @@ std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_c
 }  // namespace
 
 ContactRun read_contact_run(const std::string& path) {
-  const QuietHdf5 quiet;
+  const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
+  layout::require_transient_format(r.root(), path);
   check_is_complete_dynamic_output(r);
 
   ContactRun run;
@@ -388,4 +350,6 @@ ContactRun read_contact_run(const std::string& path) {
   return run;
 }
 
-}  // namespace catena::app
+const char* contact_run_times_dataset() { return time_name; }
+
+}  // namespace catena::io

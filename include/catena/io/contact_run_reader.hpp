@@ -1,8 +1,8 @@
 #pragma once
-// Reading what `catena stats` needs from a dynamic run's output file (docs/output.md,
-// "Contact forces and pantographs"): the sampling, the pantographs' contact force and
-// position, the evaluation section and the registration points' heights. Serial HDF5
-// (default file access), for one rank.
+// Reading what `catena stats` needs from a dynamic run's time-series file (docs/output.md,
+// "Contact forces and pantographs"; the names: src/io/transient_layout.hpp): the sampling,
+// the pantographs' contact force and position, the evaluation section and the registration
+// points' heights. Serial HDF5 (default file access), for one rank.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,7 +10,7 @@
 
 #include "catena/post/contact_statistics.hpp"
 
-namespace catena::app {
+namespace catena::io {
 
 struct ContactRun {
   std::size_t n_samples = 0;
@@ -23,8 +23,12 @@ struct ContactRun {
 };
 
 // Not collective. Reads `path`; throws catena::InputError naming the file (and the object)
-// if it is missing, not HDF5, not a Catena dynamic output, not complete (status), has no
+// if it is missing, not HDF5, not a Catena time series of this format (root attribute
+// `format`: the one found and the one expected), not complete (status), has no
 // pantographs, is not uniformly sampled or its datasets' shapes disagree.
 ContactRun read_contact_run(const std::string& path);
 
-}  // namespace catena::app
+// Not collective. The dataset ContactRun::dt comes from ("/time"), for messages naming it.
+const char* contact_run_times_dataset();
+
+}  // namespace catena::io
