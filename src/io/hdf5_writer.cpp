@@ -30,6 +30,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
 #include "catena/io/output_error.hpp"
+#include "catena/model/element_kinds.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -120,24 +121,6 @@ std::vector<int> support_rows_of(const std::vector<int>& my_support_nodes,
   return rows;
 }
 
-layout::ElementKind kind_of(const model::ElementProps& props) {
-  struct KindOf {
-    layout::ElementKind operator()(const model::CableProps&) const {
-      return layout::ElementKind::cable;
-    }
-    layout::ElementKind operator()(const model::BeamProps&) const {
-      return layout::ElementKind::beam;
-    }
-    layout::ElementKind operator()(const model::BarProps&) const {
-      return layout::ElementKind::bar;
-    }
-    layout::ElementKind operator()(const model::SpringProps&) const {
-      return layout::ElementKind::spring;
-    }
-  };
-  return std::visit(KindOf{}, props);
-}
-
 // Names of the element sets, sorted, so that the indices in /mesh/element_set do not
 // depend on the order in which the scene lists its lines.
 std::vector<std::string> element_set_names(const model::Model& model) {
@@ -214,12 +197,12 @@ void write_mesh(const WriteContext& context, const RowBlock& node_block,
   run_collective_phase(context.comm, [&] {
     std::vector<std::int8_t> kinds;
     for (std::int64_t k = 0; k < element_block.count; ++k)
-      kinds.push_back(
-          static_cast<std::int8_t>(kind_of(model.elements[row_index(element_block, k)].props)));
+      kinds.push_back(static_cast<std::int8_t>(
+          model::element_kind_code(model.elements[row_index(element_block, k)].props)));
     const DatasetHandle dataset = write_block_dataset<std::int8_t>(
         context.file, {layout::element_kind, n_elements, 1}, element_block, kinds);
     write_string_attribute({dataset.get(), context.file.path()}, "kinds",
-                           layout::element_kind_names);
+                           model::element_kind_names());
   });
   run_collective_phase(context.comm, [&] {
     const std::vector<std::string> set_names = element_set_names(model);

@@ -32,9 +32,8 @@ inline constexpr const char* reaction_moment = "/static/reaction_moment";
 
 inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
 
-// Values of /mesh/element_kind; the attribute "kinds" lists the names in this order.
-enum class ElementKind : std::int8_t { cable = 0, beam = 1, bar = 2, spring = 3 };
-inline constexpr const char* element_kind_names = "cable,beam,bar,spring";
+// Values of /mesh/element_kind: model::element_kind_code; its attribute "kinds" lists the
+// names in code order (model::element_kind_names).
 // Value of /mesh/element_set for an element in no set.
 inline constexpr std::int32_t no_set = -1;
 

@@ -8,17 +8,7 @@
 namespace catena::model {
 
 int element_node_dofs(const ElementProps& props) {
-  return std::visit(
-      [](const auto& p) {
-        using Props = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<Props, BeamProps>)
-          return 12;
-        else if constexpr (std::is_same_v<Props, CableProps>)
-          return 6;
-        else
-          return 3;  // bars and springs act on positions only
-      },
-      props);
+  return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::node_dofs; }, props);
 }
 
 int node_dofs(const Model& model, int node) {

@@ -48,7 +48,6 @@
 // shape functions.
 #include <array>
 #include <span>
-#include <string_view>
 
 #include "catena/core/vec3.hpp"
 #include "catena/elements/element.hpp"
@@ -94,7 +93,6 @@ class AncfBeam final : public Element {
   AncfBeam(const BeamNodeRef& node_a, const BeamNodeRef& node_b, const BeamSection& section,
            const BeamLoads& loads);
 
-  std::string_view kind() const override { return "ancf_beam"; }
   int n_nodes() const override { return kNodes; }
   int dofs_per_node() const override { return kDofsPerNode; }
 

@@ -50,7 +50,6 @@ class AncfCable final : public Element {
   AncfCable(double length, const CableSection& section, const Vec3& gravity,
             const Vec3& distributed_load);
 
-  std::string_view kind() const override { return "ancf_cable"; }
   int n_nodes() const override { return 2; }
   int dofs_per_node() const override { return 6; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;

@@ -11,7 +11,6 @@
 // carries a prefix of the nodal layout [r (3), r_x (3), r_y (3), r_z (3)]; an element uses
 // the first dofs_per_node() of them (3: a point, 6: cable node, 12: beam node).
 #include <span>
-#include <string_view>
 
 namespace catena::elements {
 
@@ -37,7 +36,7 @@ struct LoadPath {
   LoadPath(double prestrain_factor, double load_factor, double release_factor)
       : prestrain(prestrain_factor), loads(load_factor), release(release_factor) {}
   // Prestrain in place, loads scaled by `load_factor` (element tests, load stepping).
-  LoadPath(double load_factor) : loads(load_factor) {}  // NOLINT(google-explicit-constructor)
+  explicit LoadPath(double load_factor) : loads(load_factor) {}
 };
 
 // Local state, node-major. `v` may be empty: then velocities are zero (statics).
@@ -64,7 +63,6 @@ struct SectionResult {
 class Element {
  public:
   virtual ~Element() = default;
-  virtual std::string_view kind() const = 0;
   virtual int n_nodes() const = 0;
   virtual int dofs_per_node() const = 0;
   int n_dofs() const { return n_nodes() * dofs_per_node(); }

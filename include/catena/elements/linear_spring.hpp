@@ -18,7 +18,6 @@ struct SpringSection {
 class LinearSpring final : public Element {
  public:
   LinearSpring(const Vec3& reference_a, const Vec3& reference_b, const SpringSection& section);
-  std::string_view kind() const override { return "spring"; }
   int n_nodes() const override { return 2; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
@@ -34,7 +33,6 @@ class LinearSpring final : public Element {
 class GroundSpring final : public Element {
  public:
   GroundSpring(const Vec3& reference, const SpringSection& section);
-  std::string_view kind() const override { return "ground_spring"; }
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;

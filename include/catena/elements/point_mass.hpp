@@ -11,7 +11,6 @@ namespace catena::elements {
 class PointMass final : public Element {
  public:
   PointMass(double mass, const Vec3& gravity) : mass_(mass), gravity_(gravity) {}
-  std::string_view kind() const override { return "point_mass"; }
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
@@ -27,7 +26,6 @@ class PointMass final : public Element {
 class NodalForce final : public Element {
  public:
   explicit NodalForce(const Vec3& force) : force_(force) {}
-  std::string_view kind() const override { return "nodal_force"; }
   int n_nodes() const override { return 1; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;

@@ -31,7 +31,6 @@ class RayleighDamped final : public Element {
   RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficients c,
                  std::span<const double> q_ref);
 
-  std::string_view kind() const override { return inner_->kind(); }
   int n_nodes() const override { return inner_->n_nodes(); }
   int dofs_per_node() const override { return inner_->dofs_per_node(); }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;

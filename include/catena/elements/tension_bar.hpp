@@ -33,7 +33,6 @@ class TensionBar final : public Element {
   TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity,
              double mesh_length = 0.0);
 
-  std::string_view kind() const override { return "bar"; }
   int n_nodes() const override { return 2; }
   int dofs_per_node() const override { return 3; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;

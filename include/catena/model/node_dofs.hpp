@@ -1,10 +1,9 @@
 #pragma once
 // How many DOFs a node carries. Every node uses a prefix of the nodal layout
 //   [r (3), r_x (3), r_y (3), r_z (3)]        (positions, then ANCF slope vectors)
-// long enough for every element attached to it (elements/element.hpp):
-//   12  a beam attaches             [r, r_x, r_y, r_z]
-//    6  else a cable attaches       [r, r_x]
-//    3  otherwise (only bars, springs, point masses or supports touch it)  [r]
+// long enough for every element attached to it (each kind of element says how long:
+// model.hpp, `node_dofs`): 12 where a beam attaches, else 6 where a cable attaches, else 3
+// (only bars, springs, point masses or supports touch it).
 // Shared by the scene reader (which support components exist), `catena check` and the
 // assembly layer (DofMap).
 #include <vector>

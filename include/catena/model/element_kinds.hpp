@@ -1,0 +1,24 @@
+#pragma once
+// The kinds of element as output files name them: the code of a kind is its index in
+// ElementProps, and the names, comma-separated in that order, come from each properties
+// struct's `kind` (model.hpp). A file carries both, so it stays readable if kinds are added.
+#include <string>
+#include <variant>
+
+#include "catena/model/model.hpp"
+
+namespace catena::model {
+
+// Not collective.
+inline int element_kind_code(const ElementProps& props) { return static_cast<int>(props.index()); }
+
+// Not collective. "cable,beam,bar,spring".
+inline std::string element_kind_names() {
+  return []<class... Props>(std::variant<Props...>*) {
+    std::string names;
+    ((names += (names.empty() ? "" : ","), names += Props::kind), ...);
+    return names;
+  }(static_cast<ElementProps*>(nullptr));
+}
+
+}  // namespace catena::model
