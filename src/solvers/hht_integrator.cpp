@@ -7,11 +7,10 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/algebraic_part.hpp"
-#include "catena/solvers/consistent_acceleration.hpp"
-#include "catena/solvers/hermite_interpolation.hpp"
 #include "catena/solvers/local_newton.hpp"
 #include "catena/solvers/reusable_newton.hpp"
 #include "catena/solvers/round_off_floor.hpp"
+#include "catena/solvers/step_state.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -46,14 +45,14 @@ struct HhtIntegrator::Impl {
   assembly::SecondOrderSystem& system;
   HhtOptions options;
   double beta, gamma;
-  // Current state (start of the next step) and the one before (dense output).
-  double t0 = 0.0, t_prev = 0.0, scale0 = 0.0;
-  VecHandle q0, v0, a0, f0;  // f0 = f(t0, q0, v0)
-  VecHandle q_prev, v_prev, a_prev;
-  // Pending step: built from the unknown a1.
+  // The current state (start of the next step), the one before (dense output) and the
+  // pending step (q1, v1 built from the unknown a1), in the integrator's StepState.
+  StepState& state;
+  double scale0 = 0.0;
+  VecHandle f0;  // f(t0, q0, v0)
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
-  VecHandle q1, v1, a1, f1, residual, error;
+  VecHandle f1, residual, error;
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
@@ -68,26 +67,29 @@ struct HhtIntegrator::Impl {
   std::unique_ptr<ReusableNewton> newton;
   std::unique_ptr<LocalNewton> local;  // null unless options.local_newton
   IntegratorCounters counters;
-  bool pending_valid = false;
 
-  Impl(assembly::SecondOrderSystem& s, const HhtOptions& o)
-      : system(s), options(o), beta(0.25 * (1 - o.alpha) * (1 - o.alpha)), gamma(0.5 - o.alpha) {}
+  Impl(assembly::SecondOrderSystem& s, const HhtOptions& o, StepState& st)
+      : system(s),
+        options(o),
+        beta(0.25 * (1 - o.alpha) * (1 - o.alpha)),
+        gamma(0.5 - o.alpha),
+        state(st) {}
 
   // The a1-independent parts of the Newmark formulas for the step h from (q0, v0, a0):
   // q_known = q0 + h v0 + h²(½ − β) a0,  v_known = v0 + h(1 − γ) a0. Computed once per
   // attempt, so that each residual evaluation makes two vector passes, not seven.
   void start_attempt() {
-    CATENA_PETSC(VecWAXPY(q_known.get(), h, v0.get(), q0.get()));
-    CATENA_PETSC(VecAXPY(q_known.get(), h * h * (0.5 - beta), a0.get()));
-    CATENA_PETSC(VecWAXPY(v_known.get(), h * (1 - gamma), a0.get(), v0.get()));
+    CATENA_PETSC(VecWAXPY(q_known.get(), h, state.v(), state.q()));
+    CATENA_PETSC(VecAXPY(q_known.get(), h * h * (0.5 - beta), state.a()));
+    CATENA_PETSC(VecWAXPY(v_known.get(), h * (1 - gamma), state.a(), state.v()));
   }
 
   // q1, v1 from a1 (Newmark); the multiplier slots of a1 hold λ1 itself.
   void kinematics(Vec a) {
-    CATENA_PETSC(VecWAXPY(q1.get(), h * h * beta, a, q_known.get()));
-    CATENA_PETSC(VecWAXPY(v1.get(), h * gamma, a, v_known.get()));
-    algebraic->take_algebraic(q1.get(), a);
-    algebraic->zero_algebraic(v1.get());
+    CATENA_PETSC(VecWAXPY(state.pending_q(), h * h * beta, a, q_known.get()));
+    CATENA_PETSC(VecWAXPY(state.pending_v(), h * gamma, a, v_known.get()));
+    algebraic->take_algebraic(state.pending_q(), a);
+    algebraic->zero_algebraic(state.pending_v());
   }
 
   // R(a1) = M a1 + (1 + α)(f + Gᵀλ)(t1, q1, v1) − α (f + Gᵀλ)0 in the nodal rows and
@@ -95,7 +97,7 @@ struct HhtIntegrator::Impl {
   // step end, not α-weighted).
   void residual_at(Vec a, Vec r) {
     kinematics(a);
-    system.force({q1.get(), v1.get(), {}, t0 + h}, f1.get(), &scale1);
+    system.force({state.pending_q(), state.pending_v(), {}, state.time() + h}, f1.get(), &scale1);
     CATENA_PETSC(MatMult(mass_product.get(), a, r));
     CATENA_PETSC(VecAXPBYPCZ(r, 1.0 + options.alpha, -options.alpha, 1.0, f1.get(), f0.get()));
     if (algebraic->active()) {
@@ -122,7 +124,7 @@ struct HhtIntegrator::Impl {
   void build_matrix(Vec a, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
       kinematics(a);
-      evaluate_tangent(q1.get(), v1.get(), t0 + h);
+      evaluate_tangent(state.pending_q(), state.pending_v(), state.time() + h);
       ++counters.jacobian_evaluations;
       if (local) local->tangent_refreshed();
     }
@@ -140,27 +142,27 @@ struct HhtIntegrator::Impl {
   }
 };
 
-HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options) {
+HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options)
+    : StepStateIntegrator(system) {
   if (!(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
     throw InputError({"", 0, "integrator.alpha"},
                      "HHT alpha = " + std::to_string(options.alpha) +
                          " is outside the accepted range [-1/3, 0]");
-  impl_ = std::make_unique<Impl>(system, options);
+  impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.q0, &s.v0, &s.a0, &s.f0, &s.q_prev, &s.v_prev, &s.a_prev, &s.q1,
-                       &s.v1, &s.a1, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
+  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
                        &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
   for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
     *m = system.create_matrix();
   // The mass matrix is constant (ANCF): assemble it once.
-  system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
+  system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
   s.mass_product = assembly::compact_copy(s.mass.get());
   // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
   CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
   s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
   if (s.algebraic->active())  // Gᵀ is constant: the constraints are linear in q
-    system.jacobian({s.q0.get(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
+    system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
@@ -180,8 +182,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
     // and f1 hold the last residual evaluation's (the iterate's) values.
     s.newton->set_local_correction([&s](Vec a, Vec r, double atol, double* norm) {
       const LocalNewton::Coefficients c{1.0 + s.options.alpha, s.beta * s.h * s.h, s.gamma * s.h,
-                                        s.t0 + s.h};
-      return s.local->correct(a, r, s.q1.get(), s.v1.get(), s.f1.get(), c, atol, norm);
+                                        s.state.time() + s.h};
+      return s.local->correct(a, r, s.state.pending_q(), s.state.pending_v(), s.f1.get(), c,
+                              atol, norm);
     });
   }
 }
@@ -196,18 +199,10 @@ std::string HhtIntegrator::name() const {
 
 void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   Impl& s = *impl_;
-  s.t0 = s.t_prev = t;
-  CATENA_PETSC(VecCopy(q, s.q0.get()));
-  CATENA_PETSC(VecCopy(v, s.v0.get()));
-  if (a)
-    CATENA_PETSC(VecCopy(a, s.a0.get()));
-  else  // also gives λ0 with constraints
-    consistent_acceleration(s.system, s.mass.get(), t, s.q0.get(), s.v0.get(), s.a0.get());
-  s.system.force({s.q0.get(), s.v0.get(), {}, t}, s.f0.get(), &s.scale0);
-  for (auto [from, to] : {std::pair{&s.q0, &s.q_prev}, {&s.v0, &s.v_prev}, {&s.a0, &s.a_prev}})
-    CATENA_PETSC(VecCopy(from->get(), to->get()));
+  // Without a, the consistent one (also λ0 with constraints).
+  s.state.start(t, q, v, a, consistent_acceleration_of(s.system, s.mass.get()));
+  s.system.force({s.state.q(), s.state.v(), {}, t}, s.f0.get(), &s.scale0);
   s.newton->invalidate_tangent();
-  s.pending_valid = false;
 }
 
 StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
@@ -220,14 +215,14 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   s.start_attempt();
   // The local corrections have grown costlier than a new tangent (local_newton.hpp).
   if (s.local && s.local->tangent_worn()) s.newton->invalidate_tangent();
-  CATENA_PETSC(VecCopy(s.a0.get(), s.a1.get()));  // predictor: constant acceleration
-  s.algebraic->take_algebraic(s.a1.get(), s.q0.get());  // and constant λ
+  CATENA_PETSC(VecCopy(s.state.a(), s.state.pending_a()));  // predictor: constant acceleration
+  s.algebraic->take_algebraic(s.state.pending_a(), s.state.q());  // and constant λ
   if (!s.round_off.known())  // first attempt: the floor from a tangent at the start
-    s.evaluate_tangent(s.q0.get(), s.v0.get(), s.t0);
-  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.q0.get()) +
-                       (1.0 + s.options.alpha) * s.round_off.at(s.q0.get());
+    s.evaluate_tangent(s.state.q(), s.state.v(), s.state.time());
+  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.state.q()) +
+                       (1.0 + s.options.alpha) * s.round_off.at(s.state.q());
   const NewtonResult result =
-      s.newton->solve(s.a1.get(), s.options.atol + s.options.rtol * s.scale0 + floor);
+      s.newton->solve(s.state.pending_a(), s.options.atol + s.options.rtol * s.scale0 + floor);
   StepOutcome out;
   out.converged = result.converged;
   out.newton_iterations = result.iterations;
@@ -236,50 +231,31 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (!result.converged) {
     ++s.counters.newton_failures;
     out.failure = result.failure;
-    PetscReal worst = 0.0, least = 0.0;
-    PetscInt imin = -1, imax = -1;
-    CATENA_PETSC(VecMax(s.residual.get(), &imax, &worst));
-    CATENA_PETSC(VecMin(s.residual.get(), &imin, &least));
-    out.worst_dof = std::abs(least) > std::abs(worst) ? imin : imax;
-    s.pending_valid = false;
+    out.worst_dof = worst_dof(s.residual.get());
+    s.state.discard_pending();
     return out;
   }
   // The last residual evaluation was at the converged a1: q1, v1, f1 belong to it.
-  s.kinematics(s.a1.get());
-  s.algebraic->zero_algebraic(s.a1.get());  // λ1 now lives in q1
-  s.pending_valid = true;
+  s.kinematics(s.state.pending_a());
+  s.algebraic->zero_algebraic(s.state.pending_a());  // λ1 now lives in q1
+  s.state.set_pending(s.state.time() + h);
   if (tol) {
-    CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.a0.get(), s.a1.get()));
+    CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.state.a(), s.state.pending_a()));
     CATENA_PETSC(VecScale(s.error.get(), h * h * (s.beta - 1.0 / 6.0)));
-    out.error = weighted_error_norm(*tol, s.error.get(), s.q0.get(), s.q1.get());
+    out.error = weighted_error_norm(*tol, s.error.get(), s.state.q(), s.state.pending_q());
   }
   return out;
 }
 
 void HhtIntegrator::accept() {
   Impl& s = *impl_;
-  if (!s.pending_valid) throw std::logic_error("HhtIntegrator::accept without a converged step");
-  std::swap(s.q_prev, s.q0);
-  std::swap(s.v_prev, s.v0);
-  std::swap(s.a_prev, s.a0);
-  std::swap(s.q0, s.q1);
-  std::swap(s.v0, s.v1);
-  std::swap(s.a0, s.a1);
+  s.state.accept("HhtIntegrator");
   std::swap(s.f0, s.f1);
   s.scale0 = s.scale1;
-  s.t_prev = s.t0;
-  s.t0 += s.h;
-  s.pending_valid = false;
   ++s.counters.steps_accepted;
 }
 
-void HhtIntegrator::interpolate(double t, Vec q, Vec v) {
-  const Impl& s = *impl_;
-  const double h = s.t0 - s.t_prev;
-  const double theta = h > 0.0 ? (t - s.t_prev) / h : 1.0;
-  if (q) hermite_interpolate(theta, h, s.q_prev.get(), s.v_prev.get(), s.q0.get(), s.v0.get(), q);
-  if (v) hermite_interpolate(theta, h, s.v_prev.get(), s.a_prev.get(), s.v0.get(), s.a0.get(), v);
-}
+void HhtIntegrator::interpolate(double t, Vec q, Vec v) { impl_->state.interpolate(t, q, v); }
 
 // The step-to-step state: f0 and its scale (the last residual's, which a local correction
 // updated in part: recomputing f0 would differ in round-off), the tangent's point, the
@@ -315,14 +291,6 @@ void HhtIntegrator::restore_resume_state(const ResumeState& in) {
     ++s.counters.jacobian_evaluations;
   }
 }
-
-double HhtIntegrator::time() const { return impl_->t0; }
-double HhtIntegrator::previous_time() const { return impl_->t_prev; }
-Vec HhtIntegrator::q() const { return impl_->q0.get(); }
-Vec HhtIntegrator::v() const { return impl_->v0.get(); }
-Vec HhtIntegrator::a() const { return impl_->a0.get(); }
-Vec HhtIntegrator::pending_q() const { return impl_->q1.get(); }
-Vec HhtIntegrator::pending_v() const { return impl_->v1.get(); }
 
 const IntegratorCounters& HhtIntegrator::counters() const {
   Impl& s = *impl_;

@@ -11,11 +11,11 @@
 #include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/decoupled_stage_solver.hpp"
 #include "catena/solvers/direct_newton.hpp"
-#include "catena/solvers/hermite_interpolation.hpp"
 #include "catena/solvers/interleaved_vectors.hpp"
 #include "catena/solvers/mumps_status.hpp"
 #include "catena/solvers/reusable_newton.hpp"
 #include "catena/solvers/round_off_floor.hpp"
+#include "catena/solvers/step_state.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -47,11 +47,14 @@ struct IrkIntegrator::Impl {
   bool polynomial_dense;  // dense output by the collocation polynomial
   bool stiffly_accurate;
 
-  double t0 = 0.0, t_prev = 0.0, h = 0.0, h_last = 0.0, h_matrix = -1.0;
+  // The current state, the one before (dense output) and the pending step.
+  StepState& state;
+  // h_last: the last accepted step's size (the predictor's and the dense output's).
+  double h = 0.0, h_last = 0.0, h_matrix = -1.0;
   double scale0 = 0.0, stage_scale = 0.0;
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   double klast_end = -1.0;  // end time of the step whose stages Klast holds
-  VecHandle q0, v0, a0, q_prev, v_prev, a_prev, q1, v1, a1, scratch;
+  VecHandle scratch;
   std::vector<VecHandle> Kst, Klast, U, V, F;
   MatHandle mass, K, C;
   // Where K and C were last evaluated (kept for a restart, which evaluates them there again).
@@ -89,10 +92,9 @@ struct IrkIntegrator::Impl {
   long estimate_factorizations = 0, estimate_solves = 0;
 
   IntegratorCounters counters;
-  bool pending_valid = false;
 
-  Impl(assembly::SecondOrderSystem& sys, const IrkOptions& o)
-      : system(sys), options(o), T(make_tableau(o.family, o.stages)), s(T.stages) {
+  Impl(assembly::SecondOrderSystem& sys, const IrkOptions& o, StepState& st)
+      : system(sys), options(o), T(make_tableau(o.family, o.stages)), s(T.stages), state(st) {
     A2 = a_squared(T);
     bA = T.A.transpose() * T.b;
     stiffly_accurate = T.stiffly_accurate && T.c(s - 1) == 1.0;
@@ -129,10 +131,10 @@ struct IrkIntegrator::Impl {
     std::vector<double> w(s);
     for (int i = 0; i < s; ++i) {
       for (int j = 0; j < s; ++j) w[j] = h * h * A2(i, j);
-      combine(U[i].get(), q0.get(), w, Kst);
-      CATENA_PETSC(VecAXPY(U[i].get(), T.c(i) * h, v0.get()));
+      combine(U[i].get(), state.q(), w, Kst);
+      CATENA_PETSC(VecAXPY(U[i].get(), T.c(i) * h, state.v()));
       for (int j = 0; j < s; ++j) w[j] = h * T.A(i, j);
-      combine(V[i].get(), v0.get(), w, Kst);
+      combine(V[i].get(), state.v(), w, Kst);
       algebraic->take_algebraic(U[i].get(), Kst[i].get());
       algebraic->zero_algebraic(V[i].get());
     }
@@ -156,7 +158,7 @@ struct IrkIntegrator::Impl {
     stage_scale = 0.0;
     for (int i = 0; i < s; ++i) {
       double norm = 0.0;
-      system.force({U[i].get(), V[i].get(), {}, t0 + T.c(i) * h}, F[i].get(), &norm);
+      system.force({U[i].get(), V[i].get(), {}, state.time() + T.c(i) * h}, F[i].get(), &norm);
       stage_scale = std::max(stage_scale, norm);
       CATENA_PETSC(MatMultAdd(mass.get(), Kst[i].get(), F[i].get(), F[i].get()));
       algebraic->scale_rows(F[i].get(), constraint_row_scale());
@@ -189,7 +191,7 @@ struct IrkIntegrator::Impl {
     round_off.set_tangent(K.get());
   }
 
-  void evaluate_start_tangent() { evaluate_tangent({q0.get(), v0.get(), {}, t0}); }
+  void evaluate_start_tangent() { evaluate_tangent({state.q(), state.v(), {}, state.time()}); }
 
   // A refreshed tangent of the simplified Newton: at the current iterate's last stage
   // (Radau IIA, Lobatto: the step's end), not at (q0, v0) as RADAU5 does. Where a force law
@@ -202,7 +204,7 @@ struct IrkIntegrator::Impl {
     split_interleaved(xk, raw(Kst));
     stage_states();
     const int last = s - 1;
-    evaluate_tangent({U[last].get(), V[last].get(), {}, t0 + T.c(last) * h});
+    evaluate_tangent({U[last].get(), V[last].get(), {}, state.time() + T.c(last) * h});
   }
 
   void build(Vec xk, bool refresh, Mat) {
@@ -211,7 +213,7 @@ struct IrkIntegrator::Impl {
       stage_states();
       std::vector<Mat> k_rows, c_rows;
       for (int i = 0; i < s; ++i) {
-        system.tangent_parts({U[i].get(), V[i].get(), {}, t0 + T.c(i) * h}, Ks[i].get(),
+        system.tangent_parts({U[i].get(), V[i].get(), {}, state.time() + T.c(i) * h}, Ks[i].get(),
                              Cs[i].get());
         k_rows.push_back(Ks[i].get());
         c_rows.push_back(Cs[i].get());
@@ -245,7 +247,7 @@ struct IrkIntegrator::Impl {
   }
 
   void predict() {
-    if (s >= 2 && klast_end == t0 && h_last > 0.0) {
+    if (s >= 2 && klast_end == state.time() && h_last > 0.0) {
       std::vector<double> l;
       for (int i = 0; i < s; ++i) {
         basis(1.0 + T.c(i) * h / h_last, l, nullptr, nullptr);
@@ -255,8 +257,8 @@ struct IrkIntegrator::Impl {
       }
     } else {
       for (int i = 0; i < s; ++i) {
-        CATENA_PETSC(VecCopy(a0.get(), Kst[i].get()));
-        algebraic->take_algebraic(Kst[i].get(), q0.get());  // constant λ
+        CATENA_PETSC(VecCopy(state.a(), Kst[i].get()));
+        algebraic->take_algebraic(Kst[i].get(), state.q());  // constant λ
       }
     }
     join_interleaved(raw(Kst), x.get());
@@ -273,7 +275,7 @@ struct IrkIntegrator::Impl {
     for (int j = 0; j < s; ++j) w[j] = h * d(j);
     combine(rv.get(), scratch.get(), w, Kst);
     const double g = h * T.gamma0;
-    CATENA_PETSC(VecAXPY(rv.get(), g, a0.get()));
+    CATENA_PETSC(VecAXPY(rv.get(), g, state.a()));
     if (options.full_newton || tangent_serial == 0) {
       // Full Newton keeps no tangent at the step start: take one for the filter.
       evaluate_start_tangent();
@@ -305,15 +307,14 @@ struct IrkIntegrator::Impl {
     if (mumps.infog1 < 0 || mumps.null_pivots > 0 || reason < 0)
       return 1e10;  // reject: h will shrink
     CATENA_PETSC(VecWAXPY(xu.get(), g, xv.get(), ru.get()));
-    return weighted_error_norm(tol, xu.get(), q0.get(), q1.get());
+    return weighted_error_norm(tol, xu.get(), state.q(), state.pending_q());
   }
 };
 
 IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptions& options)
-    : impl_(std::make_unique<Impl>(system, options)) {
+    : StepStateIntegrator(system), impl_(std::make_unique<Impl>(system, options, step_state())) {
   Impl& m = *impl_;
-  for (VecHandle* v : {&m.q0, &m.v0, &m.a0, &m.q_prev, &m.v_prev, &m.a_prev, &m.q1, &m.v1,
-                       &m.a1, &m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv, &m.tangent_q,
+  for (VecHandle* v : {&m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv, &m.tangent_q,
                        &m.tangent_v})
     *v = system.create_vector();
   m.Kst = vectors(system, m.s);
@@ -322,7 +323,7 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
   m.V = vectors(system, m.s);
   m.F = vectors(system, m.s);
   m.mass = system.create_matrix();
-  system.jacobian({m.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0}, m.mass.get());
+  system.jacobian({m.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, m.mass.get());
   // K, C and E take the mass matrix's full pattern (so MatAXPY can keep it).
   for (MatHandle* A : {&m.K, &m.C, &m.E})
     CATENA_PETSC(MatDuplicate(m.mass.get(), MAT_DO_NOT_COPY_VALUES, A->out()));
@@ -341,7 +342,7 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     if (m.T.family != TableauFamily::radau_iia)
       m.end_multipliers = std::make_unique<AccelerationSolver>(system, m.mass.get());
     m.mass_coupling = system.create_matrix();
-    system.jacobian({m.q0.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
+    system.jacobian({m.state.q(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
                     m.mass_coupling.get());
   }
   // Decoupled where the transformation is exact: simplified Newton (one K, C for every
@@ -361,8 +362,8 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     m.decoupled = std::make_unique<DecoupledStageSolver>(pattern, m.T.A, m.A2, *form, "irk_");
   else
     m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
-  m.x = create_interleaved_vector(m.q0.get(), m.s);
-  m.r = create_interleaved_vector(m.q0.get(), m.s);
+  m.x = create_interleaved_vector(m.state.q(), m.s);
+  m.r = create_interleaved_vector(m.state.q(), m.s);
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
@@ -396,18 +397,9 @@ bool IrkIntegrator::decoupled() const { return static_cast<bool>(impl_->decouple
 
 void IrkIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   Impl& m = *impl_;
-  m.t0 = m.t_prev = t;
-  CATENA_PETSC(VecCopy(q, m.q0.get()));
-  CATENA_PETSC(VecCopy(v, m.v0.get()));
-  if (a)
-    CATENA_PETSC(VecCopy(a, m.a0.get()));
-  else
-    consistent_acceleration(m.system, m.mass.get(), t, m.q0.get(), m.v0.get(), m.a0.get());
-  m.system.force({m.q0.get(), m.v0.get(), {}, t}, m.scratch.get(), &m.scale0);
-  for (auto [from, to] : {std::pair{&m.q0, &m.q_prev}, {&m.v0, &m.v_prev}, {&m.a0, &m.a_prev}})
-    CATENA_PETSC(VecCopy(from->get(), to->get()));
+  m.state.start(t, q, v, a, consistent_acceleration_of(m.system, m.mass.get()));
+  m.system.force({m.state.q(), m.state.v(), {}, t}, m.scratch.get(), &m.scale0);
   m.h_last = 0.0;  // no step behind this state: dense output is the state itself
-  m.pending_valid = false;
 }
 
 StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
@@ -421,8 +413,8 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (!m.round_off.known()) m.evaluate_start_tangent();  // the floor needs a tangent
   const double atol =
       m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s)) +
-      m.round_off.at(m.q0.get()) * std::sqrt(static_cast<double>(m.s)) +
-      m.algebraic->residual_floor(h * h, m.q0.get()) * std::sqrt(static_cast<double>(m.s));
+      m.round_off.at(m.state.q()) * std::sqrt(static_cast<double>(m.s)) +
+      m.algebraic->residual_floor(h * h, m.state.q()) * std::sqrt(static_cast<double>(m.s));
   const NewtonResult result = m.newton->solve(m.x.get(), atol);
   StepOutcome out;
   out.converged = result.converged;
@@ -432,60 +424,48 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (!result.converged) {
     ++m.counters.newton_failures;
     out.failure = result.failure;
-    PetscReal hi = 0.0, lo = 0.0;
-    PetscInt ihi = -1, ilo = -1;
-    CATENA_PETSC(VecMax(m.r.get(), &ihi, &hi));
-    CATENA_PETSC(VecMin(m.r.get(), &ilo, &lo));
-    out.worst_dof = (std::abs(lo) > std::abs(hi) ? ilo : ihi) / m.s;
-    m.pending_valid = false;
+    out.worst_dof = worst_dof(m.r.get(), m.s);  // the stage vector interleaves s rows per DOF
+    m.state.discard_pending();
     return out;
   }
   // The last residual was evaluated at the converged stages: Kst, U, V belong to them.
   std::vector<double> w(m.s);
   for (int j = 0; j < m.s; ++j) w[j] = h * h * m.bA(j);
-  combine(m.q1.get(), m.q0.get(), w, m.Kst);
-  CATENA_PETSC(VecAXPY(m.q1.get(), h, m.v0.get()));
+  combine(m.state.pending_q(), m.state.q(), w, m.Kst);
+  CATENA_PETSC(VecAXPY(m.state.pending_q(), h, m.state.v()));
   for (int j = 0; j < m.s; ++j) w[j] = h * m.T.b(j);
-  combine(m.v1.get(), m.v0.get(), w, m.Kst);
+  combine(m.state.pending_v(), m.state.v(), w, m.Kst);
   if (m.stiffly_accurate) {
-    CATENA_PETSC(VecCopy(m.Kst[m.s - 1].get(), m.a1.get()));
+    CATENA_PETSC(VecCopy(m.Kst[m.s - 1].get(), m.state.pending_a()));
   } else if (m.s >= 2) {
     std::vector<double> l;
     m.basis(1.0, l, nullptr, nullptr);
     CATENA_PETSC(VecSet(m.scratch.get(), 0.0));
-    combine(m.a1.get(), m.scratch.get(), l, m.Kst);
+    combine(m.state.pending_a(), m.scratch.get(), l, m.Kst);
   } else {
-    CATENA_PETSC(VecCopy(m.Kst[0].get(), m.a1.get()));
+    CATENA_PETSC(VecCopy(m.Kst[0].get(), m.state.pending_a()));
   }
   // a1's multiplier slots hold λ1 (the last stage's, or the stage polynomial's value).
-  m.algebraic->take_algebraic(m.q1.get(), m.a1.get());
-  m.algebraic->zero_algebraic(m.v1.get());
-  m.algebraic->zero_algebraic(m.a1.get());
+  m.algebraic->take_algebraic(m.state.pending_q(), m.state.pending_a());
+  m.algebraic->zero_algebraic(m.state.pending_v());
+  m.algebraic->zero_algebraic(m.state.pending_a());
   if (m.end_multipliers) {
-    m.end_multipliers->solve(m.t0 + h, m.q1.get(), m.v1.get(), m.a1.get());
+    m.end_multipliers->solve(m.state.time() + h, m.state.pending_q(), m.state.pending_v(),
+                             m.state.pending_a());
     m.counters.residual_evaluations += 1;
   }
-  m.pending_valid = true;
+  m.state.set_pending(m.state.time() + h);
   if (tol && has_embedded_estimate()) out.error = m.embedded_error(*tol);
   return out;
 }
 
 void IrkIntegrator::accept() {
   Impl& m = *impl_;
-  if (!m.pending_valid) throw std::logic_error("IrkIntegrator::accept without a converged step");
-  std::swap(m.q_prev, m.q0);
-  std::swap(m.v_prev, m.v0);
-  std::swap(m.a_prev, m.a0);
-  std::swap(m.q0, m.q1);
-  std::swap(m.v0, m.v1);
-  std::swap(m.a0, m.a1);
+  m.state.accept("IrkIntegrator");
   std::swap(m.Klast, m.Kst);
   m.h_last = m.h;
-  m.t_prev = m.t0;
-  m.t0 += m.h;
-  m.klast_end = m.t0;
+  m.klast_end = m.state.time();
   m.scale0 = m.stage_scale;
-  m.pending_valid = false;
   ++m.counters.steps_accepted;
 }
 
@@ -493,26 +473,26 @@ void IrkIntegrator::interpolate(double t, Vec q, Vec v) {
   Impl& m = *impl_;
   const double h = m.h_last;
   if (h <= 0.0) {  // no step taken since set_state
-    if (q) CATENA_PETSC(VecCopy(m.q0.get(), q));
-    if (v) CATENA_PETSC(VecCopy(m.v0.get(), v));
+    m.state.copy_current(q, v);
     return;
   }
-  const double theta = (t - m.t_prev) / h;
+  // Over the step of size h_last, as the predictor (not previous_time() to time(), which
+  // differs from it in round-off).
+  const double theta = (t - m.state.previous_time()) / h;
   if (!m.polynomial_dense) {
-    if (q) hermite_interpolate(theta, h, m.q_prev.get(), m.v_prev.get(), m.q0.get(), m.v0.get(), q);
-    if (v) hermite_interpolate(theta, h, m.v_prev.get(), m.a_prev.get(), m.v0.get(), m.a0.get(), v);
+    m.state.interpolate_hermite(theta, h, q, v);
     return;
   }
   std::vector<double> l, w, W;
   m.basis(theta, l, &w, &W);
   if (v) {
     for (double& x : w) x *= h;
-    combine(v, m.v_prev.get(), w, m.Klast);
+    combine(v, m.state.previous_v(), w, m.Klast);
   }
   if (q) {
     for (double& x : W) x *= h * h;
-    combine(q, m.q_prev.get(), W, m.Klast);
-    CATENA_PETSC(VecAXPY(q, theta * h, m.v_prev.get()));
+    combine(q, m.state.previous_q(), W, m.Klast);
+    CATENA_PETSC(VecAXPY(q, theta * h, m.state.previous_v()));
     if (m.algebraic->active()) {  // λ by the stage polynomial through Λ_1 … Λ_s
       CATENA_PETSC(VecSet(m.scratch.get(), 0.0));
       combine(m.xu.get(), m.scratch.get(), l, m.Klast);
@@ -567,14 +547,6 @@ void IrkIntegrator::restore_resume_state(const ResumeState& in) {
   m.blocks_h = m.estimate_h = -1.0;
   m.blocks_tangent = m.estimate_tangent = -1;
 }
-
-double IrkIntegrator::time() const { return impl_->t0; }
-double IrkIntegrator::previous_time() const { return impl_->t_prev; }
-Vec IrkIntegrator::q() const { return impl_->q0.get(); }
-Vec IrkIntegrator::v() const { return impl_->v0.get(); }
-Vec IrkIntegrator::a() const { return impl_->a0.get(); }
-Vec IrkIntegrator::pending_q() const { return impl_->q1.get(); }
-Vec IrkIntegrator::pending_v() const { return impl_->v1.get(); }
 
 const IntegratorCounters& IrkIntegrator::counters() const {
   Impl& m = *impl_;

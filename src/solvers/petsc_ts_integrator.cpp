@@ -9,10 +9,9 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/consistent_acceleration.hpp"
 #include "catena/solvers/direct_newton.hpp"
 #include "catena/solvers/first_order_form.hpp"
-#include "catena/solvers/hermite_interpolation.hpp"
+#include "catena/solvers/step_state.hpp"
 #include "petsc_ts_methods.hpp"
 
 namespace catena::solvers {
@@ -45,11 +44,12 @@ struct PetscTsIntegrator::Impl {
   VecHandle qw, vw, qdw, vdw, fw, Mb;    // n-vector work; Mb = M a0/κ for the start-up
   KspHandle mass_ksp;                    // M a = −f for Hermite's accelerations
 
-  double t0 = 0.0, t_prev = 0.0, t1 = 0.0;
-  VecHandle q0, v0, a0, q_prev, v_prev, a_prev, q1, v1, a1;
-  bool a0_valid = false, a_prev_valid = false, pending_valid = false;
+  // The current state (t0, q0, v0, a0), the one before (dense output) and the pending step.
+  // First-order types leave the accelerations unknown until dense output or a() needs them
+  // (solve_acceleration).
+  StepState& state;
 
-  TsState state = TsState::stale;
+  TsState ts_state = TsState::stale;
   bool restart_scheduled = false;    // TSRestartStep called: the next TSStep restarts
   bool last_step_restarted = false;  // the pending step was a restart step
   int stages_this_step = 0;          // TSPreStage calls in the current TSStep
@@ -60,7 +60,11 @@ struct PetscTsIntegrator::Impl {
   CallbackGuard guard;
   IntegratorCounters counters;
 
-  Impl(assembly::SecondOrderSystem& s, const PetscTsOptions& o) : system(s), options(o) {}
+  Impl(assembly::SecondOrderSystem& s, const PetscTsOptions& o, StepState& st)
+      : system(s), options(o), state(st) {
+    state.set_lazy_acceleration(
+        [this](double t, Vec q, Vec v, Vec a) { solve_acceleration(t, q, v, a); });
+  }
 
   // alpha2 start-up. After TSRestartStep, PETSc's alpha2 (alpha2.c, TSAlpha_Restart)
   // finds A₀ from two backward-Euler half steps of k = h/2 (generalised-α with alpha_m =
@@ -98,13 +102,13 @@ struct PetscTsIntegrator::Impl {
     const double c = (1 - am) - am * (1 - 2 * beta) / (2 * beta);
     if (std::abs(c) < 1e-3) return;  // A₀ not observable this way (user parameters)
     // qw = (A_α + alpha_m V₀/(hβ))/c − a0
-    CATENA_PETSC(VecWAXPY(qw.get(), am / (h * beta), v0.get(), a_stage));
+    CATENA_PETSC(VecWAXPY(qw.get(), am / (h * beta), state.v(), a_stage));
     CATENA_PETSC(VecScale(qw.get(), 1.0 / c));
-    CATENA_PETSC(VecAXPY(qw.get(), -1.0, a0.get()));
+    CATENA_PETSC(VecAXPY(qw.get(), -1.0, state.a()));
     PetscReal gap = 0, a_norm = 0, v_norm = 0;
     CATENA_PETSC(VecNorm(qw.get(), NORM_INFINITY, &gap));
-    CATENA_PETSC(VecNorm(a0.get(), NORM_INFINITY, &a_norm));
-    CATENA_PETSC(VecNorm(v0.get(), NORM_INFINITY, &v_norm));
+    CATENA_PETSC(VecNorm(state.a(), NORM_INFINITY, &a_norm));
+    CATENA_PETSC(VecNorm(state.v(), NORM_INFINITY, &v_norm));
     if (gap > 1e-8 * (a_norm + v_norm / h) + 1e-300) {
       std::ostringstream os;
       os << "PetscTsIntegrator: PETSc's alpha2 start-up did not return the state's "
@@ -242,11 +246,11 @@ struct PetscTsIntegrator::Impl {
   }
 
   void restart_from_current() {
-    CATENA_PETSC(TSSetTime(ts.get(), t0));
-    write_ts_state(q0.get(), v0.get());
+    CATENA_PETSC(TSSetTime(ts.get(), state.time()));
+    write_ts_state(state.q(), state.v());
     CATENA_PETSC(TSRestartStep(ts.get()));
     if (second_order) {
-      CATENA_PETSC(MatMult(M.get(), a0.get(), Mb.get()));
+      CATENA_PETSC(MatMult(M.get(), state.a(), Mb.get()));
       CATENA_PETSC(VecScale(Mb.get(), 1.0 / kStartupGain));
     }
     restart_scheduled = true;
@@ -254,11 +258,11 @@ struct PetscTsIntegrator::Impl {
 
   // Brings the TS back to (t0, q0, v0) before an attempt.
   void prepare_attempt() {
-    if (state == TsState::ahead && traits.keeps_history && !last_step_restarted)
+    if (ts_state == TsState::ahead && traits.keeps_history && !last_step_restarted)
       CATENA_PETSC(TSRollBack(ts.get()));  // exact for bdf and alpha2: a copy, history kept
-    else if (state != TsState::synced)
+    else if (ts_state != TsState::synced)
       restart_from_current();
-    state = TsState::synced;
+    ts_state = TsState::synced;
   }
 
   // M a = −f(t, q, v) with one factorisation of M kept for the run.
@@ -276,28 +280,18 @@ struct PetscTsIntegrator::Impl {
       throw NumericalError("PetscTsIntegrator: the mass matrix could not be factored");
   }
 
-  void ensure_accelerations() {
-    if (!a_prev_valid) solve_acceleration(t_prev, q_prev.get(), v_prev.get(), a_prev.get());
-    if (!a0_valid) solve_acceleration(t0, q0.get(), v0.get(), a0.get());
-    a_prev_valid = a0_valid = true;
-  }
-
   // The global DOF with the largest |entry| of the last Newton residual (−1 if none).
-  PetscInt worst_dof(SNES snes) const {
+  PetscInt worst_residual_dof(SNES snes) const {
     Vec r = nullptr;
     CATENA_PETSC(SNESGetFunction(snes, &r, nullptr, nullptr));
     if (!r) return -1;
-    PetscReal most = 0, least = 0;
-    PetscInt imax = -1, imin = -1;
-    CATENA_PETSC(VecMax(r, &imax, &most));
-    CATENA_PETSC(VecMin(r, &imin, &least));
-    const PetscInt i = std::abs(least) > std::abs(most) ? imin : imax;
-    return second_order || i < 0 ? i : i / 2;  // first-order rows 2g, 2g + 1 belong to DOF g
+    return worst_dof(r, second_order ? 1 : 2);  // first-order rows 2g, 2g + 1: DOF g
   }
 };
 
 PetscTsIntegrator::PetscTsIntegrator(assembly::SecondOrderSystem& system,
-                                     const PetscTsOptions& options) {
+                                     const PetscTsOptions& options)
+    : StepStateIntegrator(system) {
   if (!(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
     throw InputError({"", 0, "integrator.alpha"}, "HHT alpha = " + std::to_string(options.alpha) +
                                                       " is outside the accepted range [-1/3, 0]");
@@ -305,10 +299,9 @@ PetscTsIntegrator::PetscTsIntegrator(assembly::SecondOrderSystem& system,
   if (system.has_constraints())
     throw InputError({"", 0, "integrator.type"},
                      "the PETSc TS bridge takes no Lagrange-multiplier constraints");
-  impl_ = std::make_unique<Impl>(system, options);
+  impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.qw, &s.vw, &s.qdw, &s.vdw, &s.fw, &s.Mb, &s.q0, &s.v0, &s.a0, &s.q_prev,
-                       &s.v_prev, &s.a_prev, &s.q1, &s.v1, &s.a1})
+  for (VecHandle* v : {&s.qw, &s.vw, &s.qdw, &s.vdw, &s.fw, &s.Mb})
     *v = system.create_vector();
   for (MatHandle* m : {&s.M, &s.K, &s.C}) *m = system.create_matrix();
   // M is constant (ANCF); K and C are evaluated once here for their patterns.
@@ -396,28 +389,18 @@ int PetscTsIntegrator::order() const { return impl_->traits.order; }
 
 void PetscTsIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   Impl& s = *impl_;
-  s.t0 = s.t_prev = t;
-  CATENA_PETSC(VecCopy(q, s.q0.get()));
-  CATENA_PETSC(VecCopy(v, s.v0.get()));
-  s.a0_valid = true;
-  if (a)
-    CATENA_PETSC(VecCopy(a, s.a0.get()));
-  else if (s.second_order)
-    consistent_acceleration(s.system, s.M.get(), t, s.q0.get(), s.v0.get(), s.a0.get());
-  else
-    s.a0_valid = false;  // first-order types need it only for Hermite output: lazily
-  for (auto [from, to] : {std::pair{&s.q0, &s.q_prev}, {&s.v0, &s.v_prev}, {&s.a0, &s.a_prev}})
-    CATENA_PETSC(VecCopy(from->get(), to->get()));
-  s.a_prev_valid = s.a0_valid;
-  s.scale_ref = s.system.element_force_norm({s.q0.get(), s.v0.get(), {}, t});
-  s.state = TsState::stale;
-  s.pending_valid = false;
+  // Without a: alpha2 carries it, so the consistent one now; first-order types need it only
+  // for dense output (Hermite), so it is solved for when first needed.
+  s.state.start(t, q, v, a,
+                s.second_order ? consistent_acceleration_of(s.system, s.M.get()) : nullptr);
+  s.scale_ref = s.system.element_force_norm({s.state.q(), s.state.v(), {}, t});
+  s.ts_state = TsState::stale;
 }
 
 StepOutcome PetscTsIntegrator::attempt(double h, const ErrorTolerance*) {
   Impl& s = *impl_;
   TS ts = s.ts.get();
-  s.pending_valid = false;
+  s.state.discard_pending();
   s.prepare_attempt();
   CATENA_PETSC(TSSetTimeStep(ts, h));
   s.stages_this_step = 0;
@@ -455,65 +438,46 @@ StepOutcome PetscTsIntegrator::attempt(double h, const ErrorTolerance*) {
         << SNESConvergedReasons[snes_reason] << ")";
     if (!s.newton_failure.empty()) why << ": " << s.newton_failure;
     out.failure = why.str();
-    out.worst_dof = s.worst_dof(snes);
-    s.state = TsState::stale;  // the TS may have advanced its history: restart next time
+    out.worst_dof = s.worst_residual_dof(snes);
+    s.ts_state = TsState::stale;  // the TS may have advanced its history: restart next time
     return out;
   }
   const bool restarted = s.restart_scheduled;
   s.restart_scheduled = false;
   s.last_step_restarted = restarted;
-  s.state = TsState::ahead;
-  CATENA_PETSC(TSGetTime(ts, &s.t1));
-  s.read_ts_state(s.q1.get(), s.v1.get());
+  s.ts_state = TsState::ahead;
+  PetscReal t1 = 0.0;
+  CATENA_PETSC(TSGetTime(ts, &t1));
+  s.read_ts_state(s.state.pending_q(), s.state.pending_v());
   if (s.second_order) {
     // alpha2's own new acceleration from its velocity update v1 = v0 + h[(1−γ)a0 + γa1].
     PetscReal am = 0, af = 0, gamma = 0, beta = 0;
     CATENA_PETSC(TSAlpha2GetParams(ts, &am, &af, &gamma, &beta));
-    const double h1 = s.t1 - s.t0;
-    CATENA_PETSC(VecWAXPY(s.a1.get(), -1.0, s.v0.get(), s.v1.get()));
-    CATENA_PETSC(VecAXPBY(s.a1.get(), -(1.0 - gamma) / gamma, 1.0 / (h1 * gamma), s.a0.get()));
+    const double h1 = t1 - s.state.time();
+    CATENA_PETSC(VecWAXPY(s.state.pending_a(), -1.0, s.state.v(), s.state.pending_v()));
+    CATENA_PETSC(VecAXPBY(s.state.pending_a(), -(1.0 - gamma) / gamma, 1.0 / (h1 * gamma),
+                          s.state.a()));
   }
-  s.pending_valid = true;
+  // First-order types: the new acceleration is solved for if dense output needs it.
+  s.state.set_pending(t1, s.second_order);
   out.converged = true;
   return out;
 }
 
 void PetscTsIntegrator::accept() {
   Impl& s = *impl_;
-  if (!s.pending_valid)
-    throw std::logic_error("PetscTsIntegrator::accept without a converged step");
-  std::swap(s.q_prev, s.q0);
-  std::swap(s.v_prev, s.v0);
-  std::swap(s.a_prev, s.a0);
-  std::swap(s.q0, s.q1);
-  std::swap(s.v0, s.v1);
-  s.a_prev_valid = s.a0_valid;
-  if (s.second_order) {
-    std::swap(s.a0, s.a1);
-    s.a0_valid = true;
-  } else {
-    s.a0_valid = false;
-  }
-  s.t_prev = s.t0;
-  s.t0 = s.t1;
+  s.state.accept("PetscTsIntegrator");
   s.scale_ref = s.scale_last;
-  s.state = TsState::synced;
-  s.pending_valid = false;
+  s.ts_state = TsState::synced;
   ++s.counters.steps_accepted;
 }
 
 void PetscTsIntegrator::interpolate(double t, Vec q, Vec v) {
   Impl& s = *impl_;
-  const double h = s.t0 - s.t_prev;
-  t = std::clamp(t, s.t_prev, s.t0);
-  if (h <= 0.0) {
-    if (q) CATENA_PETSC(VecCopy(s.q0.get(), q));
-    if (v) CATENA_PETSC(VecCopy(s.v0.get(), v));
-    return;
-  }
+  t = std::clamp(t, s.state.previous_time(), s.state.time());
   // TSInterpolate works on the TS's last step, which is ours only while synced.
-  if (s.traits.dense == detail::TsDenseOutput::ts_interpolate && s.ts_interpolate_ok &&
-      s.state == TsState::synced && !s.second_order) {
+  if (s.state.time() > s.state.previous_time() && s.traits.dense == detail::TsDenseOutput::ts_interpolate && s.ts_interpolate_ok &&
+      s.ts_state == TsState::synced && !s.second_order) {
     // A tableau without an interpolant is an error inside PETSc: ask quietly, fall back.
     CATENA_PETSC(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
     const PetscErrorCode ierr = TSInterpolate(s.ts.get(), t, s.U_work.get());
@@ -524,29 +488,9 @@ void PetscTsIntegrator::interpolate(double t, Vec q, Vec v) {
     }
     s.ts_interpolate_ok = false;
   }
-  const double theta = (t - s.t_prev) / h;
-  if (q) hermite_interpolate(theta, h, s.q_prev.get(), s.v_prev.get(), s.q0.get(), s.v0.get(), q);
-  if (v) {
-    s.ensure_accelerations();
-    hermite_interpolate(theta, h, s.v_prev.get(), s.a_prev.get(), s.v0.get(), s.a0.get(), v);
-  }
+  s.state.interpolate(t, q, v);  // Hermite (the accelerations solved for where unknown)
 }
 
-double PetscTsIntegrator::time() const { return impl_->t0; }
-double PetscTsIntegrator::previous_time() const { return impl_->t_prev; }
-Vec PetscTsIntegrator::q() const { return impl_->q0.get(); }
-Vec PetscTsIntegrator::v() const { return impl_->v0.get(); }
-Vec PetscTsIntegrator::pending_q() const { return impl_->q1.get(); }
-Vec PetscTsIntegrator::pending_v() const { return impl_->v1.get(); }
 const IntegratorCounters& PetscTsIntegrator::counters() const { return impl_->counters; }
-
-Vec PetscTsIntegrator::a() const {
-  Impl& s = *impl_;
-  if (!s.a0_valid) {
-    s.solve_acceleration(s.t0, s.q0.get(), s.v0.get(), s.a0.get());
-    s.a0_valid = true;
-  }
-  return s.a0.get();
-}
 
 }  // namespace catena::solvers

@@ -25,7 +25,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/solvers/local_newton.hpp"
-#include "catena/solvers/time_integrator.hpp"
+#include "catena/solvers/step_state.hpp"
 
 namespace catena::solvers {
 
@@ -41,13 +41,11 @@ struct HhtOptions {
   LocalNewtonSettings local_newton_settings;
 };
 
-class HhtIntegrator final : public TimeIntegrator {
+class HhtIntegrator final : public StepStateIntegrator {
  public:
   // Collective. Throws InputError if α is out of range.
   HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options);
   ~HhtIntegrator() override;
-  HhtIntegrator(const HhtIntegrator&) = delete;
-  HhtIntegrator& operator=(const HhtIntegrator&) = delete;
 
   std::string name() const override;
   int order() const override { return 2; }
@@ -57,13 +55,6 @@ class HhtIntegrator final : public TimeIntegrator {
   StepOutcome attempt(double h, const ErrorTolerance* tol) override;
   void accept() override;
   void interpolate(double t, Vec q, Vec v) override;
-  double time() const override;
-  double previous_time() const override;
-  Vec q() const override;
-  Vec v() const override;
-  Vec a() const override;
-  Vec pending_q() const override;
-  Vec pending_v() const override;
   const IntegratorCounters& counters() const override;
   void save_resume_state(ResumeState& out) const override;
   void restore_resume_state(const ResumeState& in) override;

@@ -42,7 +42,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/solvers/butcher_tableau.hpp"
-#include "catena/solvers/time_integrator.hpp"
+#include "catena/solvers/step_state.hpp"
 
 namespace catena::solvers {
 
@@ -63,14 +63,12 @@ struct IrkOptions {
   StageLinearAlgebra linear_algebra = StageLinearAlgebra::automatic;
 };
 
-class IrkIntegrator final : public TimeIntegrator {
+class IrkIntegrator final : public StepStateIntegrator {
  public:
   // Collective. Throws InputError for an unknown family/stage count, or for
   // linear_algebra = decoupled where it is not exact (the message says why).
   IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptions& options);
   ~IrkIntegrator() override;
-  IrkIntegrator(const IrkIntegrator&) = delete;
-  IrkIntegrator& operator=(const IrkIntegrator&) = delete;
 
   std::string name() const override;
   int order() const override;
@@ -80,13 +78,6 @@ class IrkIntegrator final : public TimeIntegrator {
   StepOutcome attempt(double h, const ErrorTolerance* tol) override;
   void accept() override;
   void interpolate(double t, Vec q, Vec v) override;
-  double time() const override;
-  double previous_time() const override;
-  Vec q() const override;
-  Vec v() const override;
-  Vec a() const override;
-  Vec pending_q() const override;
-  Vec pending_v() const override;
   const IntegratorCounters& counters() const override;
   void save_resume_state(ResumeState& out) const override;
   void restore_resume_state(const ResumeState& in) override;

@@ -51,7 +51,7 @@
 #include <memory>
 
 #include "catena/assembly/second_order_system.hpp"
-#include "catena/solvers/time_integrator.hpp"
+#include "catena/solvers/step_state.hpp"
 
 namespace catena::solvers {
 
@@ -62,13 +62,11 @@ struct PetscTsOptions {
   int max_newton_iterations = 10;
 };
 
-class PetscTsIntegrator final : public TimeIntegrator {
+class PetscTsIntegrator final : public StepStateIntegrator {
  public:
   // Collective. Reads the TS options database. Throws InputError if α is out of range.
   PetscTsIntegrator(assembly::SecondOrderSystem& system, const PetscTsOptions& options);
   ~PetscTsIntegrator() override;
-  PetscTsIntegrator(const PetscTsIntegrator&) = delete;
-  PetscTsIntegrator& operator=(const PetscTsIntegrator&) = delete;
 
   std::string name() const override;  // "petsc(<ts type>)"
   int order() const override;
@@ -77,14 +75,8 @@ class PetscTsIntegrator final : public TimeIntegrator {
   StepOutcome attempt(double h, const ErrorTolerance* tol) override;
   void accept() override;
   void interpolate(double t, Vec q, Vec v) override;
-  double time() const override;
-  double previous_time() const override;
-  Vec q() const override;
-  Vec v() const override;
-  Vec a() const override;  // Collective on first use after a step of a first-order type
-  Vec pending_q() const override;
-  Vec pending_v() const override;
   const IntegratorCounters& counters() const override;
+  // a() (StepStateIntegrator) is collective on first use after a step of a first-order type.
 
   // The TS type in use ("alpha2", "bdf", ...).
   std::string ts_type() const;

@@ -61,6 +61,11 @@ struct StepOutcome {
   std::string failure;
 };
 
+// Collective. For StepOutcome::worst_dof: the global DOF whose row of a Newton residual is
+// largest in magnitude, or −1 for an empty vector; each DOF owns rows_per_dof consecutive
+// rows (an IRK stage vector interleaves its s stages per DOF, the first-order form q and v).
+PetscInt worst_dof(Vec residual, PetscInt rows_per_dof = 1);
+
 class TimeIntegrator {
  public:
   virtual ~TimeIntegrator() = default;
