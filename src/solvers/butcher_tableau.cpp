@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "catena/core/error.hpp"
+#include "catena/model/integrator_catalogue.hpp"
 #include "tableau_collocation.hpp"
 
 namespace catena::solvers {
@@ -15,18 +16,16 @@ using detail::VectorL;
 
 struct FamilyInfo {
   TableauFamily family;
-  std::string_view name;
-  int min_stages, max_stages;
+  std::string_view name;  // the integrator type's (model/integrator_catalogue.hpp)
 };
 
-// The supported stage counts. The construction works for any s; beyond order 10 the
-// truncation error sinks below double rounding at any step size worth taking.
+// The families and their names; their facts (stage counts, estimate) are the catalogue's.
 constexpr std::array<FamilyInfo, 5> families{{
-    {TableauFamily::gauss, "gauss", 1, 5},
-    {TableauFamily::radau_iia, "radau_iia", 1, 5},
-    {TableauFamily::lobatto_iiia, "lobatto_iiia", 2, 5},
-    {TableauFamily::lobatto_iiic, "lobatto_iiic", 2, 5},
-    {TableauFamily::sdirk, "sdirk", 3, 3},
+    {TableauFamily::gauss, "gauss"},
+    {TableauFamily::radau_iia, "radau_iia"},
+    {TableauFamily::lobatto_iiia, "lobatto_iiia"},
+    {TableauFamily::lobatto_iiic, "lobatto_iiic"},
+    {TableauFamily::sdirk, "sdirk"},
 }};
 
 const FamilyInfo& info(TableauFamily family) {
@@ -137,8 +136,8 @@ void add_radau_estimate(ButcherTableau& t, const Coefficients& k) {
 }
 
 void check_stages(TableauFamily family, int stages) {
-  const FamilyInfo& f = info(family);
-  if (stages >= f.min_stages && stages <= f.max_stages) return;
+  const model::IntegratorType& f = integrator_type(family);
+  if (model::stages_accepted(f, stages)) return;
   std::ostringstream os;
   os << "Butcher tableau '" << f.name << "' with " << stages
      << " stages is not supported; accepted stage counts: " << f.min_stages;
@@ -180,14 +179,18 @@ ButcherTableau make_tableau(TableauFamily family, int stages) {
   t.A = to_double(k.a);
   t.b = to_double(k.b);
   t.c = to_double(k.c);
-  if (family == TableauFamily::radau_iia && stages % 2 == 1) add_radau_estimate(t, k);
+  if (model::has_embedded_estimate(integrator_type(family), stages, false)) {
+    CATENA_ASSERT(family == TableauFamily::radau_iia,
+                  "an embedded estimate in the catalogue for a family without its formula");
+    add_radau_estimate(t, k);
+  }
   return t;
 }
 
 TableauFamily parse_tableau_family(const std::string& name) {
-  if (name == "radau") return TableauFamily::radau_iia;
+  const model::IntegratorType* type = model::find_integrator_type(name);  // "radau" too
   for (const auto& f : families) {
-    if (name == f.name) return f.family;
+    if (type && type->name == f.name) return f.family;
   }
   throw InputError(InputLocation{}, "unknown Butcher tableau family '" + name +
                                         "'; accepted: gauss, radau, radau_iia, lobatto_iiia, "
@@ -195,6 +198,12 @@ TableauFamily parse_tableau_family(const std::string& name) {
 }
 
 std::string_view tableau_family_name(TableauFamily family) { return info(family).name; }
+
+const model::IntegratorType& integrator_type(TableauFamily family) {
+  const model::IntegratorType* type = model::find_integrator_type(info(family).name);
+  CATENA_ASSERT(type, "TableauFamily without an entry in the integrator catalogue");
+  return *type;
+}
 
 Eigen::MatrixXd a_squared(const ButcherTableau& tableau) {
   const MatrixL a = tableau.A.cast<Real>();

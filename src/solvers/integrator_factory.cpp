@@ -1,6 +1,7 @@
 #include "catena/solvers/integrator_factory.hpp"
 
 #include "catena/core/error.hpp"
+#include "catena/model/integrator_catalogue.hpp"
 #include "catena/solvers/hht_integrator.hpp"
 #include "catena/solvers/irk_integrator.hpp"
 #include "catena/solvers/petsc_ts_integrator.hpp"
@@ -9,6 +10,10 @@ namespace catena::solvers {
 
 std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& system,
                                                 const model::IntegratorOptions& o) {
+  // What the scene reader refuses with the scene's line; here for models built otherwise.
+  if (const std::optional<model::IntegratorRefusal> refusal =
+          model::refuse_integrator(o, system.model().constraints.size()))
+    throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
   if (o.type == "hht") {
     HhtOptions h;
     h.alpha = o.alpha;
@@ -20,12 +25,6 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     return std::make_unique<HhtIntegrator>(system, h);
   }
   if (o.type == "petsc") {
-    if (system.has_constraints())
-      throw InputError({"", 0, "integrator.type"},
-                       "integrator type 'petsc' takes no Lagrange-multiplier constraints (the "
-                       "scene has " + std::to_string(system.model().constraints.size()) +
-                       "): PETSc's TS sees an ODE; use hht or an implicit Runge-Kutta type, or "
-                       "supports instead of pinned constraints");
     // The TS method itself comes from the options database (-ts_type, ...).
     PetscTsOptions p;
     p.alpha = o.alpha;

@@ -6,6 +6,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/model/integrator_catalogue.hpp"
 #include "catena/solvers/algebraic_part.hpp"
 #include "catena/solvers/block_matrix.hpp"
 #include "catena/solvers/consistent_acceleration.hpp"
@@ -334,11 +335,13 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     }
   m.algebraic = std::make_unique<AlgebraicPart>(system, m.mass.get());
   if (m.algebraic->active()) {
-    if (m.T.A.row(0).isZero())
-      throw InputError({"", 0, "integrator.type"},
-                       m.T.name + " has an explicit first stage, which leaves its Lagrange "
-                                  "multipliers undetermined (singular stage matrix); with "
-                                  "constraints use gauss, radau, lobatto_iiic or sdirk");
+    // Lobatto IIIA: A's zero first row (explicit first stage) makes the stage matrix
+    // singular in the multiplier rows (the catalogue's refusal, also the scene reader's).
+    if (const std::optional<model::IntegratorRefusal> refusal =
+            model::refuse_integrator({.type = std::string(tableau_family_name(m.T.family)),
+                                      .stages = m.s},
+                                     system.model().constraints.size()))
+      throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
     if (m.T.family != TableauFamily::radau_iia)
       m.end_multipliers = std::make_unique<AccelerationSolver>(system, m.mass.get());
     m.mass_coupling = system.create_matrix();
@@ -387,7 +390,8 @@ int IrkIntegrator::order() const { return impl_->T.order; }
 // With constraints the Radau IIA estimate's filter (M − γhC − γ²h²K)⁻¹ would need the
 // index-3 treatment of RADAU5; step doubling serves there instead (docs/integrators.md).
 bool IrkIntegrator::has_embedded_estimate() const {
-  return impl_->T.e_embedded.has_value() && !impl_->algebraic->active();
+  return model::has_embedded_estimate(integrator_type(impl_->T.family), impl_->s,
+                                      impl_->algebraic->active());
 }
 int IrkIntegrator::estimate_order() const {
   return has_embedded_estimate() ? impl_->T.embedded_order + 1 : 0;

@@ -39,6 +39,8 @@
 #include <string>
 #include <string_view>
 
+#include "catena/model/integrator_catalogue.hpp"
+
 namespace catena::solvers {
 
 enum class TableauFamily { gauss, radau_iia, lobatto_iiia, lobatto_iiic, sdirk };
@@ -65,7 +67,8 @@ struct ButcherTableau {
 };
 
 // Not collective. Throws catena::InputError naming the family and the accepted stage
-// counts (gauss, radau_iia: 1..5; lobatto_iiia, lobatto_iiic: 2..5; sdirk: 3).
+// counts (model/integrator_catalogue.hpp: gauss, radau_iia: 1..5; lobatto_iiia,
+// lobatto_iiic: 2..5; sdirk: 3).
 ButcherTableau make_tableau(TableauFamily family, int stages);
 
 // "gauss", "radau" (= "radau_iia"), "radau_iia", "lobatto_iiia", "lobatto_iiic", "sdirk".
@@ -74,6 +77,9 @@ TableauFamily parse_tableau_family(const std::string& name);
 
 // The canonical name of a family ("radau_iia", ...), accepted by parse_tableau_family.
 std::string_view tableau_family_name(TableauFamily family);
+
+// The family's entry in the integrator catalogue (stage counts, estimate, what it refuses).
+const model::IntegratorType& integrator_type(TableauFamily family);
 
 // A², the K-form position weights: u_i = u0 + h c_i v0 + h² Σ_j (A²)_ij K_j. The sums are
 // accumulated in long double and rounded once. Not collective.
