@@ -303,8 +303,4 @@ const IntegratorCounters& HhtIntegrator::counters() const {
   return s.counters;
 }
 
-double HhtIntegrator::spectral_radius_at_infinity() const {
-  return (1.0 + impl_->options.alpha) / (1.0 - impl_->options.alpha);
-}
-
 }  // namespace catena::solvers

@@ -60,9 +60,6 @@ class HhtIntegrator final : public StepStateIntegrator {
   void restore_resume_state(const ResumeState& in) override;
   bool resumes_exactly() const override { return true; }
 
-  // Spectral radius at infinite h·ω for these options: (1 + α)/(1 − α).
-  double spectral_radius_at_infinity() const;
-
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -85,8 +85,6 @@ class ReusableNewton {
   // fresh tangent; `iterations` counts both attempts.
   NewtonResult solve(Vec x, double atol);
 
-  // The last residual evaluated and the iterate it was evaluated at (valid after solve).
-  Vec last_residual() const { return residual_; }
   const NewtonCounters& counters() const { return counters_; }
   KSP ksp() const;
 

@@ -1,10 +1,11 @@
 #pragma once
-// Static equilibrium f(q) = 0 by Newton's method (PETSc SNES, line search) with a direct
-// solve (KSPPREONLY + MUMPS LDLᵀ, the tangent being symmetric), continued along the load
-// path of elements::LoadPath from the stress-free reference configuration: tension the
-// cables, put on gravity and loads, release cable prestrain to its scene value. The step
-// along the path halves when Newton fails or converges to an unstable equilibrium
-// (negative pivots in the LDLᵀ factorisation) and doubles when Newton converges quickly.
+// Static equilibrium f(q) = 0 by Newton's method (PETSc SNES newtonls with full steps, no
+// line search: direct_newton.hpp) with a direct solve (KSPPREONLY + MUMPS LDLᵀ, the tangent
+// being symmetric), continued along the load path of elements::LoadPath from the
+// stress-free reference configuration: tension the cables, put on gravity and loads,
+// release cable prestrain to its scene value. The step along the path halves when Newton
+// fails or converges to an unstable equilibrium (negative pivots in the LDLᵀ factorisation)
+// and doubles when Newton converges quickly.
 // Every SNES convergence reason and MUMPS's status are checked.
 //
 // Options database prefix: -static_ (e.g. -static_snes_monitor, -static_ksp_type gmres,
