@@ -8,8 +8,8 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/reusable_newton.hpp"
-#include "catena/solvers/round_off_floor.hpp"
+#include "catena/solvers/newton/reusable_newton.hpp"
+#include "catena/solvers/newton/round_off_floor.hpp"
 
 namespace catena::solvers {
 namespace {

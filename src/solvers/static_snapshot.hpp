@@ -9,7 +9,7 @@
 
 #include "catena/core/vec3.hpp"
 #include "catena/model/model.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 
 namespace catena::solvers::detail {
 

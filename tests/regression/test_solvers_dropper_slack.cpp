@@ -51,10 +51,10 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/integrator_factory.hpp"
+#include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/shape_finding.hpp"
-#include "catena/solvers/static_solver.hpp"
-#include "catena/solvers/transient_solver.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/transient_solver.hpp"
 #include "petsc_test_session.hpp"
 
 namespace {

@@ -12,8 +12,8 @@
 
 #include "catena/core/error.hpp"
 #include "catena/model/integrator_catalogue.hpp"
-#include "catena/solvers/butcher_tableau.hpp"
-#include "catena/solvers/tableau_decomposition.hpp"
+#include "catena/solvers/time/irk/butcher_tableau.hpp"
+#include "catena/solvers/time/irk/tableau_decomposition.hpp"
 
 namespace {
 
