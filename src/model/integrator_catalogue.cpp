@@ -159,10 +159,10 @@ std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& opti
   if (options.error_estimate == "embedded" &&
       !has_embedded_estimate(*type, options.stages, constraints > 0)) {
     if (constraints > 0 && has_embedded_estimate(*type, options.stages, false))
-      return IntegratorRefusal{"error_estimate",
-                               name + stages + " has no embedded error estimate with constraints (" +
-                                   std::string(type->embedded_constraint_refusal) +
-                                   "); use step_doubling or auto"};
+      return IntegratorRefusal{
+          "error_estimate", name + stages + " has no embedded error estimate with constraints (" +
+                                std::string(type->embedded_constraint_refusal) +
+                                "); use step_doubling or auto"};
     return IntegratorRefusal{"error_estimate", name + stages +
                                                    " has no embedded error estimate (" +
                                                    embedded_owners() +

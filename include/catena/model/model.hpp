@@ -283,7 +283,7 @@ struct Model {
   OutputOptions output;
 
   // Set when the scene has a `catenary`: what the builder made and what shape finding
-  // (solvers/shape_finding.hpp) adjusts; empty otherwise.
+  // (catenary/shape_finding.hpp) adjusts; empty otherwise.
   std::optional<CatenaryLayout> catenary;
 };
 

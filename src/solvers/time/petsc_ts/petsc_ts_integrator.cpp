@@ -476,7 +476,8 @@ void PetscTsIntegrator::interpolate(double t, Vec q, Vec v) {
   Impl& s = *impl_;
   t = std::clamp(t, s.state.previous_time(), s.state.time());
   // TSInterpolate works on the TS's last step, which is ours only while synced.
-  if (s.state.time() > s.state.previous_time() && s.traits.dense == detail::TsDenseOutput::ts_interpolate && s.ts_interpolate_ok &&
+  if (s.state.time() > s.state.previous_time() &&
+      s.traits.dense == detail::TsDenseOutput::ts_interpolate && s.ts_interpolate_ok &&
       s.ts_state == TsState::synced && !s.second_order) {
     // A tableau without an interpolant is an error inside PETSc: ask quietly, fall back.
     CATENA_PETSC(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));

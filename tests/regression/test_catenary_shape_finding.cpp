@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/shape_finding.hpp"
+#include "catena/catenary/shape_finding.hpp"
 #include "petsc_test_session.hpp"
 #include "static_solution.hpp"
 
@@ -29,14 +29,14 @@ const std::string scene_file =
 
 struct Shaped {
   Model model;
-  solvers::ShapeFindingReport report;
+  catenary::ShapeFindingReport report;
   test::GatheredStatic statics;  // of the shaped model, solved independently
 };
 
 Shaped shape(const std::vector<std::string>& overrides = {}) {
   test::ensure_petsc();
   Shaped s{read_scene(scene_file, overrides), {}, {}};
-  s.report = solvers::find_catenary_shape(MPI_COMM_WORLD, s.model);
+  s.report = catenary::find_catenary_shape(MPI_COMM_WORLD, s.model);
   s.statics = test::solve_static(MPI_COMM_WORLD, s.model);
   std::printf(
       "  shape finding: %d whole-structure solves (%d in all), max error %.4f mm;"

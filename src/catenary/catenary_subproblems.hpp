@@ -15,7 +15,7 @@
 #include "catena/model/model.hpp"
 #include "static_snapshot.hpp"
 
-namespace catena::solvers::detail {
+namespace catena::catenary::detail {
 
 struct ContactWireLoads {
   std::vector<double> dropper_force;       // N, upward, per CatenaryLayout::droppers
@@ -63,4 +63,4 @@ double corrected_prestrain(double prestrain, double mean_force, double tension, 
 double sag_strain(const model::Model& model, const StaticSnapshot& snapshot,
                   const std::vector<int>& cables);
 
-}  // namespace catena::solvers::detail
+}  // namespace catena::catenary::detail

@@ -29,7 +29,7 @@
 #include "catena/model/model.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 
-namespace catena::solvers {
+namespace catena::catenary {
 
 struct ElasticityProbe {
   // The path: cable/beam element indices in path order, consecutive elements sharing a
@@ -50,7 +50,7 @@ struct ElasticityPoint {
 
 struct ElasticityReport {
   std::vector<ElasticityPoint> points;  // per ElasticityProbe::positions, same order
-  StaticReport base;                    // the equilibrium without the probe
+  solvers::StaticReport base;                    // the equilibrium without the probe
   long newton_iterations = 0;           // over all points
   long factorizations = 0;              // of the Newton matrix, over all points
 };
@@ -68,4 +68,4 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
 // element or the last node of one; −1 if it is on none.
 double path_arc_length_at(const model::Model& model, const std::vector<int>& path, int node);
 
-}  // namespace catena::solvers
+}  // namespace catena::catenary

@@ -2,7 +2,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 
-namespace catena::solvers::detail {
+namespace catena::catenary::detail {
 namespace {
 
 // Completes a model-ordered array that each rank filled only where it owns the value.
@@ -24,7 +24,7 @@ StaticSnapshot solve_static_snapshot(MPI_Comm comm, const model::Model& model) {
   assembly::SecondOrderSystem system(comm, model);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
-  StaticSolver solver(system, model.static_options);
+  solvers::StaticSolver solver(system, model.static_options);
   StaticSnapshot snapshot;
   snapshot.report = solver.solve(q.get());
 
@@ -71,4 +71,4 @@ double mean_axial_force(const model::Model& model, const StaticSnapshot& snapsho
   return length > 0.0 ? weighted / length : 0.0;
 }
 
-}  // namespace catena::solvers::detail
+}  // namespace catena::catenary::detail

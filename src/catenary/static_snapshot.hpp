@@ -1,6 +1,6 @@
 #pragma once
 // A static solve whose results every rank holds in model order: node positions, element
-// axial forces and support reactions. For solver-layer procedures that iterate on
+// axial forces and support reactions. For the catenary procedures that iterate on
 // whole-model quantities (shape finding) rather than on distributed vectors; the gather
 // costs O(n_nodes + n_elements) per solve.
 #include <mpi.h>
@@ -11,13 +11,13 @@
 #include "catena/model/model.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 
-namespace catena::solvers::detail {
+namespace catena::catenary::detail {
 
 struct StaticSnapshot {
   std::vector<Vec3> positions;      // m, per node
   std::vector<double> axial_force;  // N, per element, at its mid-point (tension > 0)
   std::vector<Vec3> reactions;      // N, per node: force of its supports on it (0 if none)
-  StaticReport report;
+  solvers::StaticReport report;
 };
 
 // Collective. Solves `model`'s static equilibrium from its reference configuration
@@ -30,4 +30,4 @@ StaticSnapshot solve_static_snapshot(MPI_Comm comm, const model::Model& model);
 double mean_axial_force(const model::Model& model, const StaticSnapshot& snapshot,
                         const std::vector<int>& elements);
 
-}  // namespace catena::solvers::detail
+}  // namespace catena::catenary::detail

@@ -8,7 +8,7 @@
 #include "catena/core/error.hpp"
 #include "static_snapshot.hpp"
 
-namespace catena::solvers::detail {
+namespace catena::catenary::detail {
 namespace {
 
 constexpr unsigned kFixPosition = 0b111u;  // x, y, z
@@ -282,4 +282,4 @@ MessengerShape solve_messenger_loaded(MPI_Comm comm, const model::Model& model,
   return shape;
 }
 
-}  // namespace catena::solvers::detail
+}  // namespace catena::catenary::detail

@@ -1,4 +1,4 @@
-#include "catena/solvers/static_elasticity.hpp"
+#include "catena/catenary/static_elasticity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
 
-namespace catena::solvers {
+namespace catena::catenary {
 namespace {
 
 // The probe walks the path at 1 m/s in a fictitious time from t = kProbeEntry on: at
@@ -91,7 +91,7 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
   VecHandle q0 = system.create_vector();
   system.reference_state(q0.get());
   {
-    StaticSolver statics(system, probed.static_options);
+    solvers::StaticSolver statics(system, probed.static_options);
     report.base = statics.solve(q0.get());
   }
 
@@ -109,17 +109,17 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
   }
   // Newton tolerance: the scene's absolute one raised by the residual's round-off floor
   // (round_off_floor.hpp), from the tangent at the base state.
-  RoundOffFloor round_off;
+  solvers::RoundOffFloor round_off;
   system.jacobian({q0.get(), nullptr, full_load, 0.0}, assembly::kStaticJacobian, J.get());
   round_off.set_tangent(J.get());
   const double atol = probed.static_options.atol + round_off.at(q0.get());
 
   // R(q) = f(q) − λ P: the structure at the end of the load path with λ of the probe.
   double lambda = 1.0;
-  NewtonSettings settings;
+  solvers::NewtonSettings settings;
   settings.max_iterations = probed.static_options.max_newton_iterations;
-  ReusableNewton newton(
-      comm, J.get(), residual.get(), "elasticity_", JacobianSymmetry::symmetric, settings,
+  solvers::ReusableNewton newton(
+      comm, J.get(), residual.get(), "elasticity_", solvers::JacobianSymmetry::symmetric, settings,
       [&](Vec x, Vec r) {
         system.force({x, nullptr, full_load, 0.0}, r);
         CATENA_PETSC(VecAXPY(r, -lambda, P.get()));
@@ -144,7 +144,7 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
     while (reached < 1.0) {
       lambda = std::min(1.0, reached + increment);
       CATENA_PETSC(VecCopy(q.get(), q_trial.get()));
-      const NewtonResult result = newton.solve(q_trial.get(), atol);
+      const solvers::NewtonResult result = newton.solve(q_trial.get(), atol);
       point.newton_iterations += result.iterations;
       if (result.converged) {
         CATENA_PETSC(VecCopy(q_trial.get(), q.get()));
@@ -173,4 +173,4 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
   return report;
 }
 
-}  // namespace catena::solvers
+}  // namespace catena::catenary

@@ -1,4 +1,4 @@
-// Static elasticity (solvers/static_elasticity.hpp) against closed forms, through the same
+// Static elasticity (catenary/static_elasticity.hpp) against closed forms, through the same
 // routine `catena elasticity` calls.
 //
 // A wire of tension T pinned at both ends (span L), pushed by a point force F at x = a:
@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/shape_finding.hpp"
-#include "catena/solvers/static_elasticity.hpp"
+#include "catena/catenary/shape_finding.hpp"
+#include "catena/catenary/static_elasticity.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 #include "static_solution.hpp"
@@ -76,15 +76,15 @@ double tensioned_beam_deflection(double F, double T, double EI, double L, double
   return F / T * (a * (L - a) / L - lambda * layer);
 }
 
-solvers::ElasticityReport wire_elasticity(const Wire& wire, const std::vector<double>& positions,
+catenary::ElasticityReport wire_elasticity(const Wire& wire, const std::vector<double>& positions,
                                           double F) {
   test::ensure_petsc();
   const model::Model m = wire.model();
-  solvers::ElasticityProbe probe;
+  catenary::ElasticityProbe probe;
   probe.path = all_elements(m);
   probe.positions = positions;
   probe.force = Vec3(0.0, 0.0, F);
-  return solvers::static_elasticity(MPI_COMM_WORLD, m, probe);
+  return catenary::static_elasticity(MPI_COMM_WORLD, m, probe);
 }
 
 const std::vector<double> kWirePoints{0.0, 1.0, 7.25, 15.0, 30.0, 44.6, 59.0, 60.0};
@@ -97,9 +97,9 @@ TEST(StaticElasticity, TautStringClosedFormWithin1Percent) {
   // 1 m from a support with h = 0.5 m).
   wire.n = 1200;
   const double F = 10.0;
-  const solvers::ElasticityReport r = wire_elasticity(wire, kWirePoints, F);
+  const catenary::ElasticityReport r = wire_elasticity(wire, kWirePoints, F);
   ASSERT_EQ(r.points.size(), kWirePoints.size());
-  for (const solvers::ElasticityPoint& p : r.points) {
+  for (const catenary::ElasticityPoint& p : r.points) {
     const double exact = string_deflection(F, wire.T, wire.L, p.position);
     std::printf("  x = %5.2f m: uplift %.6e m, string %.6e m, elasticity %.6f mm/N\n", p.position,
                 p.uplift, exact, 1e3 * p.elasticity);
@@ -115,8 +115,8 @@ TEST(StaticElasticity, TensionedBeamClosedForm) {
   Wire wire;     // the EN 50318 contact wire: EI = 195 N m², λ = 0.099 m
   wire.n = 600;  // 0.1 m elements: the bending layer under the load is resolved
   const double F = 10.0;
-  const solvers::ElasticityReport r = wire_elasticity(wire, kWirePoints, F);
-  for (const solvers::ElasticityPoint& p : r.points) {
+  const catenary::ElasticityReport r = wire_elasticity(wire, kWirePoints, F);
+  for (const catenary::ElasticityPoint& p : r.points) {
     if (p.position == 0.0 || p.position == wire.L) continue;
     const double exact = tensioned_beam_deflection(F, wire.T, wire.EI, wire.L, p.position);
     const double string = string_deflection(F, wire.T, wire.L, p.position);
@@ -133,7 +133,7 @@ TEST(StaticElasticity, TimeDependentConstraintsStayPut) {
   Wire wire;
   const std::vector<double> x{10.0, 30.0, 59.5};
   const double F = 10.0;
-  const solvers::ElasticityReport pinned = wire_elasticity(wire, x, F);
+  const catenary::ElasticityReport pinned = wire_elasticity(wire, x, F);
   model::Model m = wire.model();
   const int end = static_cast<int>(m.nodes.size()) - 1;
   std::erase_if(m.supports, [&](const model::Support& s) { return s.node == end; });
@@ -142,11 +142,11 @@ TEST(StaticElasticity, TimeDependentConstraintsStayPut) {
   moving.node_a = end;
   moving.velocity = Vec3(0.0, 0.0, 1.0);  // m/s
   m.constraints.push_back(moving);
-  solvers::ElasticityProbe probe;
+  catenary::ElasticityProbe probe;
   probe.path = all_elements(m);
   probe.positions = x;
   probe.force = Vec3(0.0, 0.0, F);
-  const solvers::ElasticityReport held = solvers::static_elasticity(MPI_COMM_WORLD, m, probe);
+  const catenary::ElasticityReport held = catenary::static_elasticity(MPI_COMM_WORLD, m, probe);
   for (std::size_t i = 0; i < x.size(); ++i)
     EXPECT_NEAR(held.points[i].uplift / pinned.points[i].uplift, 1.0, 1e-8) << "x = " << x[i];
 }
@@ -156,7 +156,7 @@ model::Model shape_catenary(const std::vector<std::string>& overrides) {
   const std::string scene =
       (fs::path(CATENA_TEST_DATA) / "good_scenes" / "catenary_3span.yaml").string();
   model::Model shaped = model::read_scene(scene, overrides);
-  solvers::find_catenary_shape(MPI_COMM_WORLD, shaped);
+  catenary::find_catenary_shape(MPI_COMM_WORLD, shaped);
   return shaped;
 }
 
@@ -175,13 +175,13 @@ int contact_node_at(const model::Model& m, double x) {
   return 0;
 }
 
-solvers::ElasticityReport catenary_elasticity(const std::vector<double>& positions, double F,
+catenary::ElasticityReport catenary_elasticity(const std::vector<double>& positions, double F,
                                               const model::Model& m = shaped_catenary()) {
-  solvers::ElasticityProbe probe;
+  catenary::ElasticityProbe probe;
   probe.path = m.catenary->contact_wire.elements;
   probe.positions = positions;
   probe.force = Vec3(0.0, 0.0, F);
-  return solvers::static_elasticity(MPI_COMM_WORLD, m, probe);
+  return catenary::static_elasticity(MPI_COMM_WORLD, m, probe);
 }
 
 // At nodes the probe is a nodal force: two independent static solves from the reference
@@ -191,7 +191,7 @@ TEST(StaticElasticity, CatenaryAgreesWithIndependentStaticSolves) {
   const model::Model& m = shaped_catenary();
   const double F = 100.0;
   const std::vector<double> x{60.0, 62.0, 65.0, 90.0};  // steady arm, mid-element, dropper, mid
-  const solvers::ElasticityReport r = catenary_elasticity(x, F);
+  const catenary::ElasticityReport r = catenary_elasticity(x, F);
   const test::GatheredStatic base = test::solve_static(MPI_COMM_WORLD, m);
   for (std::size_t i = 0; i < x.size(); ++i) {
     model::Model loaded = m;
@@ -208,13 +208,13 @@ TEST(StaticElasticity, CatenaryAgreesWithIndependentStaticSolves) {
 TEST(StaticElasticity, CatenaryMidSpanSofterThanSupportAndLinearForSmallForces) {
   const model::Model& m = shaped_catenary();
   const double support =
-      solvers::path_arc_length_at(m, m.catenary->contact_wire.elements, m.registration_nodes[1]);
+      catenary::path_arc_length_at(m, m.catenary->contact_wire.elements, m.registration_nodes[1]);
   ASSERT_NEAR(support, 60.0, 1e-9);
   const std::vector<double> x{support, support + 30.0};  // steady arm, mid-span of span 2
   std::vector<std::vector<double>> e;                    // mm/N, per force, per point
   const std::vector<double> forces{10.0, 20.0, 100.0, 200.0};
   for (const double F : forces) {
-    const solvers::ElasticityReport r = catenary_elasticity(x, F);
+    const catenary::ElasticityReport r = catenary_elasticity(x, F);
     e.push_back({1e3 * r.points[0].elasticity, 1e3 * r.points[1].elasticity});
     std::printf("  %5.0f N: steady arm %.5f mm/N, mid-span %.5f mm/N\n", F, e.back()[0],
                 e.back()[1]);
@@ -250,9 +250,9 @@ TEST(StaticElasticity, StitchWiresSoftenTheSupportsAndEvenTheSpan) {
     double support = 0.0, mid = 0.0, min = 1e9, max = 0.0;  // mm/N
   };
   const auto curve = [&](const model::Model& m) {
-    const solvers::ElasticityReport r = catenary_elasticity(x, F, m);
+    const catenary::ElasticityReport r = catenary_elasticity(x, F, m);
     Curve c;
-    for (const solvers::ElasticityPoint& p : r.points) {
+    for (const catenary::ElasticityPoint& p : r.points) {
       c.min = std::min(c.min, 1e3 * p.elasticity);
       c.max = std::max(c.max, 1e3 * p.elasticity);
     }

@@ -1,4 +1,4 @@
-#include "catena/solvers/shape_finding.hpp"
+#include "catena/catenary/shape_finding.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "catenary_subproblems.hpp"
 #include "static_snapshot.hpp"
 
-namespace catena::solvers {
+namespace catena::catenary {
 namespace {
 
 using model::BarProps;
@@ -343,4 +343,4 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
   return report;
 }
 
-}  // namespace catena::solvers
+}  // namespace catena::catenary

@@ -25,7 +25,7 @@
 
 #include "catena/model/model.hpp"
 
-namespace catena::solvers {
+namespace catena::catenary {
 
 struct ShapeFindingOptions {
   double height_tolerance = 1e-4;  // m: max |z − z_design| at droppers and held registrations
@@ -62,4 +62,4 @@ struct ShapeFindingReport {
 ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
                                        const ShapeFindingOptions& options = {});
 
-}  // namespace catena::solvers
+}  // namespace catena::catenary
