@@ -42,11 +42,11 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/direct_newton.hpp"
-#include "catena/solvers/integrator_factory.hpp"
-#include "catena/solvers/irk_integrator.hpp"
-#include "catena/solvers/static_solver.hpp"
-#include "catena/solvers/transient_solver.hpp"
+#include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/time/integrator_factory.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/transient_solver.hpp"
 
 namespace {
 
@@ -308,7 +308,7 @@ int main(int argc, char** argv) {
   const EventTotals factor = event_totals(comm, steps_stage, "MatLUFactorNum");
   const EventTotals solve = event_totals(comm, steps_stage, "MatSolve");
   const EventTotals analysis = event_totals(comm, first_stage, "MatLUFactorSym");
-  // HHT's local Newton corrections (solvers/local_newton.hpp; 0 if none ran).
+  // HHT's local Newton corrections (solvers/newton/local_newton.hpp; 0 if none ran).
   const EventTotals local = event_totals(comm, steps_stage, "CatLocalNewton");
   const double t_step = rest_seconds / n_rest;
   const double accounted =

@@ -19,8 +19,8 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/mumps_status.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/newton/mumps_status.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 
 namespace {
 

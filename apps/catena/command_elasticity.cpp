@@ -3,7 +3,7 @@
 // "Elasticity"). The scene's catenary is built and shaped as `catena run` does it
 // (shape_catenary), its static equilibrium solved, and then, for points every DX along
 // the span from support to support, the equilibrium with a static upward force F at the
-// point (solvers::static_elasticity). Only the static structure counts: the scene's
+// point (catenary::static_elasticity). Only the static structure counts: the scene's
 // pantographs and moving loads are left out, its dynamic settings unused.
 //
 //   catena elasticity meshes/simple_catenary.yaml
@@ -17,7 +17,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
 #include "catena/post/elasticity_summary.hpp"
-#include "catena/solvers/static_elasticity.hpp"
+#include "catena/catenary/static_elasticity.hpp"
 #include "commands.hpp"
 #include "elasticity_report.hpp"
 #include "scene_loading.hpp"
@@ -112,7 +112,7 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
   const std::vector<int>& path = m.catenary->contact_wire.elements;
   std::vector<double> support_arc;  // m along the contact wire, at each support
   for (const int node : m.registration_nodes)
-    support_arc.push_back(solvers::path_arc_length_at(m, path, node));
+    support_arc.push_back(catenary::path_arc_length_at(m, path, node));
   const int span = chosen_span(cl, m, support_arc);
   const std::vector<double>& support_x = m.catenary->support_x;
   const auto j = static_cast<std::size_t>(span);
@@ -138,17 +138,17 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
   shape_catenary(comm, m, info);  // as `catena run`: dropper lengths, preloads, prestrains
 
   const double t0 = MPI_Wtime();
-  solvers::ElasticityProbe probe;
+  catenary::ElasticityProbe probe;
   probe.path = path;
   for (const double xi : x) probe.positions.push_back(support_arc[j - 1] + xi * wire_per_track);
   probe.force = Vec3(0.0, 0.0, args.force);  // up: a catenary's z axis (docs/catenary.md)
-  const solvers::ElasticityReport report = solvers::static_elasticity(comm, m, probe);
+  const catenary::ElasticityReport report = catenary::static_elasticity(comm, m, probe);
 
   ElasticityCurve curve;
   curve.span = span;
   curve.force = args.force;
   curve.x = x;
-  for (const solvers::ElasticityPoint& p : report.points) {
+  for (const catenary::ElasticityPoint& p : report.points) {
     curve.uplift.push_back(1e3 * p.uplift);
     curve.elasticity.push_back(1e3 * p.elasticity);
   }

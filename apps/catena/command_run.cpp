@@ -11,7 +11,7 @@
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/io/output_lock.hpp"
 #include "catena/io/run_files.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
 #include "output_preflight.hpp"
 #include "run_info.hpp"

@@ -7,8 +7,8 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/io/checkpoint.hpp"
-#include "catena/solvers/time_integrator.hpp"
-#include "catena/solvers/transient_solver.hpp"
+#include "catena/solvers/time/time_integrator.hpp"
+#include "catena/solvers/time/transient_solver.hpp"
 
 namespace catena::app {
 

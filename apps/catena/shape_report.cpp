@@ -8,7 +8,7 @@
 #include <variant>
 
 #include "catena/core/mpi_comm.hpp"
-#include "catena/solvers/shape_finding.hpp"
+#include "catena/catenary/shape_finding.hpp"
 
 namespace catena::app {
 namespace {
@@ -20,8 +20,8 @@ void print_axial_mode(std::FILE* out, const model::Model& m) {
                omega / (2.0 * std::numbers::pi), omega);
 }
 
-void print_report(std::FILE* out, const model::Model& m, const solvers::ShapeFindingReport& r,
-                  double seconds, const solvers::ShapeFindingOptions& options) {
+void print_report(std::FILE* out, const model::Model& m, const catenary::ShapeFindingReport& r,
+                  double seconds, const catenary::ShapeFindingOptions& options) {
   const model::CatenaryLayout& layout = *m.catenary;
   std::fprintf(out, "shape finding: %d whole-structure static solves (%d in all), %.2f s\n",
                r.n_iterations, r.n_static_solves, seconds);
@@ -107,9 +107,9 @@ void warn_unresolved_dropper_mode(const model::Model& m, std::FILE* out) {
 
 void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out) {
   if (!m.catenary) return;
-  const solvers::ShapeFindingOptions options;
+  const catenary::ShapeFindingOptions options;
   const double start = MPI_Wtime();
-  const solvers::ShapeFindingReport report = solvers::find_catenary_shape(comm, m, options);
+  const catenary::ShapeFindingReport report = catenary::find_catenary_shape(comm, m, options);
   if (mpi_rank(comm) == 0) print_report(out, m, report, MPI_Wtime() - start, options);
 }
 

@@ -9,7 +9,7 @@
 
 namespace catena::app {
 
-// Collective. When m has a catenary, runs solvers::find_catenary_shape (which sets the
+// Collective. When m has a catenary, runs catenary::find_catenary_shape (which sets the
 // dropper lengths, steady-arm preloads and wire prestrains in m) and prints its report on
 // rank 0 to `out` (stderr where stdout carries JSON); does nothing otherwise.
 void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out = stdout);

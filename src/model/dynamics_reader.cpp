@@ -5,60 +5,51 @@
 #include <map>
 #include <numbers>
 
+#include "catena/model/integrator_catalogue.hpp"
 #include "did_you_mean.hpp"
 #include "number_format.hpp"
 
 namespace catena::model::detail {
 namespace {
 
-// Stage counts per tableau family, as make_tableau accepts them
-// (include/catena/solvers/butcher_tableau.hpp; the model layer cannot call the solvers).
-struct Family {
-  const char* name;
-  int min_stages, max_stages;
-};
-constexpr Family kFamilies[] = {{"gauss", 1, 5},        {"radau_iia", 1, 5},
-                                {"lobatto_iiia", 2, 5}, {"lobatto_iiic", 2, 5},
-                                {"sdirk", 3, 3}};
-
-const Family* irk_family(const std::string& type) {
-  for (const Family& f : kFamilies)
-    if (type == f.name) return &f;
-  return nullptr;
-}
-
 void fail_if_present(const Field& f, const std::string& why) {
   if (f.present()) f.fail(why);
 }
 
-void read_integrator(const Field& in, IntegratorOptions& o) {
+// What the integrator types are and which keys apply to each: model/integrator_catalogue.hpp,
+// which the solvers ask too. `constraints`: the scene's Lagrange-multiplier constraints.
+void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions& o) {
   if (!in.present()) return;
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
                  "error_estimate", "newton", "newton_rtol", "newton_atol",
                  "max_newton_iterations", "linear_algebra", "local_newton"});
-  static const std::vector<std::string> types{"hht",          "gauss",        "radau",
-                                              "radau_iia",    "lobatto_iiia", "lobatto_iiic",
-                                              "sdirk",        "petsc"};
   const Field type = in.child("type");
   o.type = type.text_or(o.type);
-  if (o.type == "radau") o.type = "radau_iia";
-  if (std::find(types.begin(), types.end(), o.type) == types.end())
-    type.fail("unknown integrator type '" + o.type + "';" + did_you_mean(o.type, types) +
-              " accepted: hht, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, sdirk, "
-              "petsc");
-  const Family* family = irk_family(o.type);
+  const IntegratorType* facts = find_integrator_type(o.type);
+  if (!facts) {
+    std::vector<std::string> names;
+    for (const IntegratorType& t : integrator_types()) {
+      names.emplace_back(t.name);
+      if (!t.alias.empty()) names.emplace_back(t.alias);
+    }
+    type.fail("unknown integrator type '" + o.type + "';" + did_you_mean(o.type, names) +
+              " accepted: " + integrator_type_list());
+  }
+  o.type = facts->name;  // canonical: "radau" is stored as "radau_iia"
+  const bool family = facts->method == IntegratorMethod::irk;
+  const std::string irk_names = integrator_names(IntegratorMethod::irk);
   const Field stages = in.child("stages");
   if (family) {
     o.stages = static_cast<int>(stages.integer_or(
-        o.type == "sdirk" ? 3 : o.stages, IntRange::between(family->min_stages, family->max_stages)));
+        default_stages(*facts, o.stages), IntRange::between(facts->min_stages, facts->max_stages)));
   } else {
-    fail_if_present(stages, "'stages' applies to the implicit Runge-Kutta types (gauss, radau, "
-                            "lobatto_iiia, lobatto_iiic, sdirk), not to " + o.type);
+    fail_if_present(stages, "'stages' applies to the implicit Runge-Kutta types (" + irk_names +
+                                "), not to " + o.type);
   }
   const Field alpha = in.child("alpha");
   // petsc: HHT's alpha mapped onto -ts_type alpha2 (ignored by the other TS types).
-  if (o.type == "hht" || o.type == "petsc")
+  if (facts->takes_alpha)
     o.alpha = alpha.real_or(o.alpha, RealRange::between(-1.0 / 3.0, true, 0.0, true, ""));
   else
     fail_if_present(alpha, "'alpha' applies to integrator type hht only (and petsc, for "
@@ -87,25 +78,16 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
     estimate.fail("unknown error estimate '" + o.error_estimate + "';" +
                   did_you_mean(o.error_estimate, estimates) +
                   " accepted: auto, embedded, step_doubling");
-  const bool has_embedded = o.type == "hht" || (o.type == "radau_iia" && o.stages % 2 == 1);
-  if (o.error_estimate == "embedded" && !has_embedded)
-    estimate.fail(o.type + (family ? " with " + std::to_string(o.stages) + " stages" : "") +
-                  " has no embedded error estimate (hht and radau with 1, 3 or 5 stages have); "
-                  "use step_doubling or auto");
   const Field newton = in.child("newton");
-  if (family) {
+  if (facts->takes_newton) {
     o.newton = newton.text_or(o.newton);
     if (o.newton != "simplified" && o.newton != "full")
       newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
-  } else if (o.type == "petsc") {
-    fail_if_present(newton, "'newton' applies to hht and the implicit Runge-Kutta types");
   } else {
-    o.newton = newton.text_or(o.newton);
-    if (o.newton != "simplified" && o.newton != "full")
-      newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
+    fail_if_present(newton, "'newton' applies to hht and the implicit Runge-Kutta types");
   }
   const Field local_newton = in.child("local_newton");
-  if (o.type == "hht")
+  if (facts->takes_local_newton)
     o.local_newton = local_newton.boolean_or(o.local_newton);
   else
     fail_if_present(local_newton, "'local_newton' applies to hht only");
@@ -117,28 +99,21 @@ void read_integrator(const Field& in, IntegratorOptions& o) {
       linear_algebra.fail("unknown stage linear algebra '" + o.linear_algebra + "';" +
                           did_you_mean(o.linear_algebra, choices) +
                           " accepted: auto, decoupled, coupled");
-    // Where the decoupled solve is not exact (solvers/tableau_decomposition.hpp): the
-    // solver checks again from the tableau itself; here the message can name the line.
-    std::string why;
-    if (o.newton == "full")
-      why = "full Newton linearises every stage at its own state (no Kronecker form)";
-    else if (o.type == "lobatto_iiia")
-      why = "lobatto_iiia's A is singular (its explicit first stage)";
-    else if (o.type == "sdirk")
-      why = "sdirk's A has a triple eigenvalue (not diagonalisable)";
-    if (o.linear_algebra == "decoupled" && !why.empty())
-      linear_algebra.fail("linear_algebra: decoupled is not exact here: " + why +
-                          "; use auto or coupled");
   } else {
-    fail_if_present(linear_algebra, "'linear_algebra' applies to the implicit Runge-Kutta types "
-                                    "(gauss, radau, lobatto_iiia, lobatto_iiic, sdirk), not to " +
-                                        o.type);
+    fail_if_present(linear_algebra, "'linear_algebra' applies to the implicit Runge-Kutta types (" +
+                                        irk_names + "), not to " + o.type);
   }
   o.newton_rtol = in.child("newton_rtol")
                       .real_or(o.newton_rtol, RealRange::between(0.0, false, 1e-3, true, ""));
   o.newton_atol = in.child("newton_atol").real_or(o.newton_atol, RealRange::positive("N"));
   o.max_newton_iterations = static_cast<int>(
       in.child("max_newton_iterations").integer_or(o.max_newton_iterations, IntRange::between(1, 1000)));
+  // The combinations the solvers refuse (constraints, the embedded estimate, the decoupled
+  // solve), here where the message can name the line.
+  if (const std::optional<IntegratorRefusal> refusal = refuse_integrator(o, constraints)) {
+    const Field key = in.child(refusal->key);
+    (key.present() ? key : in).fail(refusal->why);
+  }
 }
 
 // Nodes of the line named `name` from its `from` to its `to` node (empty if none).
@@ -240,7 +215,8 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
-  read_integrator(scene.child("integrator"), model.dynamic_options.integrator);
+  read_integrator(scene.child("integrator"), model.constraints.size(),
+                  model.dynamic_options.integrator);
   check_step_within_duration(scene.child("integrator").child("dt"), duration,
                              model.dynamic_options);
 }

@@ -1,7 +1,7 @@
 #include "catena/solvers/resume_state.hpp"
 
 #include "catena/core/error.hpp"
-#include "catena/solvers/time_integrator.hpp"
+#include "catena/solvers/time/time_integrator.hpp"
 
 namespace catena::solvers {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"

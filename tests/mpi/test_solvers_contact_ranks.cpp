@@ -11,8 +11,8 @@
 #include <utility>
 
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"

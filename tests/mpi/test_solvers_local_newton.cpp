@@ -1,5 +1,5 @@
 // Local Newton corrections on 1, 2 and 3 ranks (assembly/local_patch.hpp,
-// solvers/local_newton.hpp).
+// solvers/newton/local_newton.hpp).
 //
 // The patch evaluations must be exactly the whole system's where they claim to be: the
 // force and the Newton matrix in the unknowns' rows, M d for d on the unknowns, and a
@@ -19,9 +19,9 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/static_solver.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/local_newton.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/newton/local_newton.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"

@@ -16,9 +16,9 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/irk_integrator.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"

@@ -51,10 +51,10 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/integrator_factory.hpp"
-#include "catena/solvers/shape_finding.hpp"
-#include "catena/solvers/static_solver.hpp"
-#include "catena/solvers/transient_solver.hpp"
+#include "catena/solvers/time/integrator_factory.hpp"
+#include "catena/catenary/shape_finding.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/transient_solver.hpp"
 #include "petsc_test_session.hpp"
 
 namespace {
@@ -207,7 +207,7 @@ SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
   test::ensure_petsc();
   model::Model m = model::read_scene(
       scene_file, overrides(integrator_settings, dropper_stiffness, droppers));
-  solvers::find_catenary_shape(MPI_COMM_WORLD, m);  // without the pantograph's force
+  catenary::find_catenary_shape(MPI_COMM_WORLD, m);  // without the pantograph's force
   const double wall_start = MPI_Wtime();
   assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
   VecHandle q = system.create_vector(), v = system.create_vector();

@@ -11,7 +11,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/hht_integrator.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"

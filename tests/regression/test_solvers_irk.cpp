@@ -11,7 +11,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 

@@ -33,8 +33,8 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/irk_integrator.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 

@@ -14,8 +14,8 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "petsc_test_session.hpp"

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "catena/assembly/second_order_system.hpp"
-#include "catena/solvers/hht_integrator.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 

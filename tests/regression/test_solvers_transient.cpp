@@ -9,9 +9,9 @@
 #include <numbers>
 
 #include "catena/core/error.hpp"
-#include "catena/solvers/hht_integrator.hpp"
-#include "catena/solvers/irk_integrator.hpp"
-#include "catena/solvers/transient_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/transient_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/solvers/butcher_tableau.hpp"
+#include "catena/solvers/time/irk/butcher_tableau.hpp"
 
 namespace {
 

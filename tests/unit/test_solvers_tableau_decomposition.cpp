@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "catena/solvers/butcher_tableau.hpp"
-#include "catena/solvers/tableau_decomposition.hpp"
+#include "catena/solvers/time/irk/butcher_tableau.hpp"
+#include "catena/solvers/time/irk/tableau_decomposition.hpp"
 
 namespace {
 

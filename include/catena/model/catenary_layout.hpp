@@ -2,7 +2,7 @@
 // What the catenary builder (scene key `catenary`, docs/catenary.md) put into a Model:
 // which elements are the contact wire, the messenger, the stitch wires and the droppers
 // (and which wire each dropper hangs from), where the wire must be (the design heights),
-// and which values shape finding (solvers/shape_finding.hpp) may change. Plain data;
+// and which values shape finding (catenary/shape_finding.hpp) may change. Plain data;
 // indices are 0-based positions in the Model's vectors. Units SI; z is up (the builder
 // requires gravity along −z).
 #include <array>

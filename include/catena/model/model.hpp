@@ -171,7 +171,7 @@ enum class AnalysisType { static_equilibrium, dynamic };
 // Time integrator settings (docs/integrators.md). `type` selects the method:
 //   hht                                    HHT-α (alpha)
 //   gauss, radau_iia, lobatto_iiia,        implicit Runge–Kutta in K-form with `stages`
-//   lobatto_iiic, sdirk                    (see solvers/butcher_tableau.hpp)
+//   lobatto_iiic, sdirk                    (see solvers/time/irk/butcher_tableau.hpp)
 //   petsc                                  PETSc TS (-ts_type alpha2, bdf, rosw, theta, ...)
 struct IntegratorOptions {
   std::string type = "hht";  // canonical names: "radau" is stored as "radau_iia"
@@ -189,7 +189,7 @@ struct IntegratorOptions {
   // IRK stage Newton: auto (decoupled where exact) | decoupled | coupled
   std::string linear_algebra = "auto";
   // HHT: finish Newton solves whose residual is left in a few windows by Newton on those
-  // windows (solvers/local_newton.hpp).
+  // windows (solvers/newton/local_newton.hpp).
   bool local_newton = true;
   double newton_rtol = 1e-10;  // Newton residual tolerance, relative to the force scale
   double newton_atol = 1e-8;   // N
@@ -293,7 +293,7 @@ struct Model {
   OutputOptions output;
 
   // Set when the scene has a `catenary`: what the builder made and what shape finding
-  // (solvers/shape_finding.hpp) adjusts; empty otherwise.
+  // (catenary/shape_finding.hpp) adjusts; empty otherwise.
   std::optional<CatenaryLayout> catenary;
 };
 

@@ -6,8 +6,8 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/model/model.hpp"
-#include "catena/solvers/butcher_tableau.hpp"
-#include "catena/solvers/time_integrator.hpp"
+#include "catena/solvers/time/irk/butcher_tableau.hpp"
+#include "catena/solvers/time/time_integrator.hpp"
 
 namespace catena::test {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "catena/model/model.hpp"
-#include "catena/solvers/static_solver.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 
 namespace catena::test {
 

@@ -1,0 +1,68 @@
+#pragma once
+// HHT-α (Hilber, Hughes & Taylor, Earthquake Eng. Struct. Dyn. 5 (1977) 283–292) for
+//   M a + f(t, q, v) = 0          (f = f_int + f_damp − f_ext, see elements/element.hpp)
+// in the form of Negrut, Rampalli, Ottarsson & Sajdak (J. Comput. Nonlinear Dyn. 2 (2007)
+// 73–85), with the new acceleration as the unknown:
+//   M a₁ + (1 + α) f(t₁, q₁, v₁) − α f(t₀, q₀, v₀) = 0,
+//   q₁ = q₀ + h v₀ + h² [(½ − β) a₀ + β a₁],   v₁ = v₀ + h [(1 − γ) a₀ + γ a₁],
+//   β = (1 − α)²/4,  γ = ½ − α,  α ∈ [−1/3, 0].
+// Newton's matrix is J = M + (1 + α)(γ h C + β h² K): c_M = 1, c_C = (1+α)γh,
+// c_K = (1+α)βh². Second order; unconditionally stable for linear problems; spectral
+// radius (1 + α)/(1 − α) as h·ω → ∞ (α = 0: the trapezoidal rule, no numerical damping).
+//
+// Newton: ReusableNewton — the matrix (and its factorisation) is kept across steps of
+// equal h while the iteration contracts fast (simplified Newton), or rebuilt at every
+// iterate (full Newton).
+// Local error estimate (Zienkiewicz & Xie, Earthquake Eng. Struct. Dyn. 20 (1991) 871–887):
+//   e_q = h² (β − 1/6)(a₁ − a₀) = O(h³),
+// the difference between the Newmark displacement and a Taylor expansion with a linear
+// acceleration; it costs two vector operations.
+// Dense output: cubic Hermite interpolation of q from (q, v) and of v from (v, a) at both
+// ends of the step (third order, above the method's second).
+//
+// Options database prefix: -hht_ (e.g. -hht_snes_monitor, -hht_pc_type lu).
+#include <memory>
+
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/solvers/newton/local_newton.hpp"
+#include "catena/solvers/time/step_state.hpp"
+
+namespace catena::solvers {
+
+struct HhtOptions {
+  double alpha = -0.1;  // ∈ [−1/3, 0]
+  double rtol = 1e-10;  // Newton: relative to the step's force scale
+  double atol = 1e-8;   // N
+  int max_newton_iterations = 10;
+  bool full_newton = false;
+  // Local Newton correction (local_newton.hpp) and its settings; -hht_local_newton_layers
+  // (0: off), -hht_local_newton_worn and -hht_local_newton_max_window override them.
+  bool local_newton = true;
+  LocalNewtonSettings local_newton_settings;
+};
+
+class HhtIntegrator final : public StepStateIntegrator {
+ public:
+  // Collective. Throws InputError if α is out of range.
+  HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options);
+  ~HhtIntegrator() override;
+
+  std::string name() const override;
+  int order() const override { return 2; }
+  bool has_embedded_estimate() const override { return true; }
+  int estimate_order() const override { return 3; }
+  void set_state(double t, Vec q, Vec v, Vec a) override;
+  StepOutcome attempt(double h, const ErrorTolerance* tol) override;
+  void accept() override;
+  void interpolate(double t, Vec q, Vec v) override;
+  const IntegratorCounters& counters() const override;
+  void save_resume_state(ResumeState& out) const override;
+  void restore_resume_state(const ResumeState& in) override;
+  bool resumes_exactly() const override { return true; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace catena::solvers

@@ -1,0 +1,184 @@
+#include "catena/model/integrator_catalogue.hpp"
+
+#include <array>
+#include <vector>
+
+namespace catena::model {
+namespace {
+
+using M = IntegratorMethod;
+using E = EmbeddedEstimate;
+
+// The stage counts: the tableau construction works for any s; beyond order 10 the
+// truncation error sinks below double rounding at any step size worth taking. The reasons
+// are those of the solvers (irk_integrator.hpp, tableau_decomposition.hpp,
+// petsc_ts_integrator.hpp; docs/integrators.md).
+constexpr std::string_view kExplicitFirstStage =
+    "its explicit first stage leaves the Lagrange multipliers undetermined (singular stage "
+    "matrix)";
+constexpr std::string_view kRadauFilter =
+    "its filter would need RADAU5's index-3 treatment";
+
+constexpr std::array<IntegratorType, 7> kTypes{{
+    {.name = "hht",
+     .alias = "",
+     .method = M::hht,
+     .embedded = E::always,
+     .takes_alpha = true,
+     .takes_newton = true,
+     .takes_local_newton = true},
+    {.name = "gauss", .alias = "", .method = M::irk, .min_stages = 1, .max_stages = 5,
+     .takes_newton = true},
+    {.name = "radau_iia",
+     .alias = "radau",
+     .method = M::irk,
+     .min_stages = 1,
+     .max_stages = 5,
+     .embedded = E::odd_stages,
+     .embedded_constraint_refusal = kRadauFilter,
+     .takes_newton = true},
+    {.name = "lobatto_iiia",
+     .alias = "",
+     .method = M::irk,
+     .min_stages = 2,
+     .max_stages = 5,
+     .constraint_refusal = kExplicitFirstStage,
+     .decoupled_refusal = "A is singular (its explicit first stage)",
+     .takes_newton = true},
+    {.name = "lobatto_iiic", .alias = "", .method = M::irk, .min_stages = 2, .max_stages = 5,
+     .takes_newton = true},
+    {.name = "sdirk",
+     .alias = "",
+     .method = M::irk,
+     .min_stages = 3,
+     .max_stages = 3,
+     .decoupled_refusal = "A has a triple eigenvalue (not diagonalisable)",
+     .takes_newton = true},
+    {.name = "petsc",
+     .alias = "",
+     .method = M::petsc_ts,
+     .constraint_refusal = "PETSc's TS sees an ODE",
+     .takes_alpha = true},
+}};
+
+// The name the scene docs use: the alias where there is one ("radau").
+std::string_view scene_name(const IntegratorType& t) { return t.alias.empty() ? t.name : t.alias; }
+
+// "a, b <last> c": the items joined by commas, the last by `last` (" or ", " and ").
+std::string join(const std::vector<std::string>& items, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? last : ", ") + items[i];
+  return out;
+}
+
+std::string types_taking_constraints() {
+  std::vector<std::string> names;
+  for (const IntegratorType& t : kTypes)
+    if (t.constraint_refusal.empty()) names.emplace_back(scene_name(t));
+  return join(names, " or ");
+}
+
+// "hht and radau with 1, 3 or 5 stages".
+std::string embedded_owners() {
+  std::vector<std::string> owners;
+  for (const IntegratorType& t : kTypes) {
+    if (t.embedded == E::none) continue;
+    owners.emplace_back(scene_name(t));
+    if (t.embedded == E::odd_stages) {
+      std::vector<std::string> odd;
+      for (int s = t.min_stages; s <= t.max_stages; ++s)
+        if (s % 2 == 1) odd.push_back(std::to_string(s));
+      owners.back() += " with " + join(odd, " or ") + " stages";
+    }
+  }
+  return join(owners, " and ");
+}
+
+}  // namespace
+
+std::span<const IntegratorType> integrator_types() { return kTypes; }
+
+const IntegratorType* find_integrator_type(std::string_view name) {
+  for (const IntegratorType& t : kTypes)
+    if (name == t.name || (!t.alias.empty() && name == t.alias)) return &t;
+  return nullptr;
+}
+
+std::string integrator_type_list() {
+  std::string list;
+  for (const IntegratorType& t : kTypes) {
+    list += (list.empty() ? "" : ", ") + std::string(scene_name(t));
+    if (!t.alias.empty()) list += " (= " + std::string(t.name) + ")";
+  }
+  return list;
+}
+
+std::string integrator_names(IntegratorMethod method) {
+  std::string list;
+  for (const IntegratorType& t : kTypes)
+    if (t.method == method) list += (list.empty() ? "" : ", ") + std::string(scene_name(t));
+  return list;
+}
+
+bool stages_accepted(const IntegratorType& type, int stages) {
+  return type.method != M::irk || (stages >= type.min_stages && stages <= type.max_stages);
+}
+
+int default_stages(const IntegratorType& type, int fallback) {
+  return type.min_stages == type.max_stages && type.method == M::irk ? type.min_stages : fallback;
+}
+
+bool has_embedded_estimate(const IntegratorType& type, int stages, bool constrained) {
+  if (constrained && !type.embedded_constraint_refusal.empty()) return false;
+  switch (type.embedded) {
+    case E::none:
+      return false;
+    case E::always:
+      return true;
+    case E::odd_stages:
+      return stages % 2 == 1;
+  }
+  return false;
+}
+
+std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& options,
+                                                   std::size_t constraints) {
+  const IntegratorType* type = find_integrator_type(options.type);
+  if (!type) return std::nullopt;  // unknown types are the reader's (and parser's) business
+  const std::string name(type->name);
+  const bool irk = type->method == M::irk;
+  const std::string stages = irk ? " with " + std::to_string(options.stages) + " stages" : "";
+  if (constraints > 0 && !type->constraint_refusal.empty())
+    return IntegratorRefusal{
+        "type", "integrator type '" + std::string(scene_name(*type)) +
+                    "' takes no Lagrange-multiplier constraints (the scene has " +
+                    std::to_string(constraints) + "): " + std::string(type->constraint_refusal) +
+                    "; with constraints use " + types_taking_constraints() +
+                    ", or supports instead of pinned constraints"};
+  if (options.error_estimate == "embedded" &&
+      !has_embedded_estimate(*type, options.stages, constraints > 0)) {
+    if (constraints > 0 && has_embedded_estimate(*type, options.stages, false))
+      return IntegratorRefusal{
+          "error_estimate", name + stages + " has no embedded error estimate with constraints (" +
+                                std::string(type->embedded_constraint_refusal) +
+                                "); use step_doubling or auto"};
+    return IntegratorRefusal{"error_estimate", name + stages +
+                                                   " has no embedded error estimate (" +
+                                                   embedded_owners() +
+                                                   " have); use step_doubling or auto"};
+  }
+  if (irk && options.linear_algebra == "decoupled") {
+    std::string why;
+    if (options.newton == "full")
+      why = "full Newton linearises every stage at its own state (no Kronecker form)";
+    else if (!type->decoupled_refusal.empty())
+      why = name + "'s " + std::string(type->decoupled_refusal);
+    if (!why.empty())
+      return IntegratorRefusal{"linear_algebra", "linear_algebra: decoupled is not exact here: " +
+                                                     why + "; use auto or coupled"};
+  }
+  return std::nullopt;
+}
+
+}  // namespace catena::model

@@ -1,0 +1,263 @@
+#include "catena/solvers/statics/static_solver.hpp"
+
+#include <petscsnes.h>
+
+#include <algorithm>
+#include <initializer_list>
+#include <cmath>
+#include <sstream>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/newton/mumps_status.hpp"
+
+namespace catena::solvers {
+
+struct StaticSolver::Impl {
+  assembly::SecondOrderSystem& system;
+  model::StaticOptions options;
+  SnesHandle snes;
+  VecHandle residual;
+  MatHandle jacobian;
+  CallbackGuard guard;
+  // The load path (elements::LoadPath) parameterised by τ: [0, 1] tensions, [1, 2] loads,
+  // [2, 3] releases prestrain to its scene value (only when some cable needs it).
+  elements::LoadPath path{0.0, 0.0, 0.0};
+  // Tolerances in force after the command line (SNESSetFromOptions): the per-step
+  // round-off floor is added to the absolute one, the rest is left as the user set it.
+  PetscReal base_atol = 0, base_rtol = 0, base_stol = 0;
+  PetscInt base_max_it = 0, base_max_f = 0;
+  // An LDLᵀ factorisation of the tangent at each accepted state, independent of the
+  // solver the user chose for Newton, for its inertia (stability) and null pivots.
+  KspHandle stability_ksp;
+  int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
+
+  Impl(assembly::SecondOrderSystem& s, const model::StaticOptions& o) : system(s), options(o) {}
+
+  // Collective. Factors the tangent at q (current path point); MUMPS's status gives the
+  // number of negative eigenvalues (INFOG(12), exact in parallel with ICNTL(13) = 1) and
+  // of null pivots (INFOG(28)).
+  MumpsStatus tangent_status(Vec q) {
+    system.jacobian({q, nullptr, path}, assembly::kStaticJacobian, jacobian.get());
+    CATENA_PETSC(KSPSetOperators(stability_ksp.get(), jacobian.get(), jacobian.get()));
+    CATENA_PETSC(KSPSetUp(stability_ksp.get()));
+    MumpsStatus status = mumps_status(stability_ksp.get());
+    // [K Gᵀ; G 0] has exactly one negative eigenvalue per multiplier when K is positive
+    // definite on the constraints' null space: only the excess means instability.
+    status.negative_pivots -= 3 * static_cast<long>(system.model().constraints.size());
+    return status;
+  }
+
+  void set_path(double tau) {
+    path = {std::clamp(tau, 0.0, 1.0), std::clamp(tau - 1.0, 0.0, 1.0),
+            std::clamp(tau - 2.0, 0.0, 1.0)};
+  }
+
+  static PetscErrorCode form_function(SNES, Vec q, Vec f, void* ctx) {
+    auto* self = static_cast<Impl*>(ctx);
+    return self->guard.run([&] {
+      self->system.force({q, nullptr, self->path}, f);
+    });
+  }
+  static PetscErrorCode form_jacobian(SNES, Vec q, Mat J, Mat, void* ctx) {
+    auto* self = static_cast<Impl*>(ctx);
+    ++self->n_jacobians;
+    return self->guard.run([&] {
+      self->system.jacobian({q, nullptr, self->path}, assembly::kStaticJacobian, J);
+    });
+  }
+};
+
+StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::StaticOptions& options)
+    : impl_(std::make_unique<Impl>(system, options)) {
+  Impl& s = *impl_;
+  s.residual = system.create_vector();
+  s.jacobian = system.create_matrix();
+  CATENA_PETSC(SNESCreate(system.comm(), s.snes.out()));
+  CATENA_PETSC(SNESSetFunction(s.snes.get(), s.residual.get(), Impl::form_function, &s));
+  CATENA_PETSC(SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(),
+                               Impl::form_jacobian, &s));
+  // Scene tolerances first, so that -static_snes_* on the command line wins.
+  CATENA_PETSC(SNESSetTolerances(s.snes.get(), options.atol, options.rtol, kNewtonStepTolerance,
+                                 options.max_newton_iterations, 100000));
+  // The static tangent is symmetric: LDLᵀ halves the factorisation.
+  configure_direct_newton(s.snes.get(), "static_", JacobianSymmetry::symmetric);
+  CATENA_PETSC(SNESGetTolerances(s.snes.get(), &s.base_atol, &s.base_rtol, &s.base_stol,
+                                 &s.base_max_it, &s.base_max_f));
+
+  enable_mumps_exact_inertia("static_stability_");
+  s.stability_ksp =
+      create_direct_ksp(system.comm(), "static_stability_", JacobianSymmetry::symmetric);
+}
+
+StaticSolver::~StaticSolver() = default;
+
+namespace {
+
+// "node 17 (id 4017), component y" for the largest |f| entry.
+std::string largest_residual_location(const assembly::SecondOrderSystem& system, Vec f) {
+  PetscInt where = -1;
+  PetscReal value = 0.0;
+  VecHandle abs_f;
+  if (VecDuplicate(f, abs_f.out()) || VecCopy(f, abs_f.get()) || VecAbs(abs_f.get()) ||
+      VecMax(abs_f.get(), &where, &value) || where < 0)
+    return "unknown";
+  std::ostringstream os;
+  os << system.describe_dof(where) << ", |f| = " << value
+     << (system.dof_map().constraint_of_global(where) >= 0 ? " m" : " N");
+  return os.str();
+}
+
+// Where on the load path τ is, in words.
+std::string describe_path(double tau, double tau_end) {
+  std::ostringstream os;
+  if (tau <= 1.0)
+    os << "prestrain " << 100.0 * tau << " % applied, no loads yet";
+  else if (tau <= 2.0)
+    os << "load factor " << tau - 1.0
+       << (tau_end > 2.0 ? " (cables held at their path prestrain)" : "");
+  else
+    os << "full load, cable prestrain " << 100.0 * (tau - 2.0)
+       << " % of the way from the path prestrain to its scene value";
+  return os.str();
+}
+
+// Fraction of the element-force norm below which the residual is round-off.
+constexpr double kRoundoffFraction = 1e-10;
+
+void check_factorisation(const MumpsStatus& mumps, const std::string& where) {
+  if (mumps.infog1 < 0)
+    throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
+                         std::to_string(mumps.infog1) + ", INFOG(2) = " +
+                         std::to_string(mumps.infog2) + " at " + where);
+}
+
+}  // namespace
+
+StaticReport StaticSolver::solve(Vec q) {
+  Impl& s = *impl_;
+  StaticReport report;
+  VecHandle q_trial;
+  CATENA_PETSC(VecDuplicate(q, q_trial.out()));
+
+  const double tau_end = s.system.has_slack_prestrain() ? 3.0 : 2.0;
+  const double initial_step = std::clamp(s.options.initial_load_step, s.options.min_load_step, 1.0);
+  double tau = 0.0;  // reached point on the load path
+  double step = initial_step;
+  double last_attempt = 0.0;
+  int attempts = 0;  // steps that needed Newton iterations, or were rejected
+  while (tau < tau_end) {
+    if (attempts >= s.options.max_load_steps) break;
+    // Never step across a phase boundary (integer τ), where the path changes what it ramps.
+    const double phase_end = std::floor(tau) + 1.0;
+    const double target = std::min({phase_end, tau + step, tau_end});
+    last_attempt = target;
+    s.set_path(target);
+    // Converged when |f| ≤ atol + kRoundoffFraction·(norm of the unassembled element
+    // forces), or |f| fell by rtol within the step, or the Newton update is below
+    // kNewtonStepTolerance·|q|. Element forces are large where they cancel at nodes
+    // (tension): a scale from external loads alone would ask for more than round-off
+    // allows. Where stiffness is large and forces small (a stiff cantilever under a small
+    // load) the residual's round-off floor is stiffness × size × ε and only the update
+    // criterion can see convergence.
+    const double scale = s.system.element_force_norm({q, nullptr, s.path});
+    CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.base_atol + kRoundoffFraction * scale,
+                                   s.base_rtol, s.base_stol, s.base_max_it, s.base_max_f));
+    CATENA_PETSC(VecCopy(q, q_trial.get()));
+    s.n_jacobians = 0;
+    const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, q_trial.get());
+    s.guard.rethrow_if_any();
+    CATENA_PETSC(ierr);
+
+    SNESConvergedReason reason;
+    PetscInt its = 0;
+    CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
+    CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
+    report.n_newton_iterations += static_cast<int>(its);
+    KSP ksp = nullptr;
+    CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
+    if (s.n_jacobians > 0) {
+      const MumpsStatus newton = mumps_status(ksp);
+      if (newton.infog1 < 0 && newton.infog1 != -10)
+        throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
+                             std::to_string(newton.infog1) + ", INFOG(2) = " +
+                             std::to_string(newton.infog2) + " at " +
+                             describe_path(target, tau_end));
+    }
+
+    // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
+    // cable's inverted arch, a column beyond buckling), whose tangent has negative
+    // eigenvalues. The tangent is factored at the converged state itself.
+    bool accept = reason > 0;
+    if (accept) {
+      const MumpsStatus tangent = s.tangent_status(q_trial.get());
+      check_factorisation(tangent, describe_path(target, tau_end));
+      if (tangent.negative_pivots > 0) {
+        accept = false;
+        ++report.n_unstable_rejections;
+      } else if (tangent.null_pivots > 0 && target >= tau_end) {
+        // Neutral directions are normal before the loads are on (an unloaded pendulum);
+        // at full load they mean a mechanism.
+        throw NumericalError(
+            "static solve: the stiffness matrix at the equilibrium is singular (" +
+            std::to_string(tangent.null_pivots) +
+            " null pivots): the structure is a mechanism. Check the supports (a cable or "
+            "bar held at one end only can swing; a beam needs its rotations held "
+            "somewhere) and that every node is connected to a supported part.");
+      }
+    }
+    if (accept) {
+      CATENA_PETSC(VecCopy(q_trial.get(), q));
+      tau = target;
+      ++report.n_load_steps;
+      if (its > 0) ++attempts;
+      if (tau >= phase_end)
+        step = initial_step;  // a new phase starts with the user's increment
+      else if (its == 0)
+        step = phase_end - tau;  // nothing changes in this phase here: finish it
+      else if (its <= 4)
+        step = std::min(1.0, 2.0 * step);
+    } else {
+      ++attempts;
+      ++report.n_rejected_steps;
+      step *= 0.5;
+      if (step < s.options.min_load_step) break;
+    }
+  }
+
+  // Residual at the returned state (the last converged point of the path).
+  s.set_path(tau);
+  s.system.force({q, nullptr, s.path}, s.residual.get());
+  PetscReal norm = 0.0;
+  CATENA_PETSC(VecNorm(s.residual.get(), NORM_2, &norm));
+  report.load_factor = s.path.loads;
+  report.residual_norm = norm;
+  if (tau < tau_end) {
+    // A mechanism shows as null pivots at the last accepted state.
+    const MumpsStatus tangent = s.tangent_status(q);
+    const bool singular = tangent.null_pivots > 0;
+    // Where the failed attempt left the largest residual (at its own load level).
+    s.set_path(last_attempt);
+    s.system.force({q_trial.get(), nullptr, s.path}, s.residual.get());
+    std::ostringstream os;
+    os << "static solve did not converge: reached " << describe_path(tau, tau_end) << " after "
+       << report.n_load_steps << " accepted and " << report.n_rejected_steps
+       << " rejected load steps (" << report.n_newton_iterations
+       << " Newton iterations); at the last attempt (" << describe_path(last_attempt, tau_end)
+       << ") the largest residual is at " << largest_residual_location(s.system, s.residual.get())
+       << ". " << report.n_unstable_rejections
+       << " steps converged to unstable equilibria (negative tangent stiffness) and were "
+          "retried. ";
+    if (singular)
+      os << "The stiffness matrix at the last equilibrium is singular ("
+         << tangent.null_pivots
+         << " null pivots): the structure is probably a mechanism; check its supports.";
+    else
+      os << "Try a smaller analysis.load_steps.initial or more analysis.newton.max_iterations.";
+    throw NumericalError(os.str());
+  }
+  return report;
+}
+
+}  // namespace catena::solvers

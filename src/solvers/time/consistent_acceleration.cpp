@@ -1,0 +1,62 @@
+#include "catena/solvers/time/consistent_acceleration.hpp"
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+#include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/newton/mumps_status.hpp"
+
+namespace catena::solvers {
+
+AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat mass)
+    : system_(system), algebraic_(system, mass) {
+  rhs_ = system.create_vector();
+  Mat A = mass;
+  if (algebraic_.active()) {
+    target_ = system.create_vector();
+    saddle_ = system.create_matrix();
+    system.jacobian({rhs_.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
+    A = saddle_.get();
+  }
+  ksp_ = create_direct_ksp(
+      system.comm(), "mass_",
+      algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
+  CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
+  CATENA_PETSC(KSPSetUp(ksp_.get()));
+  const MumpsStatus mumps = mumps_status(ksp_.get());
+  if (mumps.null_pivots > 0 || mumps.infog1 < 0)
+    throw NumericalError(
+        std::string(algebraic_.active() ? "the constrained mass matrix [M G'; G 0]"
+                                        : "the mass matrix") +
+        " is singular (" + std::to_string(mumps.null_pivots) +
+        " null pivots, MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
+        "): every free DOF needs mass; massless nodes (e.g. joined only by massless bars "
+        "or springs) need a point mass" +
+        (algebraic_.active() ? "; constraints must not repeat each other or a support" : ""));
+}
+
+void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
+  // f without the constraint forces (λ = 0): they are unknowns here.
+  algebraic_.zero_algebraic(q);
+  system_.force({q, v, {}, t}, rhs_.get());
+  CATENA_PETSC(VecScale(rhs_.get(), -1.0));
+  if (algebraic_.active()) {
+    system_.constraint_acceleration(t, target_.get());
+    algebraic_.take_algebraic(rhs_.get(), target_.get());
+  }
+  CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), a));
+  KSPConvergedReason reason;
+  CATENA_PETSC(KSPGetConvergedReason(ksp_.get(), &reason));
+  const MumpsStatus mumps = mumps_status(ksp_.get());
+  if (reason < 0 || mumps.infog1 < 0)
+    throw NumericalError("the acceleration solve failed (KSP reason " + std::to_string(reason) +
+                         ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) + ")");
+  algebraic_.take_algebraic(q, a);
+  algebraic_.zero_algebraic(a);
+}
+
+void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q,
+                             Vec v, Vec a) {
+  AccelerationSolver(system, mass).solve(t, q, v, a);
+}
+
+}  // namespace catena::solvers

@@ -1,0 +1,306 @@
+#include "catena/solvers/time/hht_integrator.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "catena/assembly/compact_matrix.hpp"
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+#include "catena/solvers/time/algebraic_part.hpp"
+#include "catena/solvers/newton/local_newton.hpp"
+#include "catena/solvers/newton/reusable_newton.hpp"
+#include "catena/solvers/newton/round_off_floor.hpp"
+#include "catena/solvers/time/step_state.hpp"
+
+namespace catena::solvers {
+namespace {
+
+// The local Newton settings with the options database's overrides; false if it is off.
+bool local_newton_options(bool on, LocalNewtonSettings& local) {
+  PetscInt layers = on ? local.layers : 0;
+  PetscReal worn = local.worn_fraction, window = local.max_window_fraction;
+  CATENA_PETSC(PetscOptionsGetInt(nullptr, "hht_", "-local_newton_layers", &layers, nullptr));
+  CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_worn", &worn, nullptr));
+  CATENA_PETSC(PetscOptionsGetReal(nullptr, "hht_", "-local_newton_max_window", &window, nullptr));
+  if (layers < 0 || layers > local.max_layers)
+    throw InputError({"", 0, "-hht_local_newton_layers"},
+                     "local Newton layers " + std::to_string(layers) + "; accepted: 0 (off) to " +
+                         std::to_string(local.max_layers));
+  if (!(worn > 0.0))
+    throw InputError({"", 0, "-hht_local_newton_worn"},
+                     "local Newton worn fraction " + std::to_string(worn) + "; accepted: > 0");
+  if (!(window > 0.0 && window <= 1.0))
+    throw InputError({"", 0, "-hht_local_newton_max_window"},
+                     "local Newton window fraction " + std::to_string(window) +
+                         "; accepted: (0, 1]");
+  local.layers = static_cast<int>(layers);
+  local.worn_fraction = worn;
+  local.max_window_fraction = window;
+  return layers > 0;
+}
+
+}  // namespace
+
+struct HhtIntegrator::Impl {
+  assembly::SecondOrderSystem& system;
+  HhtOptions options;
+  double beta, gamma;
+  // The current state (start of the next step), the one before (dense output) and the
+  // pending step (q1, v1 built from the unknown a1), in the integrator's StepState.
+  StepState& state;
+  double scale0 = 0.0;
+  VecHandle f0;  // f(t0, q0, v0)
+  double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
+  RoundOffFloor round_off;  // of f (round_off_floor.hpp)
+  VecHandle f1, residual, error;
+  // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
+  VecHandle q_known, v_known;
+  MatHandle mass, K, C, jacobian;
+  // Where K and C were last evaluated (kept for a restart, which evaluates them there again).
+  VecHandle tangent_q, tangent_v;
+  double tangent_t = 0.0;
+  // M without its stored zeros, for the product M a1 of every residual (compact_matrix.hpp);
+  // `mass` keeps the full pattern the Newton matrix is built on.
+  MatHandle mass_product;
+  MatHandle coupling;  // Gᵀ (constraints only)
+  std::unique_ptr<AlgebraicPart> algebraic;
+  std::unique_ptr<ReusableNewton> newton;
+  std::unique_ptr<LocalNewton> local;  // null unless options.local_newton
+  IntegratorCounters counters;
+
+  Impl(assembly::SecondOrderSystem& s, const HhtOptions& o, StepState& st)
+      : system(s),
+        options(o),
+        beta(0.25 * (1 - o.alpha) * (1 - o.alpha)),
+        gamma(0.5 - o.alpha),
+        state(st) {}
+
+  // The a1-independent parts of the Newmark formulas for the step h from (q0, v0, a0):
+  // q_known = q0 + h v0 + h²(½ − β) a0,  v_known = v0 + h(1 − γ) a0. Computed once per
+  // attempt, so that each residual evaluation makes two vector passes, not seven.
+  void start_attempt() {
+    CATENA_PETSC(VecWAXPY(q_known.get(), h, state.v(), state.q()));
+    CATENA_PETSC(VecAXPY(q_known.get(), h * h * (0.5 - beta), state.a()));
+    CATENA_PETSC(VecWAXPY(v_known.get(), h * (1 - gamma), state.a(), state.v()));
+  }
+
+  // q1, v1 from a1 (Newmark); the multiplier slots of a1 hold λ1 itself.
+  void kinematics(Vec a) {
+    CATENA_PETSC(VecWAXPY(state.pending_q(), h * h * beta, a, q_known.get()));
+    CATENA_PETSC(VecWAXPY(state.pending_v(), h * gamma, a, v_known.get()));
+    algebraic->take_algebraic(state.pending_q(), a);
+    algebraic->zero_algebraic(state.pending_v());
+  }
+
+  // R(a1) = M a1 + (1 + α)(f + Gᵀλ)(t1, q1, v1) − α (f + Gᵀλ)0 in the nodal rows and
+  // (m̄/βh²) g(q1, t1) in the constraint rows (Negrut et al.: the constraint holds at the
+  // step end, not α-weighted).
+  void residual_at(Vec a, Vec r) {
+    kinematics(a);
+    system.force({state.pending_q(), state.pending_v(), {}, state.time() + h}, f1.get(), &scale1);
+    CATENA_PETSC(MatMult(mass_product.get(), a, r));
+    CATENA_PETSC(VecAXPBYPCZ(r, 1.0 + options.alpha, -options.alpha, 1.0, f1.get(), f0.get()));
+    if (algebraic->active()) {
+      algebraic->take_algebraic(r, f1.get());
+      algebraic->scale_rows(r, algebraic->mass_scale() / (beta * h * h));
+    }
+  }
+
+  // C, or null where the system has no damping (C = 0: neither assembled nor added).
+  Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
+
+  // K, C and the round-off floor's tangent at (q, v, t), the point remembered.
+  void evaluate_tangent(Vec q, Vec v, double t) {
+    if (q != tangent_q.get()) {
+      CATENA_PETSC(VecCopy(q, tangent_q.get()));
+      CATENA_PETSC(VecCopy(v, tangent_v.get()));
+    }
+    tangent_t = t;
+    system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, t}, K.get(), damping_matrix());
+    round_off.set_tangent(K.get());
+  }
+
+  // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
+  void build_matrix(Vec a, bool refresh_tangent, Mat J) {
+    if (refresh_tangent) {
+      kinematics(a);
+      evaluate_tangent(state.pending_q(), state.pending_v(), state.time() + h);
+      ++counters.jacobian_evaluations;
+      if (local) local->tangent_refreshed();
+    }
+    const double s = 1.0 + options.alpha;
+    CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
+    if (const Mat damping = damping_matrix())
+      CATENA_PETSC(MatAXPY(J, s * gamma * h, damping, SAME_NONZERO_PATTERN));
+    CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
+    if (algebraic->active()) {
+      // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
+      // scaled to m̄ G like the residual's.
+      CATENA_PETSC(MatAXPY(J, s, coupling.get(), SAME_NONZERO_PATTERN));
+      algebraic->scale_rows(J, algebraic->mass_scale() / (s * beta * h * h));
+    }
+  }
+};
+
+HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options)
+    : StepStateIntegrator(system) {
+  if (!(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
+    throw InputError({"", 0, "integrator.alpha"},
+                     "HHT alpha = " + std::to_string(options.alpha) +
+                         " is outside the accepted range [-1/3, 0]");
+  impl_ = std::make_unique<Impl>(system, options, step_state());
+  Impl& s = *impl_;
+  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
+                       &s.tangent_q, &s.tangent_v})
+    *v = system.create_vector();
+  for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
+    *m = system.create_matrix();
+  // The mass matrix is constant (ANCF): assemble it once.
+  system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
+  s.mass_product = assembly::compact_copy(s.mass.get());
+  // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
+  CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
+  s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
+  if (s.algebraic->active())  // Gᵀ is constant: the constraints are linear in q
+    system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
+  NewtonSettings settings;
+  settings.max_iterations = options.max_newton_iterations;
+  settings.full_newton = options.full_newton;
+  // M + (1+α)(γh C + βh² K) keeps a nonzero diagonal (mass, or stiffness at a massless
+  // node) unless multipliers add zero diagonal rows: then it needs a pivoting factorisation.
+  settings.pivoting = s.algebraic->active() ? Pivoting::needed : Pivoting::not_needed;
+  // Damping makes the matrix non-symmetric in general.
+  s.newton = std::make_unique<ReusableNewton>(
+      system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
+      settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
+      [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
+  LocalNewtonSettings local = options.local_newton_settings;
+  const bool use_local = local_newton_options(options.local_newton, local);
+  if (use_local) {
+    s.local = std::make_unique<LocalNewton>(system, local);
+    // R(a1) = M a1 + (1 + α) f(q1, v1) − α f0, q1 = q̂ + βh² a1, v1 = v̂ + γh a1; q1, v1
+    // and f1 hold the last residual evaluation's (the iterate's) values.
+    s.newton->set_local_correction([&s](Vec a, Vec r, double atol, double* norm) {
+      const LocalNewton::Coefficients c{1.0 + s.options.alpha, s.beta * s.h * s.h, s.gamma * s.h,
+                                        s.state.time() + s.h};
+      return s.local->correct(a, r, s.state.pending_q(), s.state.pending_v(), s.f1.get(), c,
+                              atol, norm);
+    });
+  }
+}
+
+HhtIntegrator::~HhtIntegrator() = default;
+
+std::string HhtIntegrator::name() const {
+  char text[64];
+  std::snprintf(text, sizeof text, "hht(alpha=%g)", impl_->options.alpha);
+  return text;
+}
+
+void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
+  Impl& s = *impl_;
+  // Without a, the consistent one (also λ0 with constraints).
+  s.state.start(t, q, v, a, consistent_acceleration_of(s.system, s.mass.get()));
+  s.system.force({s.state.q(), s.state.v(), {}, t}, s.f0.get(), &s.scale0);
+  s.newton->invalidate_tangent();
+}
+
+StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
+  Impl& s = *impl_;
+  s.h = h;
+  if (h != s.h_matrix) {
+    s.newton->invalidate_matrix();
+    s.h_matrix = h;
+  }
+  s.start_attempt();
+  // The local corrections have grown costlier than a new tangent (local_newton.hpp).
+  if (s.local && s.local->tangent_worn()) s.newton->invalidate_tangent();
+  CATENA_PETSC(VecCopy(s.state.a(), s.state.pending_a()));  // predictor: constant acceleration
+  s.algebraic->take_algebraic(s.state.pending_a(), s.state.q());  // and constant λ
+  if (!s.round_off.known())  // first attempt: the floor from a tangent at the start
+    s.evaluate_tangent(s.state.q(), s.state.v(), s.state.time());
+  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.state.q()) +
+                       (1.0 + s.options.alpha) * s.round_off.at(s.state.q());
+  const NewtonResult result =
+      s.newton->solve(s.state.pending_a(), s.options.atol + s.options.rtol * s.scale0 + floor);
+  StepOutcome out;
+  out.converged = result.converged;
+  out.newton_iterations = result.iterations;
+  out.residual_norm = result.residual_norm;
+  s.counters.newton_iterations += result.iterations;
+  if (!result.converged) {
+    ++s.counters.newton_failures;
+    out.failure = result.failure;
+    out.worst_dof = worst_dof(s.residual.get());
+    s.state.discard_pending();
+    return out;
+  }
+  // The last residual evaluation was at the converged a1: q1, v1, f1 belong to it.
+  s.kinematics(s.state.pending_a());
+  s.algebraic->zero_algebraic(s.state.pending_a());  // λ1 now lives in q1
+  s.state.set_pending(s.state.time() + h);
+  if (tol) {
+    CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.state.a(), s.state.pending_a()));
+    CATENA_PETSC(VecScale(s.error.get(), h * h * (s.beta - 1.0 / 6.0)));
+    out.error = weighted_error_norm(*tol, s.error.get(), s.state.q(), s.state.pending_q());
+  }
+  return out;
+}
+
+void HhtIntegrator::accept() {
+  Impl& s = *impl_;
+  s.state.accept("HhtIntegrator");
+  std::swap(s.f0, s.f1);
+  s.scale0 = s.scale1;
+  ++s.counters.steps_accepted;
+}
+
+void HhtIntegrator::interpolate(double t, Vec q, Vec v) { impl_->state.interpolate(t, q, v); }
+
+// The step-to-step state: f0 and its scale (the last residual's, which a local correction
+// updated in part: recomputing f0 would differ in round-off), the tangent's point, the
+// matrix's h, Newton's and the local correction's state, the counters.
+void HhtIntegrator::save_resume_state(ResumeState& out) const {
+  const Impl& s = *impl_;
+  out.vectors["hht.f0"] = s.f0.get();
+  out.vectors["hht.tangent_q"] = s.tangent_q.get();
+  out.vectors["hht.tangent_v"] = s.tangent_v.get();
+  out.reals["hht.scale0"] = s.scale0;
+  out.reals["hht.h_matrix"] = s.h_matrix;
+  out.reals["hht.tangent_t"] = s.tangent_t;
+  out.integers["hht.round_off_known"] = s.round_off.known() ? 1 : 0;
+  save_own_counters(s.counters, out);
+  s.newton->save_resume_state(out);
+  if (s.local) s.local->save_resume_state(out);
+}
+
+void HhtIntegrator::restore_resume_state(const ResumeState& in) {
+  if (in.empty()) return;
+  Impl& s = *impl_;
+  CATENA_PETSC(VecCopy(in.vector("hht.f0"), s.f0.get()));
+  s.scale0 = in.real("hht.scale0");
+  s.h_matrix = in.real("hht.h_matrix");
+  restore_own_counters(in, s.counters);
+  s.newton->restore_resume_state(in);
+  if (s.local) s.local->restore_resume_state(in);
+  // K, C and the floor as they were: evaluated again at their point (the Newton matrix is
+  // rebuilt from them at the next attempt).
+  if (in.integer("hht.round_off_known") != 0) {
+    s.evaluate_tangent(in.vector("hht.tangent_q"), in.vector("hht.tangent_v"),
+                       in.real("hht.tangent_t"));
+    ++s.counters.jacobian_evaluations;
+  }
+}
+
+const IntegratorCounters& HhtIntegrator::counters() const {
+  Impl& s = *impl_;
+  const NewtonCounters& n = s.newton->counters();
+  s.counters.residual_evaluations = n.residual_evaluations;
+  s.counters.factorizations = n.factorizations;
+  s.counters.linear_solves = n.linear_solves;
+  s.counters.local_corrections = n.local_corrections;
+  if (s.local) s.counters.local_unknowns = s.local->counters().unknowns;
+  return s.counters;
+}
+
+}  // namespace catena::solvers

@@ -1,0 +1,69 @@
+#include "catena/solvers/time/integrator_factory.hpp"
+
+#include "catena/core/error.hpp"
+#include "catena/model/integrator_catalogue.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/petsc_ts/petsc_ts_integrator.hpp"
+
+namespace catena::solvers {
+
+std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& system,
+                                                const model::IntegratorOptions& o) {
+  // What the scene reader refuses with the scene's line; here for models built otherwise.
+  if (const std::optional<model::IntegratorRefusal> refusal =
+          model::refuse_integrator(o, system.model().constraints.size()))
+    throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
+  if (o.type == "hht") {
+    HhtOptions h;
+    h.alpha = o.alpha;
+    h.rtol = o.newton_rtol;
+    h.atol = o.newton_atol;
+    h.max_newton_iterations = o.max_newton_iterations;
+    h.full_newton = o.newton == "full";
+    h.local_newton = o.local_newton;
+    return std::make_unique<HhtIntegrator>(system, h);
+  }
+  if (o.type == "petsc") {
+    // The TS method itself comes from the options database (-ts_type, ...).
+    PetscTsOptions p;
+    p.alpha = o.alpha;
+    p.rtol = o.newton_rtol;
+    p.atol = o.newton_atol;
+    p.max_newton_iterations = o.max_newton_iterations;
+    return std::make_unique<PetscTsIntegrator>(system, p);
+  }
+  IrkOptions i;
+  i.family = parse_tableau_family(o.type);
+  i.stages = o.stages;
+  i.rtol = o.newton_rtol;
+  i.atol = o.newton_atol;
+  i.max_newton_iterations = o.max_newton_iterations;
+  i.full_newton = o.newton == "full";
+  if (o.linear_algebra == "decoupled")
+    i.linear_algebra = StageLinearAlgebra::decoupled;
+  else if (o.linear_algebra == "coupled")
+    i.linear_algebra = StageLinearAlgebra::coupled;
+  else
+    i.linear_algebra = StageLinearAlgebra::automatic;
+  return std::make_unique<IrkIntegrator>(system, i);
+}
+
+StepControl make_step_control(const model::IntegratorOptions& o) {
+  StepControl c;
+  c.dt = o.dt;
+  c.adaptive = o.adaptive;
+  c.rtol = o.rtol;
+  c.atol = o.atol;
+  c.dt_min = o.dt_min;
+  c.dt_max = o.dt_max;
+  if (o.error_estimate == "embedded")
+    c.estimate = ErrorEstimate::embedded;
+  else if (o.error_estimate == "step_doubling")
+    c.estimate = ErrorEstimate::step_doubling;
+  else
+    c.estimate = ErrorEstimate::automatic;
+  return c;
+}
+
+}  // namespace catena::solvers
