@@ -112,8 +112,7 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
   // DOFs like a kernel.
   std::vector<size_t> timed;
   std::vector<std::vector<PetscInt>> timed_local;
-  for (size_t k = 0; k < couplings_.size(); ++k) {
-    if (couplings_[k]->patch_role() != PatchRole::at_patch_time) continue;
+  for (size_t k : timed_) {
     const ActiveDofs dofs = active(k, t, work_);
     if (dofs.n == 0) continue;
     timed.push_back(k);

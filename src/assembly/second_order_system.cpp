@@ -97,6 +97,9 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       fixed_value_.push_back(fixed);
     }
     offset_.push_back(local_index_.size());
+    acts_on_all_.push_back(c->acts_on_all() ? 1 : 0);
+    if (c->patch_role() == couplings::PatchRole::at_patch_time)
+      timed_.push_back(acts_on_all_.size() - 1);
   }
 
   bool damps = false;
@@ -110,7 +113,7 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
 
 SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, Buffers& b) const {
   const size_t begin = offset_[i];
-  if (couplings_[i]->acts_on_all())
+  if (acts_on_all_[i])
     return {local_index_.data() + begin, global_index_.data() + begin, fixed_value_.data() + begin,
             offset_[i + 1] - begin};
   couplings_[i]->active_dofs(t, b.positions);

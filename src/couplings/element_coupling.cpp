@@ -23,12 +23,16 @@ void ElementCoupling::evaluate(const CouplingState& s, double* f,
     for (const MatrixRequest& r : m) std::fill(r.out, r.out + n * n, 0.0);
     return;
   }
-  scratch.a.resize(n);
-  scratch.b.resize(n * n);
-  scratch.c.resize(n * n);
-  double* K = scratch.b.data();
-  double* C = scratch.c.data();
+  double* K = nullptr;
+  double* C = nullptr;
+  if (stiffness || damping) {
+    scratch.b.resize(n * n);
+    scratch.c.resize(n * n);
+    K = scratch.b.data();
+    C = scratch.c.data();
+  }
   if (f || stiffness || damping) {
+    if (!f) scratch.a.resize(n);
     const elements::LocalState local{s.q, s.v, s.path};
     element_->evaluate(local, {f != nullptr, stiffness, damping},
                        {f ? f : scratch.a.data(), K, C});

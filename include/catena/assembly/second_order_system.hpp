@@ -210,6 +210,8 @@ class SecondOrderSystem {
   DofMap dofs_;
   // Per coupling: offset into the flat per-DOF arrays below (its dofs() resolved).
   std::vector<size_t> offset_;
+  std::vector<char> acts_on_all_;       // per coupling: Coupling::acts_on_all(), cached
+  std::vector<size_t> timed_;           // the couplings with PatchRole::at_patch_time
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
