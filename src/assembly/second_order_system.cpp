@@ -129,10 +129,11 @@ SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, Buff
   return {b.local.data(), b.global.data(), b.fixed.data(), b.positions.size()};
 }
 
-void SecondOrderSystem::evaluate(size_t i, const ActiveDofs& dofs, const double* q_local,
-                                 const double* v_local, const elements::LoadPath& path, double t,
-                                 double* f, std::span<const couplings::MatrixRequest> m,
-                                 Buffers& b) const {
+couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs,
+                                                  const double* q_local,
+                                                  const double* v_local,
+                                                  const elements::LoadPath& path, double t,
+                                                  Buffers& b) const {
   const size_t n = dofs.n;
   if (b.q.size() < n) {
     b.q.resize(n);
@@ -145,7 +146,14 @@ void SecondOrderSystem::evaluate(size_t i, const ActiveDofs& dofs, const double*
   }
   couplings::CouplingState s{{b.q.data(), n}, {}, path, t};
   if (v_local) s.v = {b.v.data(), n};
-  couplings_[i]->evaluate(s, f, m, b.scratch);
+  return s;
+}
+
+void SecondOrderSystem::evaluate(size_t i, const ActiveDofs& dofs, const double* q_local,
+                                 const double* v_local, const elements::LoadPath& path, double t,
+                                 double* f, std::span<const couplings::MatrixRequest> m,
+                                 Buffers& b) const {
+  couplings_[i]->evaluate(gather(dofs, q_local, v_local, path, t, b), f, m, b.scratch);
 }
 
 void SecondOrderSystem::insert_block(size_t i, const ActiveDofs& dofs, const double* block,

@@ -30,11 +30,9 @@ void SecondOrderSystem::section_results(const EvalPoint& p, std::vector<int>& el
   for (size_t i = 0; i < couplings_.size(); ++i) {
     const auto* e = dynamic_cast<const ElementCoupling*>(couplings_[i].get());
     if (!e || e->origin() != ElementOrigin::element) continue;
-    const ActiveDofs dofs = active(i, p.t, work_);
-    work_.q.resize(std::max(work_.q.size(), dofs.n));
-    for (size_t k = 0; k < dofs.n; ++k)
-      work_.q[k] = dofs.local[k] >= 0 ? q.data()[dofs.local[k]] : dofs.fixed[k];
-    const elements::LocalState s{{work_.q.data(), dofs.n}, {}, p.path};
+    const couplings::CouplingState g =
+        gather(active(i, p.t, work_), q.data(), nullptr, p.path, p.t, work_);
+    const elements::LocalState s{g.q, {}, p.path};
     element_indices.push_back(e->source());
     results.push_back(e->element().section_result(s));
   }
@@ -138,17 +136,9 @@ std::vector<SecondOrderSystem::ContactState> SecondOrderSystem::contact_states(
       const bool on = c->on_path(p.t);
       double delta = 0.0, F = 0.0;
       if (on) {
-        const ActiveDofs dofs = active(i, p.t, work_);
-        work_.q.resize(std::max(work_.q.size(), dofs.n));
-        work_.v.resize(std::max(work_.v.size(), dofs.n));
-        for (size_t j = 0; j < dofs.n; ++j) {
-          const PetscInt l = dofs.local[j];
-          work_.q[j] = l >= 0 ? q.data()[l] : dofs.fixed[j];
-          work_.v[j] = l >= 0 && v ? v->data()[l] : 0.0;
-        }
-        couplings::CouplingState s{{work_.q.data(), dofs.n}, {}, p.path, p.t};
-        if (v) s.v = {work_.v.data(), dofs.n};
-        F = c->force(s, &delta);
+        F = c->force(gather(active(i, p.t, work_), q.data(), v ? v->data() : nullptr, p.path,
+                            p.t, work_),
+                     &delta);
       }
       local[4 * k] = F;
       local[4 * k + 1] = c->position(p.t);

@@ -184,8 +184,13 @@ class SecondOrderSystem {
     size_t n = 0;
   };
   ActiveDofs active(size_t i, double t, Buffers& b) const;
-  // Gathers the active DOFs' values from local arrays (v may be null) into b.q, b.v and
-  // evaluates coupling i there into f (may be null) and m.
+  // The state of `dofs` from local arrays (v may be null: zero velocity), gathered into
+  // b.q and b.v.
+  couplings::CouplingState gather(const ActiveDofs& dofs, const double* q_local,
+                                  const double* v_local, const elements::LoadPath& path,
+                                  double t, Buffers& b) const;
+  // Evaluates coupling i at the gathered state of its active DOFs into f (may be null)
+  // and m.
   void evaluate(size_t i, const ActiveDofs& dofs, const double* q_local, const double* v_local,
                 const elements::LoadPath& path, double t, double* f,
                 std::span<const couplings::MatrixRequest> m, Buffers& b) const;
