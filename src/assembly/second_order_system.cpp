@@ -9,6 +9,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/couplings/model_couplings.hpp"
 #include "local_array.hpp"
+#include "visit_forces.hpp"
 
 namespace catena::assembly {
 namespace {
@@ -178,46 +179,6 @@ VecHandle SecondOrderSystem::create_vector() const {
   return v;
 }
 
-MatHandle SecondOrderSystem::build_pattern() const {
-  const PetscInt n = dofs_.n_owned(), N = dofs_.n_global();
-  MatHandle pre;
-  CATENA_PETSC(MatCreate(comm_, pre.out()));
-  CATENA_PETSC(MatSetType(pre.get(), MATPREALLOCATOR));
-  CATENA_PETSC(MatSetSizes(pre.get(), n, n, N, N));
-  CATENA_PETSC(MatSetUp(pre.get()));
-  std::vector<std::pair<int, int>> entries;
-  for (size_t i = 0; i < couplings_.size(); ++i) {
-    const PetscInt* global = global_index_.data() + offset_[i];
-    const auto size = static_cast<PetscInt>(offset_[i + 1] - offset_[i]);
-    if (couplings_[i]->dense()) {
-      const std::vector<double> zeros(static_cast<size_t>(size * size), 0.0);
-      CATENA_PETSC(MatSetValues(pre.get(), size, global, size, global, zeros.data(), INSERT_VALUES));
-      continue;
-    }
-    couplings_[i]->pattern(entries);
-    for (auto [r, c] : entries)
-      if (global[r] >= 0 && global[c] >= 0)
-        CATENA_PETSC(MatSetValue(pre.get(), global[r], global[c], 0.0, INSERT_VALUES));
-  }
-  CATENA_PETSC(MatAssemblyBegin(pre.get(), MAT_FINAL_ASSEMBLY));
-  CATENA_PETSC(MatAssemblyEnd(pre.get(), MAT_FINAL_ASSEMBLY));
-  MatHandle A;
-  CATENA_PETSC(MatCreate(comm_, A.out()));
-  CATENA_PETSC(MatSetSizes(A.get(), n, n, N, N));
-  CATENA_PETSC(MatSetType(A.get(), MATAIJ));
-  CATENA_PETSC(MatPreallocatorPreallocate(pre.get(), PETSC_TRUE, A.get()));
-  return A;
-}
-
-MatHandle SecondOrderSystem::create_matrix() const {
-  if (!pattern_) pattern_ = build_pattern();
-  MatHandle J;
-  CATENA_PETSC(MatDuplicate(pattern_.get(), MAT_DO_NOT_COPY_VALUES, J.out()));
-  CATENA_PETSC(MatSetOption(J.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  CATENA_PETSC(MatSetOption(J.get(), MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
-  return J;
-}
-
 void SecondOrderSystem::reference_state(Vec q) const {
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(q, &a));
@@ -236,21 +197,6 @@ void SecondOrderSystem::scatter_to_local(Vec global, Vec local_ghosted) {
   CATENA_PETSC(VecCopy(global, local_ghosted));
   CATENA_PETSC(VecGhostUpdateBegin(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
   CATENA_PETSC(VecGhostUpdateEnd(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
-}
-
-void SecondOrderSystem::visit_forces(const EvalPoint& p, const ForceVisitor& fn) {
-  scatter_to_local(p.q, q_work_.get());
-  if (p.v) scatter_to_local(p.v, v_work_.get());
-  const LocalArrayRead q(q_work_.get());
-  std::unique_ptr<LocalArrayRead> v;
-  if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
-  for (size_t i = 0; i < couplings_.size(); ++i) {
-    const ActiveDofs dofs = active(i, p.t, work_);
-    if (dofs.n == 0) continue;
-    if (work_.f.size() < dofs.n) work_.f.resize(dofs.n);
-    evaluate(i, dofs, q.data(), v ? v->data() : nullptr, p.path, p.t, work_.f.data(), {}, work_);
-    fn(i, dofs, std::span<const double>(work_.f.data(), dofs.n));
-  }
 }
 
 void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {

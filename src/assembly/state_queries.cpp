@@ -14,6 +14,7 @@
 #include "catena/couplings/pantograph_contact.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "local_array.hpp"
+#include "visit_forces.hpp"
 
 namespace catena::assembly {
 

@@ -39,12 +39,12 @@ std::unique_ptr<elements::Element> with_rayleigh(std::unique_ptr<elements::Eleme
 
 }  // namespace
 
-std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index) {
+std::unique_ptr<elements::Element> make_element(const model::Model& model, int index) {
   const model::ElementDesc& desc = model.elements[index];
   const Vec3& xa = model.nodes[desc.nodes[0]].position;
   const Vec3& xb = model.nodes[desc.nodes[1]].position;
   const double length = (xb - xa).norm();
-  std::unique_ptr<elements::Element> element = std::visit(
+  return std::visit(
       [&](const auto& p) -> std::unique_ptr<elements::Element> {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, model::CableProps>) {
@@ -79,8 +79,12 @@ std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model
         }
       },
       desc.props);
-  return std::make_unique<ElementCoupling>(std::move(element), desc.nodes, ElementOrigin::element,
-                                           index);
+}
+
+std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index,
+                                                       std::unique_ptr<elements::Element> element) {
+  return std::make_unique<ElementCoupling>(std::move(element), model.elements[index].nodes,
+                                           ElementOrigin::element, index);
 }
 
 std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::Model& model) {

@@ -94,15 +94,11 @@ struct PointTangent {
 
 AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gravity,
                      const Vec3& distributed_load)
-    : length_(length), section_(section) {
+    : length_(length),
+      section_(section),
+      // Mass per mesh length: the unstretched length L/(1+ε_p) carries μ per unit length.
+      load_(section.mass_per_length / (1.0 + section.prestrain) * gravity + distributed_load) {
   CATENA_ASSERT(length > 0.0, "AncfCable: length must be positive");
-  // Mass per mesh length: the unstretched length L/(1+ε_p) carries μ per unit length.
-  const double mu_mesh = section.mass_per_length / (1.0 + section.prestrain);
-  const Vec3 load = mu_mesh * gravity + distributed_load;
-  // ∫_0^L S_i dx for the Hermite functions: L/2, L²/12, L/2, −L²/12.
-  const double L = length;
-  const double integral[4] = {L / 2, L * L / 12, L / 2, -L * L / 12};
-  for (int i = 0; i < 4; ++i) external_force_[i] = integral[i] * load;
 }
 
 void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
@@ -244,8 +240,10 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
   }
 
   if (r.force) {
+    // ∫ Sᵀ (μ_x g + q) dx per Hermite block: ∫_0^L S_i dx = L/2, L²/12, L/2, −L²/12.
+    const double integral[4] = {L / 2, L * L / 12, L / 2, -L * L / 12};
     for (int i = 0; i < 4; ++i) {
-      const Vec3 fi = f[i] - s.path.loads * external_force_[i];
+      const Vec3 fi = f[i] - s.path.loads * (integral[i] * load_);
       for (int d = 0; d < 3; ++d) out.f[3 * i + d] = fi[d];
     }
   }

@@ -21,7 +21,6 @@
 #include <mpi.h>
 #include <petscmat.h>
 
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -198,15 +197,19 @@ class SecondOrderSystem {
   // (the rest of its pattern is in A already).
   void insert_block(size_t i, const ActiveDofs& dofs, const double* block, Mat A) const;
   void scatter_to_local(Vec global, Vec local_ghosted);
-  // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el).
-  using ForceVisitor = std::function<void(size_t, const ActiveDofs&, std::span<const double>)>;
-  void visit_forces(const EvalPoint& p, const ForceVisitor& fn);
+  // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el)
+  // (defined in visit_forces.hpp: inlined into the residual loop, which runs per coupling).
+  template <class Fn>
+  void visit_forces(const EvalPoint& p, Fn&& fn);
   // Collective. Each combination c[r] over every coupling at p into matrices[r] (zeroed
   // first, assembled on return; null matrices are skipped).
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
                          std::span<const Mat> matrices);
-  // Collective. An assembled matrix holding the union of the couplings' patterns (zeros).
-  MatHandle build_pattern() const;
+  // Calls fn(global row, its columns) for each owned row with the union of the couplings'
+  // patterns there (columns global, unsorted, each once; fn may reorder them).
+  // matrix_pattern.cpp.
+  template <class Fn>
+  void visit_pattern_rows(Fn&& fn) const;
 
   MPI_Comm comm_;
   const model::Model* model_;
@@ -222,7 +225,6 @@ class SecondOrderSystem {
   std::vector<double> fixed_value_;     // reference value used where fixed
   std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
   VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
-  mutable MatHandle pattern_;           // built on the first create_matrix()
   bool has_damping_ = true;
   Buffers work_;
   // Local patches (prepare_local_patches): per owned DOF, the kernel couplings touching it

@@ -9,8 +9,12 @@
 
 namespace catena::couplings {
 
-// Not collective. The coupling of model.elements[index].
-std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index);
+// Not collective. The kernel of model.elements[index].
+std::unique_ptr<elements::Element> make_element(const model::Model& model, int index);
+// Not collective. The coupling of model.elements[index], whose kernel is `element`
+// (make_element; made separately so that a list's kernels can be allocated together).
+std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index,
+                                                       std::unique_ptr<elements::Element> element);
 // Not collective. One-node couplings for every point mass, elastic support and nodal load.
 std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::Model& model);
 

@@ -82,8 +82,9 @@ class AncfCable final : public Element {
 
   double length_;
   CableSection section_;
-  // ∫ Sᵀ (μ_x g + q) dx at full load, per Hermite block (4 blocks of 3).
-  std::array<Vec3, 4> external_force_;
+  // μ_x g + q at full load, N/m of mesh length (a Vec3, not the four nodal blocks: the
+  // residual's loop is bound by memory traffic on long lines, docs/performance.md).
+  Vec3 load_;
 };
 
 }  // namespace catena::elements

@@ -153,16 +153,20 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
                        &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
-  for (MatHandle* m : {&s.mass, &s.K, &s.C, &s.jacobian, &s.coupling})
-    *m = system.create_matrix();
+  // Only the matrices this system uses: each holds the full pattern from the start.
+  s.mass = system.create_matrix();
+  s.K = system.create_matrix();
+  if (system.has_damping()) s.C = system.create_matrix();
   // The mass matrix is constant (ANCF): assemble it once.
   system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
   s.mass_product = assembly::compact_copy(s.mass.get());
   // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
   CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
   s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
-  if (s.algebraic->active())  // Gᵀ is constant: the constraints are linear in q
+  if (s.algebraic->active()) {  // Gᵀ is constant: the constraints are linear in q
+    s.coupling = system.create_matrix();
     system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
+  }
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
