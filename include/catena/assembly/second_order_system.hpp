@@ -205,9 +205,9 @@ class SecondOrderSystem {
   // first, assembled on return; null matrices are skipped).
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
                          std::span<const Mat> matrices);
-  // Calls fn(global row, its columns) for each owned row with the union of the couplings'
-  // patterns there (columns global, unsorted, each once; fn may reorder them).
-  // matrix_pattern.cpp.
+  // Calls fn(local row, its columns) for each row of the ghosted local form (owned rows
+  // first, then the ghosts') with the union of this rank's couplings' patterns there
+  // (columns global, unsorted, each once; fn may change them). matrix_pattern.cpp.
   template <class Fn>
   void visit_pattern_rows(Fn&& fn) const;
 
