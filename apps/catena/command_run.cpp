@@ -6,6 +6,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
 #include "catena/io/hdf5_writer.hpp"
@@ -25,14 +26,15 @@ io::StaticResult collect_result(assembly::SecondOrderSystem& system, Vec q,
                                 const solvers::StaticReport& report) {
   io::StaticResult r;
   r.owned_nodes = system.dof_map().owned_nodes();
-  system.owned_node_values(q, r.positions, r.slopes);
+  const assembly::StateView view(system);
+  view.owned_node_values(q, r.positions, r.slopes);
   std::vector<elements::SectionResult> sections;
-  system.section_results({q, nullptr, {}}, r.owned_elements, sections);
+  view.section_results({q, nullptr, {}}, r.owned_elements, sections);
   for (const auto& s : sections) {
     r.axial_force.push_back(s.axial_force);
     r.axial_strain.push_back(s.axial_strain);
   }
-  const assembly::Reactions reactions = system.reactions({q, nullptr, {}});
+  const assembly::Reactions reactions = view.reactions({q, nullptr, {}});
   r.support_nodes = reactions.nodes;
   r.reaction_force = reactions.force;
   r.reaction_moment = reactions.moment;

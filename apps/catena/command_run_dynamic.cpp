@@ -21,6 +21,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
@@ -51,6 +52,7 @@ class OutputObserver : public solvers::TransientObserver {
                  const model::OutputOptions& output, const solvers::TimeIntegrator& integrator,
                  std::string run_id)
       : system_(system),
+        view_(system),
         writer_(writer),
         output_(output),
         run_id_(std::move(run_id)),
@@ -72,11 +74,11 @@ class OutputObserver : public solvers::TransientObserver {
     io::CheckpointShare share;
     share.nodes = system_.dof_map().owned_nodes();
     std::vector<double> unused;
-    system_.owned_node_rows(integrator_.q(), share.q, share.lambda);
-    system_.owned_node_rows(integrator_.v(), share.v, unused);
-    system_.owned_node_rows(integrator_.a(), share.a, unused);
+    view_.owned_node_rows(integrator_.q(), share.q, share.lambda);
+    view_.owned_node_rows(integrator_.v(), share.v, unused);
+    view_.owned_node_rows(integrator_.a(), share.a, unused);
     std::vector<double> forces;
-    system_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
+    view_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
     share.resume = resume_rows(system_, integrator_, driver_);
     io::write_checkpoint(system_.comm(), io::checkpoint_path(output_.file), system_.model(), facts,
                          share);
@@ -91,18 +93,18 @@ class OutputObserver : public solvers::TransientObserver {
 
   void sample(double t, Vec q, Vec v) override {
     std::vector<double> positions, slopes, velocities, unused;
-    system_.owned_node_values(q, positions, slopes);
-    system_.owned_node_values(v, velocities, unused);
+    view_.owned_node_values(q, positions, slopes);
+    view_.owned_node_values(v, velocities, unused);
     std::vector<int> elements;
     std::vector<elements::SectionResult> sections;
-    system_.section_results({q, v, {}, t}, elements, sections);
+    view_.section_results({q, v, {}, t}, elements, sections);
     std::vector<double> axial;
     for (const auto& s : sections) axial.push_back(s.axial_force);
     std::vector<int> constraints;
     std::vector<double> constraint_forces;
-    system_.owned_constraint_forces(q, constraints, constraint_forces);
+    view_.owned_constraint_forces(q, constraints, constraint_forces);
     io::ContactSample contacts;
-    for (const auto& c : system_.contact_states({q, v, {}, t})) {
+    for (const auto& c : view_.contact_states({q, v, {}, t})) {
       contacts.force.push_back(c.force);
       contacts.position.push_back(c.position);
     }
@@ -113,7 +115,7 @@ class OutputObserver : public solvers::TransientObserver {
     io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}};
     if (!system_.model().contacts.empty())
       for (const auto& c :
-           system_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
+           view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
     writer_.append_step(record);
     last_dt_ = r.dt;
@@ -150,6 +152,7 @@ class OutputObserver : public solvers::TransientObserver {
 
  private:
   assembly::SecondOrderSystem& system_;
+  assembly::StateView view_;
   io::TransientWriter& writer_;
   const model::OutputOptions& output_;
   std::string run_id_;
@@ -327,9 +330,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                            std::to_string(2 * resumed->facts.time));
     VecHandle a = system.create_vector();
     const std::vector<double> no_multipliers(3 * m.constraints.size(), 0.0);
-    system.set_from_node_rows(q.get(), resumed->q, resumed->lambda);
-    system.set_from_node_rows(v.get(), resumed->v, no_multipliers);
-    system.set_from_node_rows(a.get(), resumed->a, no_multipliers);
+    const assembly::StateView view(system);
+    view.set_from_node_rows(q.get(), resumed->q, resumed->lambda);
+    view.set_from_node_rows(v.get(), resumed->v, no_multipliers);
+    view.set_from_node_rows(a.get(), resumed->a, no_multipliers);
     integrator->set_state(resumed->facts.time, q.get(), v.get(), a.get());
     options.resume_driver = restore_resume_state(system, *integrator, *resumed);
     options.resume = true;
@@ -369,12 +373,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   std::vector<int> owned_elements;
   {
     std::vector<elements::SectionResult> unused;
-    system.section_results({q.get(), v.get(), {}, 0.0}, owned_elements, unused);
+    assembly::StateView(system).section_results({q.get(), v.get(), {}, 0.0}, owned_elements, unused);
   }
   std::vector<int> owned_constraints;
   {
     std::vector<double> unused;
-    system.owned_constraint_forces(q.get(), owned_constraints, unused);
+    assembly::StateView(system).owned_constraint_forces(q.get(), owned_constraints, unused);
   }
   // The time series is written under the partial name until the run completes
   // (run_files.hpp), so a failed or interrupted run never replaces a complete result.

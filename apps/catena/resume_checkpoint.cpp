@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "catena/assembly/state_view.hpp"
+
 namespace catena::app {
 
 io::ResumeRows resume_rows(const assembly::SecondOrderSystem& system,
@@ -12,7 +14,7 @@ io::ResumeRows resume_rows(const assembly::SecondOrderSystem& system,
   if (driver) solvers::save_driver_state(*driver, state);
   io::ResumeRows out;
   for (const auto& [name, vector] : state.vectors)
-    system.owned_node_rows(vector, out.rows[name], out.multipliers[name]);
+    assembly::StateView(system).owned_node_rows(vector, out.rows[name], out.multipliers[name]);
   out.reals = std::move(state.reals);
   out.integers = std::move(state.integers);
   return out;
@@ -22,7 +24,7 @@ RestoredResumeState::RestoredResumeState(const assembly::SecondOrderSystem& syst
                                          const io::ResumeRows& rows) {
   for (const auto& [name, node_rows] : rows.rows) {
     vectors_.push_back(system.create_vector());
-    system.set_from_node_rows(vectors_.back().get(), node_rows, rows.multipliers.at(name));
+    assembly::StateView(system).set_from_node_rows(vectors_.back().get(), node_rows, rows.multipliers.at(name));
     state_.vectors[name] = vectors_.back().get();
   }
   state_.reals = rows.reals;

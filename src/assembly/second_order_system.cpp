@@ -193,7 +193,7 @@ void SecondOrderSystem::reference_state(Vec q) const {
   CATENA_PETSC(VecRestoreArray(q, &a));
 }
 
-void SecondOrderSystem::scatter_to_local(Vec global, Vec local_ghosted) {
+void SecondOrderSystem::scatter_to_local(Vec global, Vec local_ghosted) const {
   CATENA_PETSC(VecCopy(global, local_ghosted));
   CATENA_PETSC(VecGhostUpdateBegin(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
   CATENA_PETSC(VecGhostUpdateEnd(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));

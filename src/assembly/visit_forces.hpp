@@ -10,7 +10,7 @@
 namespace catena::assembly {
 
 template <class Fn>
-void SecondOrderSystem::visit_forces(const EvalPoint& p, Fn&& fn) {
+void SecondOrderSystem::visit_forces(const EvalPoint& p, Fn&& fn) const {
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
   const detail::LocalArrayRead q(q_work_.get());

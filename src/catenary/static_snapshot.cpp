@@ -1,6 +1,7 @@
 #include "static_snapshot.hpp"
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 
 namespace catena::catenary::detail {
 namespace {
@@ -31,7 +32,8 @@ StaticSnapshot solve_static_snapshot(MPI_Comm comm, const model::Model& model) {
   const std::size_t n_nodes = model.nodes.size();
   std::vector<double> positions(3 * n_nodes, 0.0), reactions(3 * n_nodes, 0.0);
   std::vector<double> owned_positions, owned_slopes;
-  system.owned_node_values(q.get(), owned_positions, owned_slopes);
+  const assembly::StateView view(system);
+  view.owned_node_values(q.get(), owned_positions, owned_slopes);
   const std::vector<int>& owned = system.dof_map().owned_nodes();
   for (std::size_t i = 0; i < owned.size(); ++i)
     for (std::size_t d = 0; d < 3; ++d)
@@ -41,11 +43,11 @@ StaticSnapshot solve_static_snapshot(MPI_Comm comm, const model::Model& model) {
   snapshot.axial_force.assign(model.elements.size(), 0.0);
   std::vector<int> elements;
   std::vector<elements::SectionResult> sections;
-  system.section_results({q.get(), nullptr, full_load}, elements, sections);
+  view.section_results({q.get(), nullptr, full_load}, elements, sections);
   for (std::size_t i = 0; i < elements.size(); ++i)
     snapshot.axial_force[static_cast<std::size_t>(elements[i])] = sections[i].axial_force;
 
-  const assembly::Reactions r = system.reactions({q.get(), nullptr, full_load});
+  const assembly::Reactions r = view.reactions({q.get(), nullptr, full_load});
   for (std::size_t i = 0; i < r.nodes.size(); ++i)
     for (std::size_t d = 0; d < 3; ++d)
       reactions[3 * static_cast<std::size_t>(r.nodes[i]) + d] = r.force[3 * i + d];

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <utility>
 
+#include "catena/assembly/state_view.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
@@ -33,7 +34,7 @@ std::vector<double> history(MPI_Comm comm, const catena::model::Model& m,
   std::vector<double> out;
   for (int step = 0; step < 200; ++step) {
     catena::test::advance_fixed(hht, 2e-4, 1);
-    out.push_back(system.contact_states({hht.q(), hht.v(), {}, hht.time()})[0].force);
+    out.push_back(catena::assembly::StateView(system).contact_states({hht.q(), hht.v(), {}, hht.time()})[0].force);
   }
   for (int node = 0; node < static_cast<int>(m.nodes.size()); ++node)
     out.push_back(catena::test::global_value(comm, hht.q(), system.dof_map().global_dof(node, 2)));

@@ -17,6 +17,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
@@ -218,7 +219,7 @@ TEST(LocalPatch, AContactCountsAsAKernel) {
   solvers::StaticSolver(system, m.static_options).solve(q.get());
   add_wave(v.get(), 0.05, 0.21, 1.0);
   const double t = 0.01;
-  ASSERT_GT(system.contact_states({q.get(), v.get(), {}, t})[0].force, 0.0);  // in contact
+  ASSERT_GT(catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, t})[0].force, 0.0);  // in contact
   system.prepare_local_patches();
   system.force({q.get(), v.get(), {}, t}, f.get());
 

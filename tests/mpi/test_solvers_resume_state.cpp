@@ -11,6 +11,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
@@ -102,7 +103,7 @@ TEST(ResumeState, HhtWithContactAndLocalNewtonContinuesBitForBit) {
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
   solvers::StaticSolver(system, m.static_options).solve(q.get());
-  ASSERT_GT(system.contact_states({q.get(), v.get(), {}, 0.0})[0].force, 0.0);
+  ASSERT_GT(catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, 0.0})[0].force, 0.0);
   const solvers::HhtOptions options;  // local Newton on
   expect_exact_continuation(
       [&] { return std::make_unique<solvers::HhtIntegrator>(system, options); }, q.get(),

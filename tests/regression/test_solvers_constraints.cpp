@@ -15,6 +15,7 @@
 #include <cstdio>
 
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
@@ -295,7 +296,7 @@ TEST(ConstraintStatics, MultiplierEqualsTheEliminatedSupportReaction) {
       tip[static_cast<size_t>(k)] =
           catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(mid, k));
     if (m == &a) {
-      const auto r = system.reactions({q.get(), nullptr, {1.0, 1.0, 1.0}});
+      const auto r = catena::assembly::StateView(system).reactions({q.get(), nullptr, {1.0, 1.0, 1.0}});
       double local[3] = {0, 0, 0};
       for (size_t i = 0; i < r.nodes.size(); ++i)
         if (r.nodes[i] == 0)

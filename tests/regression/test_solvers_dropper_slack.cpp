@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
@@ -127,7 +128,7 @@ class SlackObserver : public solvers::TransientObserver {
     const std::size_t n = element_.size();
     std::vector<int> elements;
     std::vector<elements::SectionResult> results;
-    system_.section_results({integrator_.q(), integrator_.v(), {}, integrator_.time()}, elements,
+    catena::assembly::StateView(system_).section_results({integrator_.q(), integrator_.v(), {}, integrator_.time()}, elements,
                             results);
     // Force and strain of every dropper, summed over ranks (each owns some).
     std::vector<double> local(2 * n, 0.0), value(2 * n, 0.0);
@@ -140,7 +141,7 @@ class SlackObserver : public solvers::TransientObserver {
                   system_.comm());
     for (std::size_t i = 0; i < n; ++i) record(i, value[2 * i], value[2 * i + 1]);
     const double contact =
-        system_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()})[0].force;
+        catena::assembly::StateView(system_).contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()})[0].force;
     min_contact = std::min(min_contact, contact);
     max_contact = std::max(max_contact, contact);
   }

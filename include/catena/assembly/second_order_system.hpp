@@ -16,8 +16,9 @@
 //
 // Every term is a coupling (couplings/coupling.hpp): this class partitions the model,
 // numbers the unknowns the couplings name, and runs the one gather–evaluate–scatter loop
-// over them for residuals, matrices and local patches. Queries for output (node values,
-// section results, reactions, contact states) are in state_queries.cpp.
+// over them for residuals, matrices and local patches. What output and checkpoints ask of a
+// state (node values, section results, reactions, contact states, node-indexed rows) is
+// assembly/state_view.hpp.
 #include <mpi.h>
 #include <petscmat.h>
 
@@ -46,13 +47,6 @@ struct EvalPoint {
 
 using couplings::JacobianCoefficients;
 using couplings::kStaticJacobian;
-
-// Per supported node (owned by this rank): reaction of the supports on the node.
-struct Reactions {
-  std::vector<int> nodes;       // ascending model node indices
-  std::vector<double> force;    // 3 per node, N
-  std::vector<double> moment;   // 3 per node, N·m (from fixed slope DOFs)
-};
 
 class SecondOrderSystem {
  public:
@@ -116,16 +110,6 @@ class SecondOrderSystem {
   // matrix and pass C = null to tangent_parts, which halves a tangent refresh's assembly.
   bool has_damping() const { return has_damping_; }
 
-  // Moving contacts (model::MovingContact, pantograph heads on a wire).
-  struct ContactState {
-    double force = 0.0;        // N, ≥ 0 (0: no contact)
-    double position = 0.0;     // m along the path (the pantograph's position)
-    double penetration = 0.0;  // m, (r_head − r_wire)·up; > 0 in contact
-    bool on_path = false;      // the contact point is on its path
-  };
-  // Collective. Every contact's state at p (identical on every rank).
-  std::vector<ContactState> contact_states(const EvalPoint& p);
-
   // Constraints (Lagrange multipliers).
   bool has_constraints() const { return !model_->constraints.empty(); }
   // Collective. 1 in the multiplier slots, 0 in the nodal ones.
@@ -133,28 +117,6 @@ class SecondOrderSystem {
   // Collective. ∂²u/∂t² of the prescribed motions at t in the multiplier slots (0 in the
   // others): with G constant, the acceleration-level constraint is G a = that.
   void constraint_acceleration(double t, Vec out) const;
-
-  // Collective. Section results for this rank's model elements (ascending index).
-  void section_results(const EvalPoint& p, std::vector<int>& elements,
-                       std::vector<elements::SectionResult>& results);
-  // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
-  // slopes (∂r/∂x, zero where a node has none), 3 each.
-  void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes);
-  // Not collective. x's free DOFs of the owned nodes in the full nodal layout, 12 values
-  // per node of dof_map().owned_nodes() (fixed and absent components 0), and this rank's
-  // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
-  void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
-  // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
-  // from rows (12 per node, all nodes) and its owned multiplier slots from multipliers (3
-  // per constraint, all constraints).
-  void set_from_node_rows(Vec x, const std::vector<double>& rows,
-                          const std::vector<double>& multipliers) const;
-  // Not collective. This rank's constraints (ascending index) and the force each applies
-  // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
-  void owned_constraint_forces(Vec q, std::vector<int>& constraints,
-                               std::vector<double>& forces) const;
-  // Collective. Support reactions at owned supported nodes.
-  Reactions reactions(const EvalPoint& p);
 
   // True if the static load path needs its second phase (some cable's prestrain is below
   // the path's tensioning prestrain, see elements::LocalState).
@@ -165,6 +127,8 @@ class SecondOrderSystem {
   std::string describe_dof(PetscInt global) const;
 
  private:
+  friend class StateView;  // evaluates couplings at a state for output (state_view.hpp)
+
   // Buffers of the evaluation loop, grown to the largest active set.
   struct Buffers {
     std::vector<int> positions;
@@ -196,11 +160,11 @@ class SecondOrderSystem {
   // Adds coupling i's block (dofs.n², row-major) into A: whole if dense, else its nonzeros
   // (the rest of its pattern is in A already).
   void insert_block(size_t i, const ActiveDofs& dofs, const double* block, Mat A) const;
-  void scatter_to_local(Vec global, Vec local_ghosted);
+  void scatter_to_local(Vec global, Vec local_ghosted) const;
   // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el)
   // (defined in visit_forces.hpp: inlined into the residual loop, which runs per coupling).
   template <class Fn>
-  void visit_forces(const EvalPoint& p, Fn&& fn);
+  void visit_forces(const EvalPoint& p, Fn&& fn) const;
   // Collective. Each combination c[r] over every coupling at p into matrices[r] (zeroed
   // first, assembled on return; null matrices are skipped).
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
@@ -224,9 +188,10 @@ class SecondOrderSystem {
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
   std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
-  VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
+  // Scratch of the evaluation loop (mutable: output queries evaluate through a const system).
+  mutable VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   bool has_damping_ = true;
-  Buffers work_;
+  mutable Buffers work_;
   // Local patches (prepare_local_patches): per owned DOF, the kernel couplings touching it
   // (CSR) and whether a patch may change it; marks for local_patch's search (all zero
   // between calls).

@@ -1,6 +1,7 @@
 #include "static_solution.hpp"
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 
 namespace catena::test {
 namespace {
@@ -26,7 +27,7 @@ GatheredStatic solve_static(MPI_Comm comm, const model::Model& m) {
   g.reaction_force.assign(3 * n_nodes, 0.0);
   g.reaction_moment.assign(3 * n_nodes, 0.0);
   std::vector<double> pos, slopes;
-  system.owned_node_values(q.get(), pos, slopes);
+  catena::assembly::StateView(system).owned_node_values(q.get(), pos, slopes);
   const auto& owned = system.dof_map().owned_nodes();
   for (size_t i = 0; i < owned.size(); ++i)
     for (int d = 0; d < 3; ++d) {
@@ -35,9 +36,9 @@ GatheredStatic solve_static(MPI_Comm comm, const model::Model& m) {
     }
   std::vector<int> elements;
   std::vector<elements::SectionResult> sections;
-  system.section_results({q.get(), nullptr, {}}, elements, sections);
+  catena::assembly::StateView(system).section_results({q.get(), nullptr, {}}, elements, sections);
   for (size_t i = 0; i < elements.size(); ++i) g.axial_force[elements[i]] = sections[i].axial_force;
-  const assembly::Reactions r = system.reactions({q.get(), nullptr, {}});
+  const assembly::Reactions r = catena::assembly::StateView(system).reactions({q.get(), nullptr, {}});
   for (size_t i = 0; i < r.nodes.size(); ++i)
     for (int d = 0; d < 3; ++d) {
       g.reaction_force[3 * r.nodes[i] + d] = r.force[3 * i + d];

@@ -1,0 +1,66 @@
+#pragma once
+// What output, checkpoints and tests ask of a state of the SecondOrderSystem: node values,
+// section results, support reactions, contact states, constraint forces and the
+// node-indexed (partition-independent) rows a checkpoint stores. A view holds no data of
+// its own and may be made wherever it is needed: StateView(system).contact_states(p).
+// Kept apart from the system so that the system's interface is what solvers use
+// (residuals, matrices, patches) and a new output field touches this file, not that one.
+#include <petscvec.h>
+
+#include <vector>
+
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/elements/element.hpp"
+
+namespace catena::assembly {
+
+// Per supported node (owned by this rank): reaction of the supports on the node.
+struct Reactions {
+  std::vector<int> nodes;       // ascending model node indices
+  std::vector<double> force;    // 3 per node, N
+  std::vector<double> moment;   // 3 per node, N·m (from fixed slope DOFs)
+};
+
+// A moving contact (model::MovingContact, a pantograph head on a wire) at a state.
+struct ContactState {
+  double force = 0.0;        // N, ≥ 0 (0: no contact)
+  double position = 0.0;     // m along the path (the pantograph's position)
+  double penetration = 0.0;  // m, (r_head − r_wire)·up; > 0 in contact
+  bool on_path = false;      // the contact point is on its path
+};
+
+class StateView {
+ public:
+  explicit StateView(const SecondOrderSystem& system) : system_(system) {}
+
+  // Collective. Every contact's state at p (identical on every rank).
+  std::vector<ContactState> contact_states(const EvalPoint& p) const;
+  // Collective. Section results for this rank's model elements (ascending index).
+  void section_results(const EvalPoint& p, std::vector<int>& elements,
+                       std::vector<elements::SectionResult>& results) const;
+  // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
+  // slopes (∂r/∂x, zero where a node has none), 3 each.
+  void owned_node_values(Vec q, std::vector<double>& positions,
+                         std::vector<double>& slopes) const;
+  // Collective. Support reactions at owned supported nodes.
+  Reactions reactions(const EvalPoint& p) const;
+  // Not collective. This rank's constraints (ascending index) and the force each applies
+  // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
+  void owned_constraint_forces(Vec q, std::vector<int>& constraints,
+                               std::vector<double>& forces) const;
+
+  // Not collective. x's free DOFs of the owned nodes in the full nodal layout, 12 values
+  // per node of dof_map().owned_nodes() (fixed and absent components 0), and this rank's
+  // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
+  void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
+  // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
+  // from rows (12 per node, all nodes) and its owned multiplier slots from multipliers (3
+  // per constraint, all constraints).
+  void set_from_node_rows(Vec x, const std::vector<double>& rows,
+                          const std::vector<double>& multipliers) const;
+
+ private:
+  const SecondOrderSystem& system_;
+};
+
+}  // namespace catena::assembly

@@ -1,0 +1,203 @@
+// StateView: what output, checkpoints and tests ask of a state (the class:
+// include/catena/assembly/state_view.hpp).
+#include <algorithm>
+#include <memory>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "catena/couplings/element_coupling.hpp"
+#include "catena/couplings/pantograph_contact.hpp"
+#include "local_array.hpp"
+#include "visit_forces.hpp"
+
+namespace catena::assembly {
+
+using detail::LocalArrayRead;
+using couplings::ElementCoupling;
+using couplings::ElementOrigin;
+
+void StateView::section_results(const EvalPoint& p, std::vector<int>& element_indices,
+                                        std::vector<elements::SectionResult>& results) const {
+  const SecondOrderSystem& sys = system_;
+  sys.scatter_to_local(p.q, sys.q_work_.get());
+  const LocalArrayRead q(sys.q_work_.get());
+  element_indices.clear();
+  results.clear();
+  for (size_t i = 0; i < sys.couplings_.size(); ++i) {
+    const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
+    if (!e || e->origin() != ElementOrigin::element) continue;
+    const couplings::CouplingState g =
+        sys.gather(sys.active(i, p.t, sys.work_), q.data(), nullptr, p.path, p.t, sys.work_);
+    const elements::LocalState s{g.q, {}, p.path};
+    element_indices.push_back(e->source());
+    results.push_back(e->element().section_result(s));
+  }
+}
+
+void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
+                                          std::vector<double>& slopes) const {
+  const SecondOrderSystem& sys = system_;
+  sys.scatter_to_local(q_global, sys.q_work_.get());
+  const LocalArrayRead q(sys.q_work_.get());
+  positions.clear();
+  slopes.clear();
+  for (int n : sys.dofs_.owned_nodes()) {
+    auto value = [&](int k) {
+      const PetscInt l = sys.dofs_.local_dof(n, k);
+      return l >= 0 ? q.data()[l] : sys.node_reference_[12 * n + k];
+    };
+    for (int d = 0; d < 3; ++d) positions.push_back(value(d));
+    for (int d = 3; d < 6; ++d) slopes.push_back(sys.dofs_.node_dofs(n) > 3 ? value(d) : 0.0);
+  }
+}
+
+Reactions StateView::reactions(const EvalPoint& p) const {
+  const SecondOrderSystem& sys = system_;
+  const model::Model& m = *sys.model_;
+  // Supported nodes (any fixed DOF or an elastic support), replicated and ascending.
+  std::vector<int> supported;
+  for (const auto& s : m.supports) supported.push_back(s.node);
+  for (const auto& s : m.elastic_supports) supported.push_back(s.node);
+  std::sort(supported.begin(), supported.end());
+  supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
+  auto slot = [&](int node) {
+    return static_cast<size_t>(std::lower_bound(supported.begin(), supported.end(), node) -
+                               supported.begin());
+  };
+
+  // Partial sums of the support force on each nodal DOF, completed by an allreduce. The
+  // element couplings carry it: R = f_int − f_ext at a fixed DOF, and an elastic support
+  // pulls its node back.
+  std::vector<double> partial(12 * supported.size(), 0.0), total(partial.size(), 0.0);
+  sys.visit_forces(p, [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
+    const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
+    if (!e) return;
+    const std::vector<couplings::DofKey>& keys = e->dofs();
+    for (size_t k = 0; k < f_el.size(); ++k) {
+      const int node = keys[k].index, comp = keys[k].component;
+      if (e->origin() == ElementOrigin::elastic_support)
+        partial[12 * slot(node) + comp] -= f_el[k];
+      else if (dofs.global[k] < 0)
+        partial[12 * slot(node) + comp] += f_el[k];
+    }
+  });
+  MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE,
+                MPI_SUM, sys.comm_);
+
+  Reactions r;
+  const int rank = mpi_rank(sys.comm_);
+  const LocalArrayRead q(sys.q_work_.get());
+  for (int node : supported) {
+    if (sys.partition_.node_owner[node] != rank) continue;
+    const double* R = &total[12 * slot(node)];
+    r.nodes.push_back(node);
+    for (int d = 0; d < 3; ++d) r.force.push_back(R[d]);
+    // Generalised forces Q_g on gradient g act as the moment Σ g × Q_g.
+    Vec3 moment = Vec3::Zero();
+    for (int b = 1; b * 3 < sys.dofs_.node_dofs(node); ++b) {
+      Vec3 grad, Q;
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt l = sys.dofs_.local_dof(node, 3 * b + d);
+        grad[d] = l >= 0 ? q.data()[l] : sys.node_reference_[12 * node + 3 * b + d];
+        Q[d] = R[3 * b + d];
+      }
+      moment += grad.cross(Q);
+    }
+    for (int d = 0; d < 3; ++d) r.moment.push_back(moment[d]);
+  }
+  return r;
+}
+
+std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
+  const SecondOrderSystem& sys = system_;
+  const size_t n = sys.model_->contacts.size();
+  if (n == 0) return {};
+  std::vector<double> local(4 * n, 0.0), global(4 * n, 0.0);
+  sys.scatter_to_local(p.q, sys.q_work_.get());
+  if (p.v) sys.scatter_to_local(p.v, sys.v_work_.get());
+  {
+    const LocalArrayRead q(sys.q_work_.get());
+    std::unique_ptr<LocalArrayRead> v;
+    if (p.v) v = std::make_unique<LocalArrayRead>(sys.v_work_.get());
+    for (size_t i = 0; i < sys.couplings_.size(); ++i) {
+      const auto* c = dynamic_cast<const couplings::PantographContact*>(sys.couplings_[i].get());
+      if (!c) continue;
+      const size_t k = static_cast<size_t>(c->index());
+      const bool on = c->on_path(p.t);
+      double delta = 0.0, F = 0.0;
+      if (on) {
+        F = c->force(sys.gather(sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr, p.path,
+                            p.t, sys.work_),
+                     &delta);
+      }
+      local[4 * k] = F;
+      local[4 * k + 1] = c->position(p.t);
+      local[4 * k + 2] = delta;
+      local[4 * k + 3] = on ? 1.0 : 0.0;
+    }
+  }
+  MPI_Allreduce(local.data(), global.data(), static_cast<int>(global.size()), MPI_DOUBLE, MPI_SUM,
+                sys.comm_);
+  std::vector<ContactState> out(n);
+  for (size_t i = 0; i < n; ++i)
+    out[i] = {global[4 * i], global[4 * i + 1], global[4 * i + 2], global[4 * i + 3] > 0.5};
+  return out;
+}
+
+void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
+                                        std::vector<double>& multipliers) const {
+  const SecondOrderSystem& sys = system_;
+  rows.clear();
+  multipliers.clear();
+  const PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(x, &a));
+  for (int n : sys.dofs_.owned_nodes())
+    for (int k = 0; k < 12; ++k) {
+      const PetscInt g = k < sys.dofs_.node_dofs(n) ? sys.dofs_.global_dof(n, k) : -1;
+      rows.push_back(g >= 0 ? a[g - sys.dofs_.first_owned()] : 0.0);
+    }
+  for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
+    for (int k = 0; k < 3; ++k)
+      if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0) multipliers.push_back(a[l]);
+  CATENA_PETSC(VecRestoreArrayRead(x, &a));
+}
+
+void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
+                                           const std::vector<double>& multipliers) const {
+  const SecondOrderSystem& sys = system_;
+  CATENA_ASSERT(rows.size() == 12 * sys.model_->nodes.size() &&
+                    multipliers.size() == 3 * sys.model_->constraints.size(),
+                "12 values per node, 3 per constraint");
+  PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArray(x, &a));
+  for (int n : sys.dofs_.owned_nodes())
+    for (int k = 0; k < sys.dofs_.node_dofs(n); ++k) {
+      const PetscInt g = sys.dofs_.global_dof(n, k);
+      if (g >= 0) a[g - sys.dofs_.first_owned()] = rows[12 * static_cast<size_t>(n) + k];
+    }
+  for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
+    for (int k = 0; k < 3; ++k)
+      if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0)
+        a[l] = multipliers[3 * static_cast<size_t>(c) + k];
+  CATENA_PETSC(VecRestoreArray(x, &a));
+}
+
+void StateView::owned_constraint_forces(Vec q, std::vector<int>& constraints,
+                                                std::vector<double>& forces) const {
+  const SecondOrderSystem& sys = system_;
+  constraints.clear();
+  forces.clear();
+  const PetscScalar* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &a));
+  for (int c = 0; c < sys.dofs_.n_constraints(); ++c) {
+    if (sys.dofs_.multiplier_local(c, 0) < 0) continue;
+    constraints.push_back(c);
+    for (int k = 0; k < 3; ++k) forces.push_back(-a[sys.dofs_.multiplier_local(c, k)]);
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &a));
+}
+
+}  // namespace catena::assembly

@@ -1,0 +1,60 @@
+// SecondOrderSystem, part: what solvers ask of the system besides residuals and matrices —
+// the multiplier slots, the prescribed motions' acceleration, whether the load path needs
+// its release phase, and DOF names for messages (the class:
+// include/catena/assembly/second_order_system.hpp).
+#include <string>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/core/error.hpp"
+#include "catena/couplings/node_constraint.hpp"
+#include "catena/elements/ancf_cable.hpp"
+
+namespace catena::assembly {
+
+bool SecondOrderSystem::has_slack_prestrain() const {
+  for (const auto& e : model_->elements)
+    if (const auto* c = std::get_if<model::CableProps>(&e.props);
+        c && !c->prestrain_with_loads && c->prestrain < elements::AncfCable::kPathPrestrain)
+      return true;
+  return false;
+}
+
+std::string SecondOrderSystem::describe_dof(PetscInt global) const {
+  static const char* names[12] = {"x",    "y",    "z",    "rx_x", "rx_y", "rx_z",
+                                  "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"};
+  if (global < 0 || global >= dofs_.n_global()) return "unknown DOF";
+  const int node = dofs_.node_of_global(global);
+  const int comp = dofs_.component_of_global(global);
+  const std::string id = std::to_string(model_->nodes[static_cast<size_t>(node)].id);
+  if (const int c = dofs_.constraint_of_global(global); c >= 0)
+    return "constraint " + std::to_string(c + 1) + " (multiplier " + names[comp] + ", node " +
+           id + ")";
+  return "node " + id + " (" + (comp >= 0 ? names[comp] : "?") + ")";
+}
+
+void SecondOrderSystem::algebraic_mask(Vec mask) const {
+  CATENA_PETSC(VecSet(mask, 0.0));
+  for (int c = 0; c < dofs_.n_constraints(); ++c)
+    if (dofs_.multiplier_local(c, 0) >= 0)
+      for (int k = 0; k < 3; ++k)
+        CATENA_PETSC(VecSetValue(mask, dofs_.multiplier_dof(c, k), 1.0, INSERT_VALUES));
+  CATENA_PETSC(VecAssemblyBegin(mask));
+  CATENA_PETSC(VecAssemblyEnd(mask));
+}
+
+void SecondOrderSystem::constraint_acceleration(double t, Vec out) const {
+  CATENA_PETSC(VecSet(out, 0.0));
+  for (const auto& coupling : couplings_) {
+    const auto* c = dynamic_cast<const couplings::NodeConstraint*>(coupling.get());
+    if (!c) continue;
+    const Vec3 acc = c->acceleration(t);
+    if (acc == Vec3::Zero()) continue;
+    for (int k = 0; k < 3; ++k)
+      CATENA_PETSC(VecSetValue(out, dofs_.multiplier_dof(c->index(), k), acc[k], INSERT_VALUES));
+  }
+  CATENA_PETSC(VecAssemblyBegin(out));
+  CATENA_PETSC(VecAssemblyEnd(out));
+}
+
+}  // namespace catena::assembly
