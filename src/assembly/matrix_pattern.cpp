@@ -7,86 +7,102 @@
 // columns are sent to their owner, which merges them into its own. The owned rows are
 // visited twice, once to count each row's entries for the preallocation and once to insert
 // them as zeros. Why not PETSc's MATPREALLOCATOR: a dense coupling of n DOFs names n²
-// pairs, most shared with its neighbours, and the preallocator hashes every one (about 7 %
+// pairs, most shared with its neighbours, and the preallocator hashes every one (about 6 %
 // of the moving-load benchmark's process); why not compressed rows handed to PETSc whole:
-// they held a second copy of the pattern while the matrix was allocated, which raised the
-// run's peak memory (docs/performance.md). Here the extra memory is one row, the row →
-// coupling incidence and the boundary rows received from other ranks.
+// they hold a second copy of the pattern while the matrix is allocated. Here the extra
+// memory is one row, the row → coupling incidence and the boundary rows received from
+// other ranks.
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
 
 namespace catena::assembly {
+namespace {
 
-template <class Fn>
-void SecondOrderSystem::visit_pattern_rows(Fn&& fn) const {
-  const size_t n_local = static_cast<size_t>(dofs_.n_owned()) + dofs_.ghosts().size();
-
-  // Sparse couplings: per position, the positions its row may couple (from pattern()).
-  std::vector<std::vector<std::vector<int>>> sparse_columns(couplings_.size());
-  std::vector<std::pair<int, int>> entries;
-  for (size_t i = 0; i < couplings_.size(); ++i) {
-    if (couplings_[i]->dense()) continue;
-    couplings_[i]->pattern(entries);
-    auto& columns = sparse_columns[i];
-    columns.assign(offset_[i + 1] - offset_[i], {});
-    for (auto [r, c] : entries) columns[static_cast<size_t>(r)].push_back(c);
+// The couplings at each row of the ghosted local form, and the union of their patterns
+// per row on request.
+class RowCouplings {
+ public:
+  // offset: per coupling, its first entry in local_index/global_index (and one past the
+  // last coupling's); local_index: ghosted local index or −1; global_index likewise.
+  RowCouplings(const couplings::CouplingList& list, const std::vector<size_t>& offset,
+               const std::vector<PetscInt>& local_index, const std::vector<PetscInt>& global_index,
+               size_t n_local)
+      : list_(list), offset_(offset), local_(local_index), global_(global_index) {
+    // Sparse couplings: per position, the positions its row may couple (from pattern()).
+    sparse_columns_.resize(list.size());
+    std::vector<std::pair<int, int>> entries;
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (list[i]->dense()) continue;
+      list[i]->pattern(entries);
+      auto& columns = sparse_columns_[i];
+      columns.assign(offset[i + 1] - offset[i], {});
+      for (auto [r, c] : entries) columns[static_cast<size_t>(r)].push_back(c);
+    }
+    // The (coupling, position) pairs at each local row, compressed by row.
+    start_.assign(n_local + 1, 0);
+    for (const PetscInt row : local_index)
+      if (row >= 0) ++start_[static_cast<size_t>(row) + 1];
+    for (size_t r = 0; r < n_local; ++r) start_[r + 1] += start_[r];
+    at_.resize(start_.back());
+    std::vector<size_t> next(start_.begin(), start_.end() - 1);
+    for (size_t i = 0; i < list.size(); ++i)
+      for (size_t k = offset[i]; k < offset[i + 1]; ++k)
+        if (const PetscInt row = local_index[k]; row >= 0)
+          at_[next[static_cast<size_t>(row)]++] = {static_cast<std::uint32_t>(i),
+                                                    static_cast<std::uint32_t>(k - offset[i])};
+    seen_in_row_.resize(n_local);
   }
 
-  // The (coupling, position) pairs at each local row, compressed by row.
+  // Calls fn(local row, columns) for the local rows [begin, end): the global columns of
+  // the couplings' patterns there, unsorted, each once (fn may change them).
+  template <class Fn>
+  void visit(size_t begin, size_t end, Fn&& fn) {
+    // A visit marks columns with its rows' indices, so an earlier visit's marks must go.
+    std::fill(seen_in_row_.begin(), seen_in_row_.end(), kNoRow);
+    for (size_t row = begin; row < end; ++row) {
+      columns_.clear();
+      const auto add = [&](size_t k) {
+        const PetscInt local = local_[k];
+        if (local < 0 || seen_in_row_[static_cast<size_t>(local)] == row) return;
+        seen_in_row_[static_cast<size_t>(local)] = row;
+        columns_.push_back(global_[k]);
+      };
+      for (size_t j = start_[row]; j < start_[row + 1]; ++j) {
+        const size_t i = at_[j].coupling, first = offset_[i];
+        if (list_[i]->dense()) {
+          for (size_t k = first; k < offset_[i + 1]; ++k) add(k);
+        } else {
+          for (int c : sparse_columns_[i][at_[j].position]) add(first + static_cast<size_t>(c));
+        }
+      }
+      fn(row, columns_);
+    }
+  }
+
+ private:
   struct Incidence {
     std::uint32_t coupling, position;
   };
-  std::vector<size_t> incidence_start(n_local + 1, 0);
-  for (const PetscInt row : local_index_)
-    if (row >= 0) ++incidence_start[static_cast<size_t>(row) + 1];
-  for (size_t r = 0; r < n_local; ++r) incidence_start[r + 1] += incidence_start[r];
-  std::vector<Incidence> incidences(incidence_start.back());
-  {
-    std::vector<size_t> next(incidence_start.begin(), incidence_start.end() - 1);
-    for (size_t i = 0; i < couplings_.size(); ++i)
-      for (size_t k = offset_[i]; k < offset_[i + 1]; ++k)
-        if (const PetscInt row = local_index_[k]; row >= 0)
-          incidences[next[static_cast<size_t>(row)]++] = {
-              static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k - offset_[i])};
-  }
-
-  // Each row's columns, marked by local index so that a column is listed once.
-  std::vector<size_t> seen_in_row(n_local, n_local);
-  std::vector<PetscInt> row_columns;
-  for (size_t row = 0; row < n_local; ++row) {
-    row_columns.clear();
-    const auto add = [&](size_t k) {
-      const PetscInt local = local_index_[k];
-      if (local < 0 || seen_in_row[static_cast<size_t>(local)] == row) return;
-      seen_in_row[static_cast<size_t>(local)] = row;
-      row_columns.push_back(global_index_[k]);
-    };
-    for (size_t j = incidence_start[row]; j < incidence_start[row + 1]; ++j) {
-      const Incidence& at = incidences[j];
-      const size_t begin = offset_[at.coupling];
-      if (couplings_[at.coupling]->dense()) {
-        for (size_t k = begin; k < offset_[at.coupling + 1]; ++k) add(k);
-      } else {
-        for (int c : sparse_columns[at.coupling][at.position]) add(begin + static_cast<size_t>(c));
-      }
-    }
-    fn(static_cast<PetscInt>(row), row_columns);
-  }
-}
-
-namespace {
+  static constexpr size_t kNoRow = static_cast<size_t>(-1);
+  const couplings::CouplingList& list_;
+  const std::vector<size_t>& offset_;
+  const std::vector<PetscInt>& local_;
+  const std::vector<PetscInt>& global_;
+  std::vector<std::vector<std::vector<int>>> sparse_columns_;
+  std::vector<size_t> start_;     // per local row, into at_
+  std::vector<Incidence> at_;
+  std::vector<size_t> seen_in_row_;  // per local column: the last row that listed it
+  std::vector<PetscInt> columns_;
+};
 
 // Sends each ghost row's columns to the rank owning the row; returns, per owned row, the
 // columns other ranks' couplings put there (global indices, in no order, maybe repeated).
-std::vector<std::vector<PetscInt>> exchange_boundary_rows(
-    MPI_Comm comm, const DofMap& dofs,
-    const std::function<void(const std::function<void(PetscInt, std::vector<PetscInt>&)>&)>&
-        visit) {
+std::vector<std::vector<PetscInt>> exchange_boundary_rows(MPI_Comm comm, const DofMap& dofs,
+                                                          RowCouplings& rows) {
   const int size = mpi_size(comm);
   std::vector<PetscInt> owned_counts(static_cast<size_t>(size));
   const PetscInt n_owned = dofs.n_owned();
@@ -96,9 +112,10 @@ std::vector<std::vector<PetscInt>> exchange_boundary_rows(
 
   // Per destination: [global row, count, columns...] for each of its rows.
   std::vector<std::vector<PetscInt>> out(static_cast<size_t>(size));
-  visit([&](PetscInt local_row, std::vector<PetscInt>& columns) {
-    if (local_row < n_owned || columns.empty()) return;
-    const PetscInt row = dofs.ghosts()[static_cast<size_t>(local_row - n_owned)];
+  const auto owned = static_cast<size_t>(n_owned);
+  rows.visit(owned, owned + dofs.ghosts().size(), [&](size_t local_row, auto& columns) {
+    if (columns.empty()) return;
+    const PetscInt row = dofs.ghosts()[local_row - owned];
     const auto owner = static_cast<size_t>(
         std::upper_bound(range_start.begin(), range_start.end(), row) - range_start.begin() - 1);
     out[owner].push_back(row);
@@ -119,7 +136,7 @@ std::vector<std::vector<PetscInt>> exchange_boundary_rows(
   MPI_Alltoallv(sent.data(), send_counts.data(), send_offsets.data(), MPIU_INT, received.data(),
                 recv_counts.data(), recv_offsets.data(), MPIU_INT, comm);
 
-  std::vector<std::vector<PetscInt>> remote(static_cast<size_t>(n_owned));
+  std::vector<std::vector<PetscInt>> remote(owned);
   const PetscInt first = dofs.first_owned();
   for (size_t at = 0; at < received.size();) {
     const PetscInt row = received[at], count = received[at + 1];
@@ -135,20 +152,19 @@ std::vector<std::vector<PetscInt>> exchange_boundary_rows(
 
 MatHandle SecondOrderSystem::create_matrix() const {
   const PetscInt n = dofs_.n_owned(), N = dofs_.n_global(), first = dofs_.first_owned();
+  RowCouplings rows(couplings_, offset_, local_index_, global_index_,
+                    static_cast<size_t>(n) + dofs_.ghosts().size());
   std::vector<std::vector<PetscInt>> remote;
-  if (mpi_size(comm_) > 1)
-    remote = exchange_boundary_rows(comm_, dofs_, [this](const auto& fn) { visit_pattern_rows(fn); });
+  if (mpi_size(comm_) > 1) remote = exchange_boundary_rows(comm_, dofs_, rows);
   // Each owned row's columns: this rank's, merged with other ranks' where there are any.
   const auto visit_owned = [&](auto&& fn) {
-    visit_pattern_rows([&](PetscInt row, std::vector<PetscInt>& columns) {
-      if (row >= n) return;
-      if (!remote.empty() && !remote[static_cast<size_t>(row)].empty()) {
-        const auto& more = remote[static_cast<size_t>(row)];
-        columns.insert(columns.end(), more.begin(), more.end());
+    rows.visit(0, static_cast<size_t>(n), [&](size_t row, std::vector<PetscInt>& columns) {
+      if (!remote.empty() && !remote[row].empty()) {
+        columns.insert(columns.end(), remote[row].begin(), remote[row].end());
         std::sort(columns.begin(), columns.end());
         columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
       }
-      fn(first + row, columns);
+      fn(first + static_cast<PetscInt>(row), columns);
     });
   };
 

@@ -31,7 +31,7 @@ ElementCoupling::ElementCoupling(std::unique_ptr<elements::Element> element,
 
 void ElementCoupling::evaluate(const CouplingState& s, double* f,
                                std::span<const MatrixRequest> m, Scratch& scratch) const {
-  const size_t n = s.q.size();
+  const size_t n = dofs_.size();
   const size_t nn = n * n;
   bool stiffness = false, damping = false, mass = false;
   double *K = nullptr, *C = nullptr, *M = nullptr;

@@ -169,11 +169,6 @@ class SecondOrderSystem {
   // first, assembled on return; null matrices are skipped).
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
                          std::span<const Mat> matrices);
-  // Calls fn(local row, its columns) for each row of the ghosted local form (owned rows
-  // first, then the ghosts') with the union of this rank's couplings' patterns there
-  // (columns global, unsorted, each once; fn may change them). matrix_pattern.cpp.
-  template <class Fn>
-  void visit_pattern_rows(Fn&& fn) const;
 
   MPI_Comm comm_;
   const model::Model* model_;
