@@ -13,10 +13,10 @@ void apply_initial_conditions(const assembly::SecondOrderSystem& system, Vec q, 
     if (g >= lo && g < hi && value != 0.0) CATENA_PETSC(VecSetValue(x, g, value, ADD_VALUES));
   };
   for (const model::InitialNodeOffset& o : ic.offsets) {
-    const int n_dofs = dofs.node_dofs(o.node);
+    const model::UnknownKindInfo& kind = model::kind_info(dofs.node_kind(o.node));
     for (int d = 0; d < 3; ++d) {
-      add(q, dofs.global_dof(o.node, d), o.displacement[d]);
-      if (n_dofs >= 6) add(q, dofs.global_dof(o.node, 3 + d), o.slope[d]);
+      add(q, dofs.global_dof(o.node, kind.position + d), o.displacement[d]);
+      if (kind.gradients >= 0) add(q, dofs.global_dof(o.node, kind.gradients + d), o.slope[d]);
     }
   }
   CATENA_PETSC(VecAssemblyBegin(q));

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <variant>
 
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 
 namespace catena::assembly {
 
@@ -11,9 +11,13 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
                std::vector<int> touched)
     : partition_(&partition), rank_(rank) {
   const int n_nodes = static_cast<int>(model.nodes.size());
-  const std::vector<int> counts = model::all_node_dofs(model);
+  node_kinds_ = model::node_kinds(model);
+  std::vector<int> counts(n_nodes);
   node_offset_.assign(n_nodes + 1, 0);
-  for (int n = 0; n < n_nodes; ++n) node_offset_[n + 1] = node_offset_[n] + counts[n];
+  for (int n = 0; n < n_nodes; ++n) {
+    counts[n] = model::kind_info(node_kinds_[n]).size;
+    node_offset_[n + 1] = node_offset_[n] + counts[n];
+  }
 
   std::vector<unsigned> fixed_mask(n_nodes, 0u);
   for (const auto& s : model.supports) fixed_mask[s.node] |= s.fixed_mask;
@@ -24,7 +28,7 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
   for (int n = 0; n < n_nodes; ++n) nodes_of_rank[partition.node_owner[n]].push_back(n);
   const int n_constraints = static_cast<int>(model.constraints.size());
   constraint_owner_.resize(n_constraints);
-  multiplier_.assign(3 * n_constraints, -1);
+  multiplier_.assign(static_cast<std::size_t>(kMultipliers) * n_constraints, -1);
   for (int c = 0; c < n_constraints; ++c)
     constraint_owner_[c] = partition.node_owner[model.constraints[c].node_a];
   PetscInt next = 0;
@@ -39,8 +43,8 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
         }
     for (int c = 0; c < n_constraints; ++c)
       if (constraint_owner_[c] == r)
-        for (int k = 0; k < 3; ++k) {
-          multiplier_[3 * c + k] = next++;
+        for (int k = 0; k < kMultipliers; ++k) {
+          multiplier_[kMultipliers * c + k] = next++;
           global_node_.push_back(model.constraints[c].node_a);
           global_constraint_.push_back(c);
         }
@@ -76,7 +80,7 @@ int DofMap::node_of_global(PetscInt global) const { return global_node_.at(globa
 
 int DofMap::component_of_global(PetscInt global) const {
   if (const int c = constraint_of_global(global); c >= 0)
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < kMultipliers; ++k)
       if (multiplier_dof(c, k) == global) return k;
   const int n = node_of_global(global);
   for (int k = 0; k < node_dofs(n); ++k)

@@ -58,6 +58,20 @@ std::vector<int> touched_nodes(const couplings::CouplingList& list) {
   return nodes;
 }
 
+constexpr size_t kBlock = model::kMaxBlockUnknowns;
+
+// A node's reference coordinates in its kind's layout: the position at the kind's position
+// slot, then the ANCF gradients (tangent, section y, section z) in threes from its
+// gradient slot to the block's end.
+void reference_block(const model::Node& node, const model::UnknownKindInfo& kind, double* out) {
+  if (kind.position >= 0)
+    for (int d = 0; d < 3; ++d) out[kind.position + d] = node.position[d];
+  if (kind.gradients < 0) return;
+  const Vec3* gradients[3] = {&node.tangent, &node.section_y, &node.section_z};
+  for (int b = 0; kind.gradients + 3 * b < kind.size; ++b)
+    for (int d = 0; d < 3; ++d) out[kind.gradients + 3 * b + d] = (*gradients[b])[d];
+}
+
 }  // namespace
 
 SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
@@ -67,13 +81,10 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       couplings_(couplings::make_couplings(model, partition_.element_owner,
                                            partition_.node_owner, mpi_rank(comm))),
       dofs_(model, partition_, mpi_rank(comm), touched_nodes(couplings_)) {
-  node_reference_.resize(12 * model.nodes.size());
-  for (size_t n = 0; n < model.nodes.size(); ++n) {
-    const model::Node& node = model.nodes[n];
-    const Vec3* blocks[4] = {&node.position, &node.tangent, &node.section_y, &node.section_z};
-    for (int b = 0; b < 4; ++b)
-      for (int d = 0; d < 3; ++d) node_reference_[12 * n + 3 * b + d] = (*blocks[b])[d];
-  }
+  node_reference_.assign(kBlock * model.nodes.size(), 0.0);
+  for (size_t n = 0; n < model.nodes.size(); ++n)
+    reference_block(model.nodes[n], model::kind_info(dofs_.node_kind(static_cast<int>(n))),
+                    &node_reference_[kBlock * n]);
 
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   offset_.push_back(0);
@@ -85,12 +96,12 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
         local = dofs_.multiplier_local(key.index, key.component);
         global = dofs_.multiplier_dof(key.index, key.component);
       } else {
-        fixed = node_reference_[12 * static_cast<size_t>(key.index) +
+        CATENA_ASSERT(key.component < dofs_.node_dofs(key.index),
+                      "a coupling asks for a component its node's kind has");
+        fixed = node_reference_[kBlock * static_cast<size_t>(key.index) +
                                 static_cast<size_t>(key.component)];
-        if (key.component < dofs_.node_dofs(key.index)) {
-          local = dofs_.local_dof(key.index, key.component);
-          global = dofs_.global_dof(key.index, key.component);
-        }
+        local = dofs_.local_dof(key.index, key.component);
+        global = dofs_.global_dof(key.index, key.component);
       }
       CATENA_ASSERT(global < 0 || local >= 0, "a coupling's free DOF is on this rank");
       local_index_.push_back(local);
@@ -185,7 +196,7 @@ void SecondOrderSystem::reference_state(Vec q) const {
   for (int n : dofs_.owned_nodes())
     for (int k = 0; k < dofs_.node_dofs(n); ++k) {
       const PetscInt g = dofs_.global_dof(n, k);
-      if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[12 * n + k];
+      if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[kBlock * n + k];
     }
   for (int c = 0; c < dofs_.n_constraints(); ++c)
     for (int k = 0; k < 3; ++k)

@@ -19,6 +19,11 @@ using detail::LocalArrayRead;
 using couplings::ElementCoupling;
 using couplings::ElementOrigin;
 
+namespace {
+// Width of a node's row in the reference coordinates and in checkpoint rows.
+constexpr size_t kBlock = model::kMaxBlockUnknowns;
+}  // namespace
+
 void StateView::section_results(const EvalPoint& p, std::vector<int>& element_indices,
                                         std::vector<elements::SectionResult>& results) const {
   const SecondOrderSystem& sys = system_;
@@ -47,10 +52,11 @@ void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
   for (int n : sys.dofs_.owned_nodes()) {
     auto value = [&](int k) {
       const PetscInt l = sys.dofs_.local_dof(n, k);
-      return l >= 0 ? q.data()[l] : sys.node_reference_[12 * n + k];
+      return l >= 0 ? q.data()[l] : sys.node_reference_[kBlock * n + k];
     };
-    for (int d = 0; d < 3; ++d) positions.push_back(value(d));
-    for (int d = 3; d < 6; ++d) slopes.push_back(sys.dofs_.node_dofs(n) > 3 ? value(d) : 0.0);
+    const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
+    for (int d = 0; d < 3; ++d) positions.push_back(kind.position >= 0 ? value(kind.position + d) : 0.0);
+    for (int d = 0; d < 3; ++d) slopes.push_back(kind.gradients >= 0 ? value(kind.gradients + d) : 0.0);
   }
 }
 
@@ -71,7 +77,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   // Partial sums of the support force on each nodal DOF, completed by an allreduce. The
   // element couplings carry it: R = f_int − f_ext at a fixed DOF, and an elastic support
   // pulls its node back.
-  std::vector<double> partial(12 * supported.size(), 0.0), total(partial.size(), 0.0);
+  std::vector<double> partial(kBlock * supported.size(), 0.0), total(partial.size(), 0.0);
   sys.visit_forces(p, [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
     const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
     if (!e) return;
@@ -79,9 +85,9 @@ Reactions StateView::reactions(const EvalPoint& p) const {
     for (size_t k = 0; k < f_el.size(); ++k) {
       const int node = keys[k].index, comp = keys[k].component;
       if (e->origin() == ElementOrigin::elastic_support)
-        partial[12 * slot(node) + comp] -= f_el[k];
+        partial[kBlock * slot(node) + comp] -= f_el[k];
       else if (dofs.global[k] < 0)
-        partial[12 * slot(node) + comp] += f_el[k];
+        partial[kBlock * slot(node) + comp] += f_el[k];
     }
   });
   MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE,
@@ -92,17 +98,18 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   const LocalArrayRead q(sys.q_work_.get());
   for (int node : supported) {
     if (sys.partition_.node_owner[node] != rank) continue;
-    const double* R = &total[12 * slot(node)];
+    const double* R = &total[kBlock * slot(node)];
+    const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(node));
     r.nodes.push_back(node);
-    for (int d = 0; d < 3; ++d) r.force.push_back(R[d]);
+    for (int d = 0; d < 3; ++d) r.force.push_back(R[kind.position + d]);
     // Generalised forces Q_g on gradient g act as the moment Σ g × Q_g.
     Vec3 moment = Vec3::Zero();
-    for (int b = 1; b * 3 < sys.dofs_.node_dofs(node); ++b) {
+    for (int k = kind.gradients; k >= 0 && k < kind.size; k += 3) {
       Vec3 grad, Q;
       for (int d = 0; d < 3; ++d) {
-        const PetscInt l = sys.dofs_.local_dof(node, 3 * b + d);
-        grad[d] = l >= 0 ? q.data()[l] : sys.node_reference_[12 * node + 3 * b + d];
-        Q[d] = R[3 * b + d];
+        const PetscInt l = sys.dofs_.local_dof(node, k + d);
+        grad[d] = l >= 0 ? q.data()[l] : sys.node_reference_[kBlock * node + k + d];
+        Q[d] = R[k + d];
       }
       moment += grad.cross(Q);
     }
@@ -155,12 +162,12 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
   const PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArrayRead(x, &a));
   for (int n : sys.dofs_.owned_nodes())
-    for (int k = 0; k < 12; ++k) {
+    for (int k = 0; k < model::kMaxBlockUnknowns; ++k) {
       const PetscInt g = k < sys.dofs_.node_dofs(n) ? sys.dofs_.global_dof(n, k) : -1;
       rows.push_back(g >= 0 ? a[g - sys.dofs_.first_owned()] : 0.0);
     }
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < DofMap::kMultipliers; ++k)
       if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0) multipliers.push_back(a[l]);
   CATENA_PETSC(VecRestoreArrayRead(x, &a));
 }
@@ -168,20 +175,21 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
 void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
                                            const std::vector<double>& multipliers) const {
   const SecondOrderSystem& sys = system_;
-  CATENA_ASSERT(rows.size() == 12 * sys.model_->nodes.size() &&
-                    multipliers.size() == 3 * sys.model_->constraints.size(),
-                "12 values per node, 3 per constraint");
+  CATENA_ASSERT(rows.size() == kBlock * sys.model_->nodes.size() &&
+                    multipliers.size() ==
+                        DofMap::kMultipliers * sys.model_->constraints.size(),
+                "a row per node, a multiplier block per constraint");
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(x, &a));
   for (int n : sys.dofs_.owned_nodes())
     for (int k = 0; k < sys.dofs_.node_dofs(n); ++k) {
       const PetscInt g = sys.dofs_.global_dof(n, k);
-      if (g >= 0) a[g - sys.dofs_.first_owned()] = rows[12 * static_cast<size_t>(n) + k];
+      if (g >= 0) a[g - sys.dofs_.first_owned()] = rows[kBlock * static_cast<size_t>(n) + k];
     }
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < DofMap::kMultipliers; ++k)
       if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0)
-        a[l] = multipliers[3 * static_cast<size_t>(c) + k];
+        a[l] = multipliers[DofMap::kMultipliers * static_cast<size_t>(c) + k];
   CATENA_PETSC(VecRestoreArray(x, &a));
 }
 

@@ -21,16 +21,17 @@ bool SecondOrderSystem::has_slack_prestrain() const {
 }
 
 std::string SecondOrderSystem::describe_dof(PetscInt global) const {
-  static const char* names[12] = {"x",    "y",    "z",    "rx_x", "rx_y", "rx_z",
-                                  "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"};
   if (global < 0 || global >= dofs_.n_global()) return "unknown DOF";
   const int node = dofs_.node_of_global(global);
   const int comp = dofs_.component_of_global(global);
   const std::string id = std::to_string(model_->nodes[static_cast<size_t>(node)].id);
-  if (const int c = dofs_.constraint_of_global(global); c >= 0)
-    return "constraint " + std::to_string(c + 1) + " (multiplier " + names[comp] + ", node " +
-           id + ")";
-  return "node " + id + " (" + (comp >= 0 ? names[comp] : "?") + ")";
+  const int c = dofs_.constraint_of_global(global);
+  const model::UnknownKindInfo& kind =
+      model::kind_info(c >= 0 ? model::UnknownKind::multiplier : dofs_.node_kind(node));
+  const std::string name = comp >= 0 ? std::string(kind.components[comp]) : "?";
+  if (c >= 0)
+    return "constraint " + std::to_string(c + 1) + " (multiplier " + name + ", node " + id + ")";
+  return "node " + id + " (" + name + ")";
 }
 
 void SecondOrderSystem::algebraic_mask(Vec mask) const {

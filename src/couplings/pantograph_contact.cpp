@@ -5,7 +5,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/elements/hermite.hpp"
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 
 namespace catena::couplings {
 

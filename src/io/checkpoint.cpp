@@ -13,6 +13,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/output_error.hpp"
 #include "catena/model/scene_identity.hpp"
+#include "catena/model/unknown_kinds.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -35,6 +36,11 @@ constexpr const char* kMultipliers = "/lambda";
 constexpr const char* kResumeGroup = "/resume";
 constexpr const char* kResumeVectors = "/resume/vectors";
 constexpr const char* kResumeMultipliers = "/resume/multipliers";
+
+// Row widths: a node's row holds the widest block of unknowns (model/unknown_kinds.hpp), so
+// every node kind fits and the file does not depend on which kinds a scene uses.
+constexpr std::size_t kNodeRow = model::kMaxBlockUnknowns;
+constexpr std::size_t kMultiplierRow = model::kMultipliersPerConstraint;
 
 // "<group>/<name>", a member of one of the /resume groups.
 std::string member_path(const char* group, const std::string& name) {
@@ -184,17 +190,17 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   c.facts.samples = r.integer("samples");
   c.facts.steps = r.integer("steps");
   const std::size_t n = model.nodes.size();
-  c.q = r.values(kPositions, 12 * n);
-  c.v = r.values(kVelocities, 12 * n);
-  c.a = r.values(kAccelerations, 12 * n);
-  c.lambda = r.values(kMultipliers, 3 * model.constraints.size());
+  c.q = r.values(kPositions, kNodeRow * n);
+  c.v = r.values(kVelocities, kNodeRow * n);
+  c.a = r.values(kAccelerations, kNodeRow * n);
+  c.lambda = r.values(kMultipliers, kMultiplierRow * model.constraints.size());
   if (format == kFormatWithoutResume) return c;
   c.facts.ranks = static_cast<int>(r.integer("ranks"));
   r.numbers(kResumeGroup, c.resume.reals, c.resume.integers);
   for (const std::string& name : r.members(kResumeVectors)) {
-    c.resume.rows[name] = r.values(member_path(kResumeVectors, name).c_str(), 12 * n);
+    c.resume.rows[name] = r.values(member_path(kResumeVectors, name).c_str(), kNodeRow * n);
     c.resume.multipliers[name] =
-        r.values(member_path(kResumeMultipliers, name).c_str(), 3 * model.constraints.size());
+        r.values(member_path(kResumeMultipliers, name).c_str(), kMultiplierRow * model.constraints.size());
   }
   return c;
 }
@@ -211,12 +217,12 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
   create_group(file, kResumeMultipliers);
   for (const auto& [name, rows] : resume.rows) {
     const std::string node_path = member_path(kResumeVectors, name);
-    const std::vector<double> block = nodes.to_block(rows, 12);
-    write_block_dataset<double>(file, {node_path.c_str(), n_nodes, 12}, nodes.block(),
+    const std::vector<double> block = nodes.to_block(rows, kNodeRow);
+    write_block_dataset<double>(file, {node_path.c_str(), n_nodes, kNodeRow}, nodes.block(),
                                 block);
     const std::string multiplier_path = member_path(kResumeMultipliers, name);
-    const std::vector<double> lambda = constraints.to_block(resume.multipliers.at(name), 3);
-    write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, 3},
+    const std::vector<double> lambda = constraints.to_block(resume.multipliers.at(name), kMultiplierRow);
+    write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, kMultiplierRow},
                                 constraints.block(), lambda);
   }
   run_collective_phase(comm, [&] {
@@ -247,10 +253,10 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
                                         "checkpoint constraints");
     for (auto [name, values] :
          {std::pair{kPositions, &share.q}, {kVelocities, &share.v}, {kAccelerations, &share.a}}) {
-      const std::vector<double> block = nodes.to_block(*values, 12);
-      write_block_dataset<double>(file, {name, n_nodes, 12}, nodes.block(), block);
+      const std::vector<double> block = nodes.to_block(*values, kNodeRow);
+      write_block_dataset<double>(file, {name, n_nodes, kNodeRow}, nodes.block(), block);
     }
-    const std::vector<double> lambda = constraints.to_block(share.lambda, 3);
+    const std::vector<double> lambda = constraints.to_block(share.lambda, kMultiplierRow);
     write_block_dataset<double>(file, {kMultipliers, n_constraints, 3, "N"}, constraints.block(),
                                 lambda);
     write_resume_rows(comm, file, model, nodes, constraints, share.resume);

@@ -9,23 +9,28 @@
 namespace catena::model::detail {
 namespace {
 
-// Support components in the nodal layout order [r, r_x, r_y, r_z]: bit k of
-// Support::fixed_mask fixes the k-th.
+// Support components by name: bit k of Support::fixed_mask fixes component k of the node's
+// kind (model/unknown_kinds.hpp). Accepted: the component names of every node kind.
 const std::vector<std::string>& component_names() {
-  static const std::vector<std::string> names{"x",    "y",    "z",    "rx_x", "rx_y", "rx_z",
-                                              "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const UnknownKind kind : all_unknown_kinds()) {
+      const UnknownKindInfo& info = kind_info(kind);
+      if (!info.nodal) continue;
+      for (int k = 0; k < info.size; ++k)
+        if (std::find(all.begin(), all.end(), info.components[k]) == all.end())
+          all.emplace_back(info.components[k]);
+    }
+    return all;
+  }();
   return names;
 }
 
-std::string node_kind_note(int dofs) {
-  switch (dofs) {
-    case 3:
-      return "3 DOFs (x, y, z): only bars, springs or point masses attach there";
-    case 6:
-      return "6 DOFs (x, y, z, rx_*): a cable node";
-    default:
-      return "12 DOFs: a beam node";
-  }
+std::string node_kind_note(const UnknownKindInfo& info) {
+  std::string list;
+  for (int k = 0; k < info.size; ++k)
+    list += (k ? ", " : "") + std::string(info.components[k]);
+  return std::string(info.name) + " (" + list + "): " + std::string(info.used_by);
 }
 
 std::string accepted_fix() {
@@ -36,45 +41,46 @@ std::string accepted_fix() {
          list + "]";
 }
 
-unsigned low_bits(int n) { return (1u << static_cast<unsigned>(n)) - 1u; }
+unsigned bit(int k) { return 1u << static_cast<unsigned>(k); }
 
-unsigned read_component_list(const Field& fix, int dofs, std::int64_t node_id) {
+unsigned read_component_list(const Field& fix, const UnknownKindInfo& node, std::int64_t node_id) {
   const std::vector<Field> items = fix.items();
   if (items.empty()) fix.fail("empty component list; expected " + accepted_fix());
   const std::vector<std::string>& names = component_names();
   unsigned mask = 0;
   for (const Field& item : items) {
     const std::string name = item.text();
-    const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end())
+    if (std::find(names.begin(), names.end(), name) == names.end())
       item.fail("unknown component '" + name + "';" + did_you_mean(name, names) + " expected " +
                 accepted_fix());
-    const int bit = static_cast<int>(it - names.begin());
-    if (bit >= dofs)
+    const auto it = std::find(node.components.begin(), node.components.begin() + node.size, name);
+    if (it == node.components.begin() + node.size)
       item.fail("component '" + name + "' does not exist at node " + std::to_string(node_id) +
-                ", which has " + node_kind_note(dofs));
-    if (mask & (1u << static_cast<unsigned>(bit)))
-      item.fail("component '" + name + "' is listed twice");
-    mask |= 1u << static_cast<unsigned>(bit);
+                ", which is " + node_kind_note(node));
+    const int k = static_cast<int>(it - node.components.begin());
+    if (mask & bit(k)) item.fail("component '" + name + "' is listed twice");
+    mask |= bit(k);
   }
   return mask;
 }
 
-unsigned read_fixed_mask(const Field& fix, int dofs, std::int64_t node_id) {
+unsigned read_fixed_mask(const Field& fix, UnknownKind kind, std::int64_t node_id) {
+  const UnknownKindInfo& node = kind_info(kind);
   if (!fix.present()) fix.fail("missing required key; expected " + accepted_fix());
-  if (fix.is_list()) return read_component_list(fix, dofs, node_id);
+  if (fix.is_list()) return read_component_list(fix, node, node_id);
   if (!fix.is_scalar()) fix.fail("expected " + accepted_fix() + ", got " + fix.value_text());
-  static const std::vector<std::string> kinds{"pinned", "clamped"};
-  const std::string kind = fix.text();
-  if (kind == "pinned") return low_bits(3);
-  if (kind == "clamped") return low_bits(dofs);
-  fix.fail("unknown fix '" + kind + "';" + did_you_mean(kind, kinds) + " expected " +
+  static const std::vector<std::string> fixes{"pinned", "clamped"};
+  const std::string text = fix.text();
+  if (text == "pinned") return (bit(3) - 1u) << static_cast<unsigned>(node.position);
+  if (text == "clamped") return bit(node.size) - 1u;
+  fix.fail("unknown fix '" + text + "';" + did_you_mean(text, fixes) + " expected " +
            accepted_fix());
 }
 
 }  // namespace
 
-void read_supports(const Field& supports, const std::vector<int>& node_dofs, SceneBuild& build) {
+void read_supports(const Field& supports, const std::vector<UnknownKind>& node_kinds,
+                   SceneBuild& build) {
   static const std::vector<std::string> keys{"node", "fix"};
   std::map<int, Field> first_support_of_node;
   for (const Field& entry : supports.items()) {
@@ -90,7 +96,7 @@ void read_supports(const Field& supports, const std::vector<int>& node_dofs, Sce
                       std::to_string(first->second.location().line) +
                       "); list all its fixed components in one support");
     build.model.supports.push_back(
-        Support{node, read_fixed_mask(entry.child("fix"), node_dofs[node], id)});
+        Support{node, read_fixed_mask(entry.child("fix"), node_kinds[node], id)});
   }
 }
 

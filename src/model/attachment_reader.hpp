@@ -3,14 +3,16 @@
 // (springs and dashpots to ground), `loads` (nodal forces) and `masses` (point masses).
 #include <vector>
 
+#include "catena/model/unknown_kinds.hpp"
 #include "scene_build.hpp"
 #include "yaml_fields.hpp"
 
 namespace catena::model::detail {
 
-// Not collective. Reads `supports`; `node_dofs` (per node, see node_dofs.hpp) decides
+// Not collective. Reads `supports`; `node_kinds` (per node, model/node_kinds.hpp) decides
 // which components exist at each node. At most one support per node.
-void read_supports(const Field& supports, const std::vector<int>& node_dofs, SceneBuild& build);
+void read_supports(const Field& supports, const std::vector<UnknownKind>& node_kinds,
+                   SceneBuild& build);
 
 // Not collective. Read `elastic_supports`, `loads` and `masses` (several per node add up).
 void read_elastic_supports(const Field& elastic_supports, SceneBuild& build);

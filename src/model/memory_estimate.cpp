@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 
 namespace catena::model {
 namespace {
@@ -53,9 +53,10 @@ ProblemSize problem_size(const Model& model) {
       for (std::size_t j = 0; j < e.nodes.size(); ++j)
         if (i != j) size.matrix_nonzeros += static_cast<std::int64_t>(dofs[e.nodes[i]]) * dofs[e.nodes[j]];
   // Multipliers: three rows and columns per constraint, each against a node block.
-  const std::int64_t multipliers = 3 * static_cast<std::int64_t>(model.constraints.size());
+  const std::int64_t multipliers =
+      kMultipliersPerConstraint * static_cast<std::int64_t>(model.constraints.size());
   size.dofs += multipliers;
-  size.matrix_nonzeros += 2 * multipliers * 12;
+  size.matrix_nonzeros += 2 * multipliers * kMaxBlockUnknowns;
   // A pantograph head is coupled to every node of its path (moving_contacts.hpp).
   for (const MovingContact& c : model.contacts)
     size.matrix_nonzeros +=

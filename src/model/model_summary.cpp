@@ -6,7 +6,7 @@
 #include <map>
 #include <vector>
 
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
 
@@ -77,16 +77,16 @@ struct SetSummary {
 };
 
 struct DofCounts {
-  long long nodes_with[13] = {};  // indexed by DOFs per node (3, 6, 12)
+  std::map<UnknownKind, long long> nodes_of_kind;
   long long total = 0;
   long long fixed = 0;
 };
 
 DofCounts count_dofs(const Model& model) {
   DofCounts c;
-  for (const int d : all_node_dofs(model)) {
-    ++c.nodes_with[d];
-    c.total += d;
+  for (const UnknownKind kind : node_kinds(model)) {
+    ++c.nodes_of_kind[kind];
+    c.total += kind_info(kind).size;
   }
   for (const Support& s : model.supports) c.fixed += std::popcount(s.fixed_mask);
   return c;
@@ -118,11 +118,11 @@ std::string describe(const Model& model, int n_ranks_running) {
 
   const DofCounts dofs = count_dofs(model);
   std::string dof_split;
-  for (const int d : {12, 6, 3}) {
-    if (dofs.nodes_with[d] == 0) continue;
-    const char* kind = d == 12 ? "beam" : d == 6 ? "cable" : "other";
-    dof_split += (dof_split.empty() ? "" : " + ") + std::to_string(dofs.nodes_with[d]) + " " +
-                 kind + " nodes x " + std::to_string(d);
+  // Widest kinds first.
+  for (auto it = dofs.nodes_of_kind.rbegin(); it != dofs.nodes_of_kind.rend(); ++it) {
+    const UnknownKindInfo& kind = kind_info(it->first);
+    dof_split += (dof_split.empty() ? "" : " + ") + std::to_string(it->second) + " " +
+                 std::string(kind.label) + " nodes x " + std::to_string(kind.size);
   }
 
   Vec3 total_load = Vec3::Zero();

@@ -14,7 +14,7 @@
 #include "analysis_reader.hpp"
 #include "attachment_reader.hpp"
 #include "catena/core/error.hpp"
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 #include "catenary_reader.hpp"
 #include "constraint_reader.hpp"
 #include "element_reader.hpp"
@@ -93,7 +93,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
 
   detail::check_element_lengths(build);
   detail::assign_nodal_frames(build);
-  detail::read_supports(scene.child("supports"), all_node_dofs(model), build);
+  detail::read_supports(scene.child("supports"), node_kinds(model), build);
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
   detail::read_constraints(scene.child("constraints"), build);
   detail::read_loads(scene.child("loads"), build);

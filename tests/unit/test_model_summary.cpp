@@ -1,4 +1,4 @@
-// node_dofs (shared with the assembly layer) and the `catena check` summary.
+// node_kinds (shared with the assembly layer) and the `catena check` summary.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "catena/model/model_summary.hpp"
-#include "catena/model/node_dofs.hpp"
+#include "catena/model/node_kinds.hpp"
 #include "catena/model/scene_reader.hpp"
 
 namespace {
@@ -29,23 +29,25 @@ bool contains(const std::string& text, const std::string& fragment) {
   return text.find(fragment) != std::string::npos;
 }
 
-TEST(NodeDofs, LargestLayoutOfTheAttachedElements) {
+TEST(NodeKinds, TheKindThatHoldsEveryAttachedElementsUnknowns) {
   const Model m = mini_catenary();
-  EXPECT_EQ(node_dofs(m, index_of(m, 33)), 6);   // messenger: cable only
-  EXPECT_EQ(node_dofs(m, index_of(m, 32)), 6);   // cable + dropper (bar): the cable wins
-  EXPECT_EQ(node_dofs(m, index_of(m, 31)), 12);  // beam + spring
-  EXPECT_EQ(node_dofs(m, index_of(m, 38)), 12);  // beam interior
-  const std::vector<int> all = all_node_dofs(m);
+  const std::vector<UnknownKind> kinds = node_kinds(m);
+  EXPECT_EQ(kinds[index_of(m, 33)], UnknownKind::ancf_cable);  // messenger: cable only
+  EXPECT_EQ(kinds[index_of(m, 32)], UnknownKind::ancf_cable);  // cable + dropper (bar)
+  EXPECT_EQ(kinds[index_of(m, 31)], UnknownKind::ancf_beam);   // beam + spring
+  EXPECT_EQ(kinds[index_of(m, 38)], UnknownKind::ancf_beam);   // beam interior
+  const std::vector<int> dofs = all_node_dofs(m);
   for (std::size_t i = 0; i < m.nodes.size(); ++i)
-    EXPECT_EQ(all[i], node_dofs(m, static_cast<int>(i)));
+    EXPECT_EQ(dofs[i], kind_info(kinds[i]).size);
 }
 
-TEST(NodeDofs, NodesTouchedOnlyByBarsSpringsOrMassesHaveThree) {
+TEST(NodeKinds, NodesTouchedOnlyByBarsSpringsOrMassesArePoints) {
   Model m;
   m.nodes.resize(3);
   m.elements.push_back(ElementDesc{1, {0, 1}, BarProps{}, catena::Vec3::Zero(), ""});
-  EXPECT_EQ(node_dofs(m, 0), 3);
-  EXPECT_EQ(node_dofs(m, 2), 3);  // untouched
+  const std::vector<UnknownKind> kinds = node_kinds(m);
+  EXPECT_EQ(kinds[0], UnknownKind::point);
+  EXPECT_EQ(kinds[2], UnknownKind::point);  // untouched: every node has a position
   EXPECT_EQ(element_node_dofs(SpringProps{}), 3);
   EXPECT_EQ(element_node_dofs(CableProps{}), 6);
   EXPECT_EQ(element_node_dofs(BeamProps{}), 12);

@@ -1,14 +1,14 @@
 #pragma once
 // Global numbering of the free degrees of freedom.
 //
-// Nodal layout: [r (3), r_x (3), r_y (3), r_z (3)]; a node carries the prefix its elements
-// need (3, 6 or 12). Fixed DOFs (supports) are eliminated: they get no global index (−1).
+// Each node's unknowns are a block of its kind (model/unknown_kinds.hpp, chosen by the
+// elements attached to it: model/node_kinds.hpp), in the kind's component order. Fixed DOFs (supports) are eliminated: they get no global index (−1).
 // Free DOFs are numbered contiguously per rank: rank 0's owned nodes in ascending node
 // index, then rank 1's, ...; within a node, in layout order. The numbering is computed
 // identically on every rank from the replicated model (O(global nodes) memory per rank,
 // O(local) work per evaluation).
 //
-// Lagrange multipliers (model::Constraint, three per constraint) are unknowns too: a
+// Lagrange multipliers (model::Constraint, a `multiplier` block each) are unknowns too: a
 // constraint belongs to the rank owning its node A, and its multipliers are numbered after
 // that rank's nodal DOFs (so every rank's block stays contiguous).
 //
@@ -20,11 +20,15 @@
 
 #include "catena/assembly/partition.hpp"
 #include "catena/model/model.hpp"
+#include "catena/model/unknown_kinds.hpp"
 
 namespace catena::assembly {
 
 class DofMap {
  public:
+  // Multipliers per constraint.
+  static constexpr int kMultipliers = model::kMultipliersPerConstraint;
+
   // Not collective (deterministic on every rank). `touched`: the nodes this rank's
   // couplings act on (any order, repeats allowed; owned ones are ignored).
   DofMap(const model::Model& model, const Partition& partition, int rank,
@@ -32,6 +36,7 @@ class DofMap {
 
   int n_nodes() const { return static_cast<int>(node_offset_.size()) - 1; }
   int node_dofs(int node) const { return node_offset_[node + 1] - node_offset_[node]; }
+  model::UnknownKind node_kind(int node) const { return node_kinds_[node]; }
   // Global index of nodal DOF k, or −1 if it is fixed.
   PetscInt global_dof(int node, int k) const { return global_[node_offset_[node] + k]; }
   // Index into the ghosted local form, −1 if fixed or not present on this rank.
@@ -47,11 +52,11 @@ class DofMap {
 
   int n_constraints() const { return static_cast<int>(constraint_owner_.size()); }
   int constraint_owner(int c) const { return constraint_owner_[c]; }
-  // Global index of multiplier k (0..2) of constraint c.
-  PetscInt multiplier_dof(int c, int k) const { return multiplier_[3 * c + k]; }
+  // Global index of multiplier k (0 .. kMultipliers − 1) of constraint c.
+  PetscInt multiplier_dof(int c, int k) const { return multiplier_[kMultipliers * c + k]; }
   // Index of that multiplier in the ghosted local form (owned: the owner rank only), or −1.
   PetscInt multiplier_local(int c, int k) const {
-    return constraint_owner_[c] == rank_ ? multiplier_[3 * c + k] - first_owned_ : -1;
+    return constraint_owner_[c] == rank_ ? multiplier_[kMultipliers * c + k] - first_owned_ : -1;
   }
   // Constraint a global DOF is a multiplier of, or −1 for a nodal DOF.
   int constraint_of_global(PetscInt global) const { return global_constraint_.at(global); }
@@ -59,11 +64,12 @@ class DofMap {
   // Node holding a global DOF (for messages: "largest residual at node 17"); for a
   // multiplier, the constraint's node A.
   int node_of_global(PetscInt global) const;
-  // Nodal DOF index (0..11) of a global DOF; for a multiplier, its axis (0..2).
+  // Component of a global DOF in its block (the node's kind, or `multiplier`).
   int component_of_global(PetscInt global) const;
 
  private:
   const Partition* partition_;
+  std::vector<model::UnknownKind> node_kinds_;  // n_nodes
   std::vector<int> node_offset_;    // n_nodes + 1
   std::vector<PetscInt> global_;    // per nodal DOF
   std::vector<PetscInt> local_;     // per nodal DOF

@@ -182,7 +182,8 @@ class SecondOrderSystem {
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
-  std::vector<double> node_reference_;  // 12 per node: [X, t, d_y, d_z]
+  // kMaxBlockUnknowns per node: its reference coordinates in its kind's layout.
+  std::vector<double> node_reference_;
   // Scratch of the evaluation loop (mutable: output queries evaluate through a const system).
   mutable VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   bool has_damping_ = true;

@@ -49,12 +49,13 @@ class StateView {
   void owned_constraint_forces(Vec q, std::vector<int>& constraints,
                                std::vector<double>& forces) const;
 
-  // Not collective. x's free DOFs of the owned nodes in the full nodal layout, 12 values
-  // per node of dof_map().owned_nodes() (fixed and absent components 0), and this rank's
+  // Not collective. x's free DOFs of the owned nodes in their kinds' layouts, padded to
+  // model::kMaxBlockUnknowns values per node of dof_map().owned_nodes() (fixed and absent
+  // components 0), and this rank's
   // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
   void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
   // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
-  // from rows (12 per node, all nodes) and its owned multiplier slots from multipliers (3
+  // from rows (kMaxBlockUnknowns per node, all nodes) and its owned multiplier slots from multipliers (3
   // per constraint, all constraints).
   void set_from_node_rows(Vec x, const std::vector<double>& rows,
                           const std::vector<double>& multipliers) const;

@@ -5,8 +5,9 @@
 // number of ranks, to the Newton tolerance on another.
 //
 // File `<output>.chk` (HDF5, docs/output.md), format "catena-checkpoint-2":
-//   /q, /v, /a     n_nodes × 12: the nodal layout [r, r_x, r_y, r_z] of
-//                  assembly/dof_map.hpp, fixed and absent components 0;
+//   /q, /v, /a     n_nodes × 12 (model::kMaxBlockUnknowns): each node's unknowns in its
+//                  kind's layout (model/unknown_kinds.hpp; [r, r_x, r_y, r_z] for ANCF
+//                  nodes), fixed and absent components 0;
 //   /lambda        n_constraints × 3, the multipliers;
 //   attributes     time, last_dt, samples, steps (the output file's row counts at the
 //                  checkpoint), integrator, ranks (of the run that wrote it), n_nodes,

@@ -11,6 +11,7 @@
 
 #include "catena/core/vec3.hpp"
 #include "catena/model/catenary_layout.hpp"
+#include "catena/model/unknown_kinds.hpp"
 
 namespace catena::model {
 
@@ -36,7 +37,7 @@ struct Rayleigh {
 // ANCF gradient-deficient cable (contact wire, messenger, droppers as cables).
 struct CableProps {
   static constexpr const char* kind = "cable";
-  static constexpr int node_dofs = 6;  // [r, r_x]
+  static constexpr UnknownKind node_kind = UnknownKind::ancf_cable;  // [r, r_x]
   double EA = 0.0;               // N, axial stiffness
   double EI = 0.0;               // N·m², bending stiffness
   double mass_per_length = 0.0;  // kg/m, per unit unstretched length
@@ -55,7 +56,7 @@ struct CableProps {
 // ANCF beam with torsion (see elements/ancf_beam.hpp for the formulation).
 struct BeamProps {
   static constexpr const char* kind = "beam";
-  static constexpr int node_dofs = 12;  // [r, r_x, r_y, r_z]
+  static constexpr UnknownKind node_kind = UnknownKind::ancf_beam;  // [r, r_x, r_y, r_z]
   double EA = 0.0;                // N
   double GA_y = 0.0, GA_z = 0.0;  // N, shear stiffnesses
   double GJ = 0.0;                // N·m², torsional stiffness
@@ -70,7 +71,7 @@ struct BeamProps {
 // Two-node bar between node positions (droppers); optionally tension-only.
 struct BarProps {
   static constexpr const char* kind = "bar";
-  static constexpr int node_dofs = 3;  // [r]
+  static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
   double EA = 0.0;               // N
   double mass_per_length = 0.0;  // kg/m, lumped half to each node
   double damping = 0.0;          // N·s/m, along the bar (c·d(length)/dt)
@@ -82,13 +83,13 @@ struct BarProps {
 // force is k·(x_B − x_A − (X_B − X_A)) per component, so it carries no preload).
 struct SpringProps {
   static constexpr const char* kind = "spring";
-  static constexpr int node_dofs = 3;  // [r]
+  static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
   Vec3 stiffness = Vec3::Zero();  // N/m per global axis
   Vec3 damping = Vec3::Zero();    // N·s/m per global axis
 };
 
-// Every kind of element: its properties, its name in output files (`kind`) and the nodal
-// DOFs it uses at each node (`node_dofs`, a prefix of [r, r_x, r_y, r_z]).
+// Every kind of element: its properties, its name in output files (`kind`) and the
+// kind of unknowns it asks for at each of its nodes (`node_kind`, model/unknown_kinds.hpp).
 using ElementProps = std::variant<CableProps, BeamProps, BarProps, SpringProps>;
 
 struct ElementDesc {

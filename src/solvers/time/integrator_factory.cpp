@@ -1,15 +1,35 @@
 #include "catena/solvers/time/integrator_factory.hpp"
 
+#include <vector>
+
 #include "catena/core/error.hpp"
 #include "catena/model/integrator_catalogue.hpp"
+#include "catena/model/unknown_kinds.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "catena/solvers/time/petsc_ts/petsc_ts_integrator.hpp"
 
 namespace catena::solvers {
+namespace {
+
+// Every integrator here moves the unknowns additively (q ← q + Δ on whole vectors), which
+// is right for every kind whose update rule is `additive` (model/unknown_kinds.hpp). This
+// switch has no default: a new rule does not compile until it is handled here — by the
+// integrators implementing it, or by refusing the model with the kind's name.
+void check_update_rules(const assembly::DofMap& dofs) {
+  std::vector<model::UnknownKind> present{model::UnknownKind::multiplier};
+  for (int n = 0; n < dofs.n_nodes(); ++n) present.push_back(dofs.node_kind(n));
+  for (const model::UnknownKind kind : present) switch (model::kind_info(kind).update) {
+      case model::UpdateRule::additive:
+        break;
+    }
+}
+
+}  // namespace
 
 std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& system,
                                                 const model::IntegratorOptions& o) {
+  check_update_rules(system.dof_map());
   // What the scene reader refuses with the scene's line; here for models built otherwise.
   if (const std::optional<model::IntegratorRefusal> refusal =
           model::refuse_integrator(o, system.model().constraints.size()))
