@@ -1,8 +1,10 @@
 #pragma once
 // The kinds of element as output files name them: the code of a kind is its index in
 // ElementProps, and the names, comma-separated in that order, come from each properties
-// struct's `kind` (model.hpp). A file carries both, so it stays readable if kinds are added.
+// struct's `kind` (element_props.hpp). A file carries both, so it stays readable if kinds
+// are added.
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "catena/model/model.hpp"
@@ -11,6 +13,11 @@ namespace catena::model {
 
 // Not collective.
 inline int element_kind_code(const ElementProps& props) { return static_cast<int>(props.index()); }
+
+// Not collective. The kind's name: "cable", "beam", "bar" or "spring".
+inline std::string_view element_kind_name(const ElementProps& props) {
+  return std::visit([](const auto& p) -> std::string_view { return p.kind; }, props);
+}
 
 // Not collective. "cable,beam,bar,spring".
 inline std::string element_kind_names() {
