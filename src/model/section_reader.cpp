@@ -69,8 +69,8 @@ ElementProps read_props(const Field& section) {
 
 // A section `type`: the kind of element it makes, everything from its properties struct.
 struct SectionType {
-  std::string_view name;                    // Props::kind
-  std::vector<std::string> keys;            // "type", then Props::read_keys's keys in order
+  std::string_view name;          // Props::kind
+  std::vector<std::string> keys;  // "type", then Props::read_keys's keys in order
   ElementProps (*read)(const Field& section);
 };
 
@@ -111,9 +111,8 @@ void reject_keys_of_other_types(const Field& section, const SectionType& type) {
       if (std::find(other.keys.begin(), other.keys.end(), key) == other.keys.end()) continue;
       std::string accepted;
       for (const std::string& k : own) accepted += (accepted.empty() ? "" : ", ") + k;
-      value.fail("key '" + key + "' belongs to " + std::string(other.name) +
-                 " sections, not to " + std::string(type.name) +
-                 " sections; accepted keys: " + accepted);
+      value.fail("key '" + key + "' belongs to " + std::string(other.name) + " sections, not to " +
+                 std::string(type.name) + " sections; accepted keys: " + accepted);
     }
   }
   section.check_keys(own);  // anything else is a typo: suggest the closest key
