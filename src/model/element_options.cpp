@@ -2,7 +2,9 @@
 
 #include <array>
 #include <cmath>
+#include <variant>
 
+#include "catena/model/element_kinds.hpp"
 #include "physical_bounds.hpp"
 
 namespace catena::model::detail {
@@ -47,12 +49,12 @@ PrestressSpec read_prestress(const Field& entry, const Section& section) {
   for (const PrestressKey& key : prestress_keys) {
     const Field field = entry.child(key.name);
     if (!field.present()) continue;
-    if (section.kind != SectionKind::cable) {
-      const std::string hint = section.kind == SectionKind::bar
+    if (!std::holds_alternative<CableProps>(section.props)) {
+      const std::string hint = std::holds_alternative<BarProps>(section.props)
                                    ? " (a bar's unstretched_length belongs in its section)"
                                    : "";
       field.fail("'" + std::string(key.name) + "' applies only to cable sections; section '" +
-                 section.name + "' is a " + std::string(section_kind_name(section.kind)) + hint);
+                 section.name + "' is a " + std::string(element_kind_name(section.props)) + hint);
     }
     if (spec.given)
       entry.fail("both '" + given_key + "' and '" + key.name +
@@ -114,9 +116,10 @@ double resolve_prestrain(const PrestressSpec& spec, double EA, double length) {
 Vec3 read_distributed_load(const Field& entry, const Section& section) {
   const Field load = entry.child("distributed_load");
   if (!load.present()) return Vec3::Zero();
-  if (section.kind != SectionKind::cable && section.kind != SectionKind::beam)
+  if (!std::holds_alternative<CableProps>(section.props) &&
+      !std::holds_alternative<BeamProps>(section.props))
     load.fail("distributed_load applies only to cable and beam sections; section '" + section.name +
-              "' is a " + std::string(section_kind_name(section.kind)) + " (use nodal loads)");
+              "' is a " + std::string(element_kind_name(section.props)) + " (use nodal loads)");
   return load.vec3(RealRange::any("N/m"));
 }
 

@@ -2,6 +2,7 @@
 
 #include <variant>
 
+#include "catena/model/element_kinds.hpp"
 #include "did_you_mean.hpp"
 
 namespace catena::model::detail {
@@ -11,11 +12,6 @@ std::string joined(const std::vector<std::string>& names) {
   std::string text;
   for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
   return text.empty() ? "(none)" : text;
-}
-
-const char* kind_name(const ElementProps& props) {
-  static constexpr const char* names[] = {"cable", "beam", "bar", "spring"};
-  return names[props.index()];
 }
 
 // One line of a path: its name, where it was named, and its elements.
@@ -36,7 +32,7 @@ PathLine resolve_line(const Field& reference, const LineTable& lines, const Mode
   // Every element of a line has the line's section, so the first one tells the kind.
   const ElementProps& props = model.elements[it->second.front()].props;
   if (!std::holds_alternative<CableProps>(props) && !std::holds_alternative<BeamProps>(props))
-    reference.fail("line '" + name + "' is made of " + kind_name(props) +
+    reference.fail("line '" + name + "' is made of " + std::string(element_kind_name(props)) +
                    " elements; " + std::string(what) +
                    " run on cable or beam lines (their shape functions place the point "
                    "between the nodes)");

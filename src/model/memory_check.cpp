@@ -3,6 +3,8 @@
 #include <map>
 #include <optional>
 
+#include "catena/model/node_kinds.hpp"
+
 namespace catena::model::detail {
 namespace {
 
@@ -12,17 +14,6 @@ std::string advice(const MemoryBudget& budget) {
                                    : "") +
          ": fewer elements, or more hosts; --memory-limit GIB overrides the limit "
          "(docs/scene.md, \"Memory\")";
-}
-
-int node_dofs_of(SectionKind kind) {
-  switch (kind) {
-    case SectionKind::beam:
-      return 12;
-    case SectionKind::cable:
-      return 6;
-    default:
-      return 3;
-  }
 }
 
 }  // namespace
@@ -44,7 +35,7 @@ void check_lines_fit(const Field& lines, const SectionTable& sections, const Sce
     const std::optional<std::int64_t> n = parse_integer(count.node().Scalar());
     const auto found = sections.find(section.node().Scalar());
     if (!n || *n < 1 || *n > 10'000'000 || found == sections.end()) continue;
-    const std::int64_t d = node_dofs_of(found->second.kind);
+    const std::int64_t d = element_node_dofs(found->second.props);
     size.nodes += *n - 1;
     size.elements += *n;
     size.dofs += *n * d;

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "catena/model/element_kinds.hpp"
 #include "catena/model/node_kinds.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
@@ -28,17 +29,17 @@ using detail::plural;
 
 // Counts per element kind in variant order, e.g. "cable 300, bar 12".
 std::string kind_counts(const std::vector<long long>& counts) {
-  static constexpr const char* names[] = {"cable", "beam", "bar", "spring"};
   std::string text;
   for (std::size_t k = 0; k < counts.size(); ++k)
     if (counts[k] > 0)
-      text += (text.empty() ? "" : ", ") + std::string(names[k]) + " " + std::to_string(counts[k]);
+      text += (text.empty() ? "" : ", ") + std::string(element_kind_name_at(static_cast<int>(k))) +
+              " " + std::to_string(counts[k]);
   return text.empty() ? "none" : text;
 }
 
 // What one set (a line name or an explicit elements' `set`) holds.
 struct SetSummary {
-  std::vector<long long> count_per_kind = std::vector<long long>(4, 0);
+  std::vector<long long> count_per_kind = std::vector<long long>(element_kind_count, 0);
   long long n_cables = 0;
   double min_prestrain = 0.0, max_prestrain = 0.0;
   double min_tension = 0.0, max_tension = 0.0;  // EA·prestrain, N (EA may differ)
@@ -107,7 +108,7 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.heading("Scene" + (model.name.empty() ? std::string() : " '" + model.name + "'") +
             (model.source_file.empty() ? std::string() : " from " + model.source_file));
 
-  std::vector<long long> per_kind(4, 0);
+  std::vector<long long> per_kind(element_kind_count, 0);
   std::vector<std::string> set_order;
   std::map<std::string, SetSummary> sets;
   for (const ElementDesc& element : model.elements) {

@@ -1,8 +1,9 @@
 #include "section_reader.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
+#include <string_view>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "did_you_mean.hpp"
@@ -11,101 +12,110 @@
 namespace catena::model::detail {
 namespace {
 
-struct KindKeys {
-  SectionKind kind;
-  std::vector<std::string> keys;
+// Reads each key a properties struct declares (catena/model/scene_keys.hpp) from its
+// section, validated, into the member the declaration names.
+class SectionKeys {
+ public:
+  explicit SectionKeys(const Field& section) : section_(section) {}
+
+  void real(std::string_view key, double& value, Range range, std::string_view unit) const {
+    value = section_.child(key).real(real_range(range, unit));
+  }
+  void real_or(std::string_view key, double& value, double fallback, Range range,
+               std::string_view unit) const {
+    value = section_.child(key).real_or(fallback, real_range(range, unit));
+  }
+  void boolean_or(std::string_view key, bool& value, bool fallback) const {
+    value = section_.child(key).boolean_or(fallback);
+  }
+  void rayleigh(std::string_view key, Rayleigh& value) const {
+    value = read_rayleigh(section_.child(key));
+  }
+  void direction_or(std::string_view key, Vec3& value, const Vec3& fallback) const {
+    const Field field = section_.child(key);
+    const Vec3 direction = field.vec3_or(fallback, RealRange::any(""));
+    if (!(direction.norm() > 0.0))
+      field.fail(std::string(key) + " is the zero vector; expected a direction");
+    value = direction.normalized();
+  }
+  void spring_stiffness(std::string_view key, Vec3& value) const {
+    value = read_spring_stiffness(section_.child(key));
+  }
+  void spring_damping(std::string_view key, Vec3& value) const {
+    value = read_spring_damping(section_.child(key));
+  }
+
+ private:
+  static RealRange real_range(Range range, std::string_view unit) {
+    switch (range) {
+      case Range::positive:
+        return RealRange::positive(std::string(unit));
+      case Range::non_negative:
+        return RealRange::non_negative(std::string(unit));
+    }
+    return RealRange::positive(std::string(unit));  // not reached: every Range is above
+  }
+
+  const Field& section_;
 };
 
-// The accepted keys of each section type, in the order docs/scene.md lists them.
-const std::array<KindKeys, 4>& keys_by_kind() {
-  static const std::array<KindKeys, 4> table{{
-      {SectionKind::cable, {"type", "EA", "EI", "mass_per_length", "damping_time", "rayleigh"}},
-      {SectionKind::beam,
-       {"type", "EA", "GA_y", "GA_z", "GJ", "EI_y", "EI_z", "mass_per_length", "rho_Iy", "rho_Iz",
-        "damping_time", "rayleigh", "y_axis"}},
-      {SectionKind::bar,
-       {"type", "EA", "mass_per_length", "damping", "tension_only", "unstretched_length"}},
-      {SectionKind::spring, {"type", "stiffness", "damping"}},
-  }};
-  return table;
+template <class Props>
+ElementProps read_props(const Field& section) {
+  Props props;
+  SectionKeys keys(section);
+  props.read_keys(keys);
+  return props;
 }
 
-const std::vector<std::string>& keys_of(SectionKind kind) {
-  return keys_by_kind()[static_cast<std::size_t>(kind)].keys;
+// A section `type`: the kind of element it makes, everything from its properties struct.
+struct SectionType {
+  std::string_view name;          // Props::kind
+  std::vector<std::string> keys;  // "type", then Props::read_keys's keys in order
+  ElementProps (*read)(const Field& section);
+};
+
+template <class Props>
+SectionType section_type() {
+  std::vector<std::string> keys{"type"};
+  for (std::string& key : declared_keys<Props>()) keys.push_back(std::move(key));
+  return {Props::kind, std::move(keys), &read_props<Props>};
 }
 
-SectionKind read_kind(const Field& type) {
-  static const std::vector<std::string> names{"cable", "beam", "bar", "spring"};
+// Every section type, in ElementProps order (also docs/scene.md's).
+const std::vector<SectionType>& section_types() {
+  static const std::vector<SectionType> types = []<class... Props>(std::variant<Props...>*) {
+    return std::vector<SectionType>{section_type<Props>()...};
+  }(static_cast<ElementProps*>(nullptr));
+  return types;
+}
+
+const SectionType& read_type(const Field& type) {
   const std::string name = type.text();
-  for (const KindKeys& k : keys_by_kind())
-    if (section_kind_name(k.kind) == name) return k.kind;
+  std::vector<std::string> names;
+  std::string accepted;
+  for (const SectionType& t : section_types()) {
+    if (t.name == name) return t;
+    names.emplace_back(t.name);
+    accepted += (accepted.empty() ? "" : ", ") + std::string(t.name);
+  }
   type.fail("unknown section type '" + name + "';" + did_you_mean(name, names) +
-            " accepted: cable, beam, bar, spring");
+            " accepted: " + accepted);
 }
 
 // A key of another section type gets a clearer message than "unknown key".
-void reject_keys_of_other_kinds(const Field& section, SectionKind kind) {
-  const std::vector<std::string>& own = keys_of(kind);
+void reject_keys_of_other_types(const Field& section, const SectionType& type) {
+  const std::vector<std::string>& own = type.keys;
   for (const auto& [key, value] : section.entries()) {
     if (std::find(own.begin(), own.end(), key) != own.end()) continue;
-    for (const KindKeys& other : keys_by_kind()) {
+    for (const SectionType& other : section_types()) {
       if (std::find(other.keys.begin(), other.keys.end(), key) == other.keys.end()) continue;
       std::string accepted;
       for (const std::string& k : own) accepted += (accepted.empty() ? "" : ", ") + k;
-      value.fail("key '" + key + "' belongs to " + std::string(section_kind_name(other.kind)) +
-                 " sections, not to " + std::string(section_kind_name(kind)) +
-                 " sections; accepted keys: " + accepted);
+      value.fail("key '" + key + "' belongs to " + std::string(other.name) + " sections, not to " +
+                 std::string(type.name) + " sections; accepted keys: " + accepted);
     }
   }
   section.check_keys(own);  // anything else is a typo: suggest the closest key
-}
-
-CableProps read_cable(const Field& s) {
-  CableProps p;
-  p.EA = s.child("EA").real(RealRange::positive("N"));
-  p.EI = s.child("EI").real(RealRange::positive("N*m^2"));
-  p.mass_per_length = s.child("mass_per_length").real(RealRange::positive("kg/m"));
-  p.damping_time = s.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
-  p.rayleigh = read_rayleigh(s.child("rayleigh"));
-  return p;
-}
-
-BeamProps read_beam(const Field& s) {
-  BeamProps p;
-  p.EA = s.child("EA").real(RealRange::positive("N"));
-  p.GA_y = s.child("GA_y").real(RealRange::positive("N"));
-  p.GA_z = s.child("GA_z").real(RealRange::positive("N"));
-  p.GJ = s.child("GJ").real(RealRange::positive("N*m^2"));
-  p.EI_y = s.child("EI_y").real(RealRange::positive("N*m^2"));
-  p.EI_z = s.child("EI_z").real(RealRange::positive("N*m^2"));
-  p.mass_per_length = s.child("mass_per_length").real(RealRange::positive("kg/m"));
-  p.rho_Iy = s.child("rho_Iy").real_or(0.0, RealRange::non_negative("kg*m"));
-  p.rho_Iz = s.child("rho_Iz").real_or(0.0, RealRange::non_negative("kg*m"));
-  p.damping_time = s.child("damping_time").real_or(0.0, RealRange::non_negative("s"));
-  p.rayleigh = read_rayleigh(s.child("rayleigh"));
-  const Field y_axis = s.child("y_axis");
-  const Vec3 y = y_axis.vec3_or(Vec3::UnitZ(), RealRange::any(""));
-  // Only the direction matters; it is checked against each element's axis later.
-  if (!(y.norm() > 0.0)) y_axis.fail("y_axis is the zero vector; expected a direction");
-  p.y_axis = y.normalized();
-  return p;
-}
-
-BarProps read_bar(const Field& s) {
-  BarProps p;
-  p.EA = s.child("EA").real(RealRange::positive("N"));
-  p.mass_per_length = s.child("mass_per_length").real_or(0.0, RealRange::non_negative("kg/m"));
-  p.damping = s.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
-  p.unstretched_length = s.child("unstretched_length").real_or(0.0, RealRange::non_negative("m"));
-  p.tension_only = s.child("tension_only").boolean_or(false);
-  return p;
-}
-
-SpringProps read_spring(const Field& s) {
-  SpringProps p;
-  p.stiffness = read_spring_stiffness(s.child("stiffness"));
-  p.damping = read_spring_damping(s.child("damping"));
-  return p;
 }
 
 }  // namespace
@@ -122,42 +132,13 @@ Vec3 read_spring_damping(const Field& damping) {
                            : Vec3::Zero();
 }
 
-std::string_view section_kind_name(SectionKind kind) {
-  switch (kind) {
-    case SectionKind::cable:
-      return "cable";
-    case SectionKind::beam:
-      return "beam";
-    case SectionKind::bar:
-      return "bar";
-    case SectionKind::spring:
-      return "spring";
-  }
-  return "?";
-}
-
 SectionTable read_sections(const Field& sections) {
   SectionTable table;
   for (const auto& [name, s] : sections.entries()) {
     s.expect_map("a section");
-    const SectionKind kind = read_kind(s.child("type"));
-    reject_keys_of_other_kinds(s, kind);
-    Section section{name, kind, CableProps{}};
-    switch (kind) {
-      case SectionKind::cable:
-        section.props = read_cable(s);
-        break;
-      case SectionKind::beam:
-        section.props = read_beam(s);
-        break;
-      case SectionKind::bar:
-        section.props = read_bar(s);
-        break;
-      case SectionKind::spring:
-        section.props = read_spring(s);
-        break;
-    }
-    table.emplace(name, std::move(section));
+    const SectionType& type = read_type(s.child("type"));
+    reject_keys_of_other_types(s, type);
+    table.emplace(name, Section{name, type.read(s)});
   }
   return table;
 }

@@ -1,24 +1,19 @@
 #pragma once
-// The scene's `sections`: named property sets (cable, beam, bar, spring) that lines and
-// elements refer to by name. Keys, units and ranges: docs/scene.md "sections".
+// The scene's `sections`: named property sets (one per kind of element: cable, beam, bar,
+// spring) that lines and elements refer to by name. Keys, units and ranges: docs/scene.md
+// "sections"; each kind declares them with its properties (catena/model/element_props.hpp).
 #include <map>
 #include <string>
-#include <string_view>
 
 #include "catena/model/model.hpp"
 #include "yaml_fields.hpp"
 
 namespace catena::model::detail {
 
-enum class SectionKind { cable, beam, bar, spring };
-
-// Not collective. "cable", "beam", "bar" or "spring".
-std::string_view section_kind_name(SectionKind kind);
-
 struct Section {
   std::string name;
-  SectionKind kind = SectionKind::cable;
-  ElementProps props;  // copied into every element of this section
+  ElementProps props;  // its kind (std::holds_alternative, element_kind_name) and values,
+                       // copied into every element of this section
 };
 
 using SectionTable = std::map<std::string, Section, std::less<>>;

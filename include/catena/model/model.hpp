@@ -6,12 +6,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "catena/core/vec3.hpp"
 #include "catena/model/catenary_layout.hpp"
-#include "catena/model/unknown_kinds.hpp"
+#include "catena/model/element_props.hpp"  // ElementProps, Rayleigh
 
 namespace catena::model {
 
@@ -26,71 +25,6 @@ struct Node {
   Vec3 section_y = Vec3::Zero();
   Vec3 section_z = Vec3::Zero();
 };
-
-// Rayleigh damping D = α M + β K_ref (elements/rayleigh_damped.hpp); zero: none.
-struct Rayleigh {
-  double mass = 0.0;       // α, 1/s
-  double stiffness = 0.0;  // β, s
-  bool active() const { return mass > 0.0 || stiffness > 0.0; }
-};
-
-// ANCF gradient-deficient cable (contact wire, messenger, droppers as cables).
-struct CableProps {
-  static constexpr const char* kind = "cable";
-  static constexpr UnknownKind node_kind = UnknownKind::ancf_cable;  // [r, r_x]
-  double EA = 0.0;               // N, axial stiffness
-  double EI = 0.0;               // N·m², bending stiffness
-  double mass_per_length = 0.0;  // kg/m, per unit unstretched length
-  double damping_time = 0.0;     // s, Kelvin–Voigt axial: N = EA (ε + τ ε̇)
-  // Prestrain ε_p: the element's unstretched length is L_mesh / (1 + ε_p). Set from the
-  // scene's `tension` (ε_p = T/EA), `prestrain` or `unstretched_length`.
-  double prestrain = 0.0;
-  Rayleigh rayleigh;             // proportional damping α M + β K_ref
-  // Droppers as cables (catenary builder): no compression beyond a slack residue
-  // (elements::AncfCable::kSlackStiffness), and the prestrain, a length found by shape
-  // finding rather than a tension, put on with the loads along the static load path.
-  bool tension_only = false;
-  bool prestrain_with_loads = false;
-};
-
-// ANCF beam with torsion (see elements/ancf_beam.hpp for the formulation).
-struct BeamProps {
-  static constexpr const char* kind = "beam";
-  static constexpr UnknownKind node_kind = UnknownKind::ancf_beam;  // [r, r_x, r_y, r_z]
-  double EA = 0.0;                // N
-  double GA_y = 0.0, GA_z = 0.0;  // N, shear stiffnesses
-  double GJ = 0.0;                // N·m², torsional stiffness
-  double EI_y = 0.0, EI_z = 0.0;  // N·m², bending about the section's y and z axes
-  double mass_per_length = 0.0;   // kg/m
-  double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, section rotary inertia per length
-  double damping_time = 0.0;      // s, Kelvin–Voigt on all strains
-  Vec3 y_axis = Vec3::UnitZ();    // reference direction of the section's y axis
-  Rayleigh rayleigh;              // proportional damping α M + β K_ref (last: aggregates)
-};
-
-// Two-node bar between node positions (droppers); optionally tension-only.
-struct BarProps {
-  static constexpr const char* kind = "bar";
-  static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
-  double EA = 0.0;               // N
-  double mass_per_length = 0.0;  // kg/m, lumped half to each node
-  double damping = 0.0;          // N·s/m, along the bar (c·d(length)/dt)
-  double unstretched_length = 0.0;  // m; 0 = the mesh length
-  bool tension_only = false;     // slack (zero force) when shorter than unstretched
-};
-
-// Two-node linear spring–damper between node positions (zero rest length offset: the
-// force is k·(x_B − x_A − (X_B − X_A)) per component, so it carries no preload).
-struct SpringProps {
-  static constexpr const char* kind = "spring";
-  static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
-  Vec3 stiffness = Vec3::Zero();  // N/m per global axis
-  Vec3 damping = Vec3::Zero();    // N·s/m per global axis
-};
-
-// Every kind of element: its properties, its name in output files (`kind`) and the
-// kind of unknowns it asks for at each of its nodes (`node_kind`, model/unknown_kinds.hpp).
-using ElementProps = std::variant<CableProps, BeamProps, BarProps, SpringProps>;
 
 struct ElementDesc {
   std::int64_t id = 0;
