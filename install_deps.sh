@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything Catena needs on Debian 12, as root. Idempotent: when every package
-# is already installed it returns without touching apt.
+# is already installed it returns without touching apt. With --tests it also installs what
+# only the test suite uses (clang-format, for the sources' format check).
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,12 @@ packages=(
   libgtest-dev libyaml-cpp-dev libeigen3-dev
   python3 python3-h5py python3-numpy python3-matplotlib
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(clang-format)
+elif [ "$#" -gt 0 ]; then
+  echo "install_deps: unknown argument '$1'; accepted: --tests (also install the test tools)" >&2
+  exit 2
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -4,7 +4,7 @@
 # them, ./run_tests.sh -R <regex> a selection); arguments go to ctest instead.
 set -euo pipefail
 cd "$(dirname "$0")"
-./install_deps.sh
+./install_deps.sh --tests
 ./build.sh
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cd build

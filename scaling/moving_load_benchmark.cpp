@@ -43,9 +43,9 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
-#include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 
 namespace {
@@ -187,12 +187,13 @@ class StepTimer : public catena::solvers::TransientObserver {
 }  // namespace
 
 int main(int argc, char** argv) {
-  catena::PetscSession petsc(&argc, &argv,
-                             "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
-                             "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
-                             "[-force N] [-speed m/s] [-start m] [-newton_rtol r] "
-                             "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
-                             "[-save_state FILE] [-compare_state FILE]\n");
+  catena::PetscSession petsc(
+      &argc, &argv,
+      "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
+      "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
+      "[-force N] [-speed m/s] [-start m] [-newton_rtol r] "
+      "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
+      "[-save_state FILE] [-compare_state FILE]\n");
   CATENA_PETSC(PetscLogDefaultBegin());
   MPI_Comm comm = PETSC_COMM_WORLD;
   const int rank = catena::mpi_rank(comm), size = catena::mpi_size(comm);
@@ -276,9 +277,9 @@ int main(int argc, char** argv) {
   catena::MatHandle J = system.create_matrix();
   system.jacobian(point, {(1 + a) * beta * o.dt * o.dt, (1 + a) * gamma * o.dt, 1.0}, J.get());
   // The factorisation HHT uses for this system (no multipliers: no pivoting needed).
-  catena::KspHandle ksp = catena::solvers::create_direct_ksp(
-      comm, "bench_", catena::solvers::JacobianSymmetry::general,
-      catena::solvers::Pivoting::not_needed);
+  catena::KspHandle ksp =
+      catena::solvers::create_direct_ksp(comm, "bench_", catena::solvers::JacobianSymmetry::general,
+                                         catena::solvers::Pivoting::not_needed);
   CATENA_PETSC(KSPSetOperators(ksp.get(), J.get(), J.get()));
   const double t_factor = timed(comm, [&] { CATENA_PETSC(KSPSetUp(ksp.get())); });
   CATENA_PETSC(KSPSolve(ksp.get(), f.get(), x.get()));
@@ -337,8 +338,8 @@ int main(int argc, char** argv) {
     std::printf(
         "  %s, dt %g s, %d steps (%ld rejected); load %g N upward at %g m/s from "
         "x = %g m\n",
-        method.c_str(), o.dt, static_cast<int>(timer.seconds.size()),
-        report.steps_rejected, o.force, o.speed, o.start);
+        method.c_str(), o.dt, static_cast<int>(timer.seconds.size()), report.steps_rejected,
+        o.force, o.speed, o.start);
     std::printf(
         "  static equilibrium %.2f s (%d load steps, %d Newton iterations); set_state "
         "%.2f s; first step %.2f s (%.0f symbolic analyses)\n",
@@ -389,8 +390,8 @@ int main(int argc, char** argv) {
     // s, unit HHT solve pair s, in-run residual s, in-run solve pair s, both ratios.
     std::printf(
         "CSV,%s,%d,%lld,%g,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.3f,%.3f\n",
-        method.c_str(), size, static_cast<long long>(system.dof_map().n_global()), o.dt,
-        n_rest + 1, per_step(total.newton_iterations, k1.newton_iterations),
+        method.c_str(), size, static_cast<long long>(system.dof_map().n_global()), o.dt, n_rest + 1,
+        per_step(total.newton_iterations, k1.newton_iterations),
         per_step(total.residual_evaluations, k1.residual_evaluations),
         per_step(total.jacobian_evaluations, k1.jacobian_evaluations),
         per_step(total.factorizations, k1.factorizations),

@@ -31,7 +31,8 @@ std::string line_scene(double length, double element, double span) {
   s << "name: benchmark line " << length << " m\n"
     << "sections:\n  cw: {type: cable, EA: 1.8e7, EI: 195, mass_per_length: 1.35}\n"
     << "nodes:\n";
-  for (int i = 0; i <= n_spans; ++i) s << "  - {id: " << i + 1 << ", position: [" << i * span << ", 0, 0]}\n";
+  for (int i = 0; i <= n_spans; ++i)
+    s << "  - {id: " << i + 1 << ", position: [" << i * span << ", 0, 0]}\n";
   s << "lines:\n";
   for (int i = 0; i < n_spans; ++i)
     s << "  - {from: " << i + 1 << ", to: " << i + 2 << ", elements: " << per_span
@@ -76,9 +77,8 @@ int main(int argc, char** argv) {
       catena::model::parse_scene(line_scene(length, element, 62.5), "benchmark");
   catena::assembly::SecondOrderSystem* system_ptr = nullptr;
   std::unique_ptr<catena::assembly::SecondOrderSystem> system;
-  const double t_setup = timed(comm, [&] {
-    system = std::make_unique<catena::assembly::SecondOrderSystem>(comm, model);
-  });
+  const double t_setup = timed(
+      comm, [&] { system = std::make_unique<catena::assembly::SecondOrderSystem>(comm, model); });
   system_ptr = system.get();
   catena::VecHandle q = system_ptr->create_vector(), f = system_ptr->create_vector();
   system_ptr->reference_state(q.get());
@@ -87,12 +87,18 @@ int main(int argc, char** argv) {
   const double n_el = static_cast<double>(model.elements.size());
   const long long n_dofs = system_ptr->dof_map().n_global();
 
-  const double t_residual = timed(comm, [&] {
-    for (int i = 0; i < repeat; ++i) system_ptr->force(point, f.get());
-  }) / static_cast<double>(repeat);
-  const double t_jacobian = timed(comm, [&] {
-    for (int i = 0; i < repeat; ++i) system_ptr->jacobian(point, {1.0, 0.0, 0.0}, J.get());
-  }) / static_cast<double>(repeat);
+  const double t_residual = timed(comm,
+                                  [&] {
+                                    for (int i = 0; i < repeat; ++i)
+                                      system_ptr->force(point, f.get());
+                                  }) /
+                            static_cast<double>(repeat);
+  const double t_jacobian = timed(comm,
+                                  [&] {
+                                    for (int i = 0; i < repeat; ++i)
+                                      system_ptr->jacobian(point, {1.0, 0.0, 0.0}, J.get());
+                                  }) /
+                            static_cast<double>(repeat);
 
   // MUMPS LDLᵀ: analysis + first factorisation, refactorisation, triangular solves.
   catena::KspHandle ksp;
@@ -112,9 +118,12 @@ int main(int argc, char** argv) {
     CATENA_PETSC(KSPSetUp(ksp.get()));
   });
   catena::VecHandle x = system_ptr->create_vector();
-  const double t_solve = timed(comm, [&] {
-    for (int i = 0; i < repeat; ++i) CATENA_PETSC(KSPSolve(ksp.get(), f.get(), x.get()));
-  }) / static_cast<double>(repeat);
+  const double t_solve = timed(comm,
+                               [&] {
+                                 for (int i = 0; i < repeat; ++i)
+                                   CATENA_PETSC(KSPSolve(ksp.get(), f.get(), x.get()));
+                               }) /
+                         static_cast<double>(repeat);
   const catena::solvers::MumpsStatus mumps = catena::solvers::mumps_status(ksp.get());
   if (mumps.infog1 < 0) throw catena::Error("MUMPS failed in the benchmark factorisation");
 
@@ -127,14 +136,16 @@ int main(int argc, char** argv) {
   const double memory = peak_rss_bytes(comm);
 
   if (rank == 0) {
-    std::printf("static line benchmark: %.0f m, %.3f m elements, %d ranks\n", length, element, size);
+    std::printf("static line benchmark: %.0f m, %.3f m elements, %d ranks\n", length, element,
+                size);
     std::printf("  elements %.0f, free DOFs %lld, setup %.3f s\n", n_el, n_dofs, t_setup);
     std::printf("  residual   %.4f s/eval  %.3g elements/s per rank\n", t_residual,
                 n_el / size / t_residual);
     std::printf("  jacobian   %.4f s/eval  %.3g elements/s per rank\n", t_jacobian,
                 n_el / size / t_jacobian);
-    std::printf("  MUMPS LDLT analysis+factorisation %.3f s, refactorisation %.3f s, solve %.4f s\n",
-                t_first_factor, t_refactor, t_solve);
+    std::printf(
+        "  MUMPS LDLT analysis+factorisation %.3f s, refactorisation %.3f s, solve %.4f s\n",
+        t_first_factor, t_refactor, t_solve);
     std::printf("  static solve %.3f s (%d load steps, %d Newton iterations)\n", t_static,
                 report.n_load_steps, report.n_newton_iterations);
     std::printf("  peak memory %.1f MiB total, %.0f bytes per DOF\n", memory / 1048576.0,

@@ -170,15 +170,15 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
         throw InputError({"", 0, "--cutoff"},
                          "the cutoff must be positive (got " + args[i] + " Hz)");
     } else if (!a.empty() && a[0] == '-') {
-      throw InputError({"", 0, "arguments"},
-                       "unknown option '" + a + "' for stats; accepted: --json, "
-                       "--section X0 X1, --cutoff HZ");
+      throw InputError({"", 0, "arguments"}, "unknown option '" + a +
+                                                 "' for stats; accepted: --json, "
+                                                 "--section X0 X1, --cutoff HZ");
     } else if (st.file.empty()) {
       st.file = a;
     } else {
       throw InputError({"", 0, "arguments"}, "unexpected argument '" + a +
-                                                 "': one output file is accepted (got '" +
-                                                 st.file + "' already)");
+                                                 "': one output file is accepted (got '" + st.file +
+                                                 "' already)");
     }
   }
   if (st.file.empty())
@@ -250,13 +250,13 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.scene = a;
     } else {
       throw InputError({"", 0, "arguments"}, "unexpected argument '" + a +
-                                                 "': one scene file is accepted (got '" +
-                                                 cl.scene + "' already)");
+                                                 "': one scene file is accepted (got '" + cl.scene +
+                                                 "' already)");
     }
   }
   if (cl.scene.empty())
-    throw InputError({"", 0, "SCENE"}, "no scene file given; usage: catena " + cl.command +
-                                           " SCENE.yaml");
+    throw InputError({"", 0, "SCENE"},
+                     "no scene file given; usage: catena " + cl.command + " SCENE.yaml");
   if (cl.output) cl.overrides.push_back("output.file=" + *cl.output);
   return cl;
 }

@@ -10,10 +10,10 @@ namespace catena::app {
 
 // `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`.
 struct StatsArguments {
-  std::string file;                             // a dynamic run's output
-  bool json = false;                            // --json: JSON instead of the table
+  std::string file;                              // a dynamic run's output
+  bool json = false;                             // --json: JSON instead of the table
   std::optional<std::array<double, 2>> section;  // --section X0 X1 [m]; else the file's
-  double cutoff_hz = 20.0;                      // --cutoff HZ: low-pass cutoff (−6 dB point)
+  double cutoff_hz = 20.0;                       // --cutoff HZ: low-pass cutoff (−6 dB point)
 };
 
 // `catena elasticity SCENE [--set k=v ...] [--span N] [--step DX] [--force F] [--json]`.
@@ -33,9 +33,9 @@ struct CommandLine {
   // --memory-limit GIB: the memory per host a run may use (default: physical memory);
   // 0 (--memory-limit off): no memory check.
   std::optional<double> memory_limit_gib;
-  std::string joined;                  // the whole command line, for the output file
-  StatsArguments stats;                // command "stats" only
-  ElasticityArguments elasticity;      // command "elasticity" only
+  std::string joined;              // the whole command line, for the output file
+  StatsArguments stats;            // command "stats" only
+  ElasticityArguments elasticity;  // command "elasticity" only
 };
 
 // Throws catena::InputError for malformed arguments.

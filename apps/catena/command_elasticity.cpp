@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "catena/catenary/static_elasticity.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
 #include "catena/post/elasticity_summary.hpp"
-#include "catena/catenary/static_elasticity.hpp"
 #include "commands.hpp"
 #include "elasticity_report.hpp"
 #include "scene_loading.hpp"

@@ -66,10 +66,11 @@ void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult&
   MPI_Allreduce(&local[2], &global[2], 1, MPI_DOUBLE, MPI_MIN, comm);
   MPI_Allreduce(reaction_local, reaction, 3, MPI_DOUBLE, MPI_SUM, comm);
   if (mpi_rank(comm) != 0) return;
-  std::printf("static equilibrium: %d load steps (%d rejected), %d Newton iterations, "
-              "|f| = %.3e N, %.2f s\n",
-              report.n_load_steps, report.n_rejected_steps, report.n_newton_iterations,
-              report.residual_norm, seconds);
+  std::printf(
+      "static equilibrium: %d load steps (%d rejected), %d Newton iterations, "
+      "|f| = %.3e N, %.2f s\n",
+      report.n_load_steps, report.n_rejected_steps, report.n_newton_iterations,
+      report.residual_norm, seconds);
   std::printf("  free DOFs %lld on %d ranks\n", static_cast<long long>(n_dofs), mpi_size(comm));
   std::printf("  max displacement %.6g m\n", global[0]);
   if (global[1] >= global[2])
@@ -84,9 +85,9 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   model::Model m = load_scene(comm, cl.scene, cl.overrides, memory_budget(comm, cl));
   const int rank = mpi_rank(comm);
   if (rank == 0) {
-    std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n",
-                version(), git_version(), cl.scene.c_str(), m.name.c_str(),
-                m.nodes.size(), m.elements.size(), mpi_size(comm));
+    std::printf("catena %s (%s): scene %s '%s', %zu nodes, %zu elements, %d ranks\n", version(),
+                git_version(), cl.scene.c_str(), m.name.c_str(), m.nodes.size(), m.elements.size(),
+                mpi_size(comm));
     std::fflush(stdout);
   }
   // Before any solving: a run must not end by finding that it cannot write its results.

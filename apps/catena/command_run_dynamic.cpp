@@ -25,12 +25,12 @@
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
-#include "catena/io/run_files.hpp"
 #include "catena/io/output_error.hpp"
+#include "catena/io/run_files.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
-#include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
 #include "initial_state.hpp"
@@ -149,7 +149,6 @@ class OutputObserver : public solvers::TransientObserver {
     std::fflush(stderr);
   }
 
-
  private:
   assembly::SecondOrderSystem& system_;
   assembly::StateView view_;
@@ -210,7 +209,8 @@ std::vector<std::pair<std::string, double>> statistics(const solvers::TransientR
 // to the checkpoint's run, else (extending a completed run) a copy of the complete output
 // made under the partial name, so that the complete file stays intact until the extended
 // run completes. Throws InputError if neither belongs to the checkpoint.
-std::string output_to_continue(MPI_Comm comm, const std::string& output, const std::string& run_id) {
+std::string output_to_continue(MPI_Comm comm, const std::string& output,
+                               const std::string& run_id) {
   const std::string partial = io::partial_output_path(output);
   std::string why;
   if (mpi_rank(comm) == 0) {
@@ -227,8 +227,8 @@ std::string output_to_continue(MPI_Comm comm, const std::string& output, const s
         if (ec) why = "cannot copy " + output + " to " + partial + ": " + ec.message();
       } else {
         const auto described = [&](const std::string& path, const std::string& id) {
-          return path + (id.empty() ? " (missing, or no Catena time series)"
-                                    : " (of run " + id + ")");
+          return path +
+                 (id.empty() ? " (missing, or no Catena time series)" : " (of run " + id + ")");
         };
         why = "the checkpoint belongs to run " + run_id + ", whose output is gone: neither " +
               described(partial, partial_id) + " nor " + described(output, complete_id) +
@@ -239,13 +239,15 @@ std::string output_to_continue(MPI_Comm comm, const std::string& output, const s
   }
   broadcast_string(comm, why, 0);
   if (!why.empty())
-    throw InputError({io::checkpoint_path(output), 0, ""}, "cannot restart from this checkpoint: " + why);
+    throw InputError({io::checkpoint_path(output), 0, ""},
+                     "cannot restart from this checkpoint: " + why);
   return partial;
 }
 
 // Collective. A completed run's time series takes the output's name (rank 0 renames it,
 // replacing any earlier result atomically); a partial output's ParaView file goes with it.
-void publish_completed_output(MPI_Comm comm, const std::string& partial, const std::string& output) {
+void publish_completed_output(MPI_Comm comm, const std::string& partial,
+                              const std::string& output) {
   std::string why;
   if (mpi_rank(comm) == 0) {
     if (std::rename(partial.c_str(), output.c_str()) != 0)
@@ -306,7 +308,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   std::optional<io::Checkpoint> resumed;
   if (cl.restart) {
     try {
-      resumed = io::read_checkpoint(comm, io::checkpoint_path(m.output.file), m, integrator->name());
+      resumed =
+          io::read_checkpoint(comm, io::checkpoint_path(m.output.file), m, integrator->name());
     } catch (const InputError& e) {
       // `spans: auto` sizes the line from analysis.duration: a longer restart asks for a
       // longer line than the checkpoint's, which a restart cannot add.
@@ -315,19 +318,18 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         throw;
       std::ostringstream why;
       why << e.message() << "; catenary.spans: auto sized this scene's line ("
-          << m.catenary->support_x.size() - 1 << " spans) for analysis.duration = "
-          << dyn.duration
+          << m.catenary->support_x.size() - 1 << " spans) for analysis.duration = " << dyn.duration
           << " s: a restart continues the checkpoint's line and cannot lengthen it; run "
              "afresh with the whole duration";
       throw InputError(e.where(), why.str());
     }
     if (resumed->facts.time >= dyn.duration * (1 - 1e-12))
-      throw InputError({m.source_file, 0, "analysis.duration"},
-                       "analysis.duration = " + std::to_string(dyn.duration) +
-                           " s is not beyond the checkpoint's t = " +
-                           std::to_string(resumed->facts.time) +
-                           " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
-                           std::to_string(2 * resumed->facts.time));
+      throw InputError(
+          {m.source_file, 0, "analysis.duration"},
+          "analysis.duration = " + std::to_string(dyn.duration) +
+              " s is not beyond the checkpoint's t = " + std::to_string(resumed->facts.time) +
+              " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
+              std::to_string(2 * resumed->facts.time));
     VecHandle a = system.create_vector();
     const std::vector<double> no_multipliers(3 * m.constraints.size(), 0.0);
     const assembly::StateView view(system);
@@ -361,19 +363,21 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   if (rank == 0) {
     std::printf("dynamics: %s, %s step %g s, %g s simulated, %lld free DOFs on %d ranks\n",
                 integrator->name().c_str(), options.step.adaptive ? "adaptive, first" : "fixed",
-                options.step.dt, options.t_end,
-                static_cast<long long>(system.dof_map().n_global()), mpi_size(comm));
+                options.step.dt, options.t_end, static_cast<long long>(system.dof_map().n_global()),
+                mpi_size(comm));
     if (options.step.adaptive && options.step.dt > options.t_end)
-      std::printf("note: the first step integrator.dt = %g s is longer than analysis.duration "
-                  "= %g s; it is cut to the duration\n",
-                  options.step.dt, options.t_end);
+      std::printf(
+          "note: the first step integrator.dt = %g s is longer than analysis.duration "
+          "= %g s; it is cut to the duration\n",
+          options.step.dt, options.t_end);
     std::fflush(stdout);
   }
 
   std::vector<int> owned_elements;
   {
     std::vector<elements::SectionResult> unused;
-    assembly::StateView(system).section_results({q.get(), v.get(), {}, 0.0}, owned_elements, unused);
+    assembly::StateView(system).section_results({q.get(), v.get(), {}, 0.0}, owned_elements,
+                                                unused);
   }
   std::vector<int> owned_constraints;
   {
@@ -388,9 +392,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   if (resumed) {
     run_id = resumed->facts.run_id;
     if (rank == 0 && resumed->facts.code_version != code_version())
-      std::printf("restart: note: the checkpoint was written by Catena %s, this is %s; the "
-                  "continued run may differ from an uninterrupted one by more than round-off\n",
-                  resumed->facts.code_version.c_str(), code_version().c_str());
+      std::printf(
+          "restart: note: the checkpoint was written by Catena %s, this is %s; the "
+          "continued run may differ from an uninterrupted one by more than round-off\n",
+          resumed->facts.code_version.c_str(), code_version().c_str());
     writer = std::make_unique<io::TransientWriter>(
         comm, output_to_continue(comm, output, run_id), m, system.dof_map().owned_nodes(),
         owned_elements, owned_constraints,
@@ -399,9 +404,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     run_id = io::new_run_id(comm);
     io::RunInfo info = run_info(cl, system);
     info.run_id = run_id;
-    writer = std::make_unique<io::TransientWriter>(comm, io::partial_output_path(output), m,
-                                                   info, system.dof_map().owned_nodes(),
-                                                   owned_elements, owned_constraints);
+    writer = std::make_unique<io::TransientWriter>(comm, io::partial_output_path(output), m, info,
+                                                   system.dof_map().owned_nodes(), owned_elements,
+                                                   owned_constraints);
   }
   const std::string partial = io::partial_output_path(output);
   OutputObserver observer(system, *writer, m.output, *integrator, run_id);
@@ -436,7 +441,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     throw;
   } catch (const OutputError& e) {
     throw output_failure(e, false, *writer, partial, io::checkpoint_path(output),
-                         observer.last_checkpoint_time(), statistics(report, integrator->counters(), MPI_Wtime() - start));
+                         observer.last_checkpoint_time(),
+                         statistics(report, integrator->counters(), MPI_Wtime() - start));
   }
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
@@ -451,13 +457,13 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   write_xdmf(rank, written, m);
   if (rank == 0) {
     warn_fixed_steps_cut(report);
-    std::printf("%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
-                "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
-                "(%.3g s per simulated second)\n",
-                report.interrupted ? "interrupted" : "done", report.t_reached,
-                report.steps_accepted, report.steps_rejected, report.smallest_dt,
-                report.largest_dt, k.newton_iterations, k.factorizations,
-                k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
+    std::printf(
+        "%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
+        "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall "
+        "(%.3g s per simulated second)\n",
+        report.interrupted ? "interrupted" : "done", report.t_reached, report.steps_accepted,
+        report.steps_rejected, report.smallest_dt, report.largest_dt, k.newton_iterations,
+        k.factorizations, k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
     std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s%s\n", written.c_str(),
                 report.samples, io::transient_xdmf_path(written).c_str(),
                 io::checkpoint_path(output).c_str(),

@@ -41,8 +41,8 @@ void LauncherWatch::watch(long parent, double grace_seconds) {
     if (static_cast<long>(::getppid()) == parent) continue;
     std::signal(SIGPIPE, SIG_IGN);
     std::raise(SIGTERM);  // dynamics: a clean stop; elsewhere the default action ends us
-    const auto give_up = std::chrono::steady_clock::now() +
-                         std::chrono::duration<double>(grace_seconds);
+    const auto give_up =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_seconds);
     if (!wake_.wait_until(lock, give_up, [this] { return done_; })) std::_Exit(128 + SIGTERM);
     return;
   }

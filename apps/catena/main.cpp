@@ -55,8 +55,10 @@ int main(int argc, char** argv) {
       status = 4;
     } catch (const catena::app::RunInterrupted& e) {
       if (rank == 0)
-        std::fprintf(stderr, "catena: interrupted by signal %d at t = %g s; output and "
-                     "checkpoint written\n", e.signal, e.time);
+        std::fprintf(stderr,
+                     "catena: interrupted by signal %d at t = %g s; output and "
+                     "checkpoint written\n",
+                     e.signal, e.time);
       status = 128 + e.signal;
     }
   } catch (const std::exception& e) {

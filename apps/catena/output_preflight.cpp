@@ -76,7 +76,8 @@ void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_l
   throw InputError({m.source_file, 0, key},
                    "cannot write the output file '" + m.output.file + "': " + problem +
                        "; expected a path in an existing, writable directory (the checkpoint "
-                       "'" + m.output.file + ".chk' goes beside it)");
+                       "'" +
+                       m.output.file + ".chk' goes beside it)");
 }
 
 }  // namespace catena::app

@@ -24,16 +24,17 @@ RestoredResumeState::RestoredResumeState(const assembly::SecondOrderSystem& syst
                                          const io::ResumeRows& rows) {
   for (const auto& [name, node_rows] : rows.rows) {
     vectors_.push_back(system.create_vector());
-    assembly::StateView(system).set_from_node_rows(vectors_.back().get(), node_rows, rows.multipliers.at(name));
+    assembly::StateView(system).set_from_node_rows(vectors_.back().get(), node_rows,
+                                                   rows.multipliers.at(name));
     state_.vectors[name] = vectors_.back().get();
   }
   state_.reals = rows.reals;
   state_.integers = rows.integers;
 }
 
-std::optional<solvers::DriverState> restore_resume_state(
-    const assembly::SecondOrderSystem& system, solvers::TimeIntegrator& integrator,
-    const io::Checkpoint& checkpoint) {
+std::optional<solvers::DriverState> restore_resume_state(const assembly::SecondOrderSystem& system,
+                                                         solvers::TimeIntegrator& integrator,
+                                                         const io::Checkpoint& checkpoint) {
   const RestoredResumeState restored(system, checkpoint.resume);
   integrator.restore_resume_state(restored.state());
   return solvers::restore_driver_state(restored.state());
@@ -43,17 +44,20 @@ std::optional<solvers::DriverState> restore_resume_state(
 void print_restart_exactness(const io::Checkpoint& c, const solvers::TimeIntegrator& integrator,
                              int ranks) {
   if (!integrator.resumes_exactly())
-    std::printf("restart: %s keeps no step-to-step state in the checkpoint: the run agrees "
-                "with an uninterrupted one to the method's accuracy, not bit for bit\n",
-                integrator.name().c_str());
+    std::printf(
+        "restart: %s keeps no step-to-step state in the checkpoint: the run agrees "
+        "with an uninterrupted one to the method's accuracy, not bit for bit\n",
+        integrator.name().c_str());
   else if (c.resume.empty())
-    std::printf("restart: the checkpoint holds no solver state (an older format): Newton "
-                "starts afresh, so the run agrees with an uninterrupted one to Newton's "
-                "tolerance, not bit for bit\n");
+    std::printf(
+        "restart: the checkpoint holds no solver state (an older format): Newton "
+        "starts afresh, so the run agrees with an uninterrupted one to Newton's "
+        "tolerance, not bit for bit\n");
   else if (c.facts.ranks != ranks)
-    std::printf("restart: checkpoint written on %d ranks, continuing on %d: the run agrees "
-                "with an uninterrupted one to Newton's tolerance, not bit for bit\n",
-                c.facts.ranks, ranks);
+    std::printf(
+        "restart: checkpoint written on %d ranks, continuing on %d: the run agrees "
+        "with an uninterrupted one to Newton's tolerance, not bit for bit\n",
+        c.facts.ranks, ranks);
 }
 
 }  // namespace catena::app

@@ -32,9 +32,9 @@ class RestoredResumeState {
 
 // Collective. Gives the integrator, its state already set from `checkpoint`, the step-to-step
 // state saved with it; returns the driver's (none from an older checkpoint).
-std::optional<solvers::DriverState> restore_resume_state(
-    const assembly::SecondOrderSystem& system, solvers::TimeIntegrator& integrator,
-    const io::Checkpoint& checkpoint);
+std::optional<solvers::DriverState> restore_resume_state(const assembly::SecondOrderSystem& system,
+                                                         solvers::TimeIntegrator& integrator,
+                                                         const io::Checkpoint& checkpoint);
 
 // Not collective (rank 0). Says when a restart will not continue bit for bit (an
 // integrator without resume state, an older checkpoint, another rank count).

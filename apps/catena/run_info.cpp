@@ -22,9 +22,7 @@ std::string petsc_options_text() {
 
 }  // namespace
 
-std::string code_version() {
-  return std::string(version()) + " (" + git_version() + ")";
-}
+std::string code_version() { return std::string(version()) + " (" + git_version() + ")"; }
 
 io::RunInfo run_info(const CommandLine& cl, const assembly::SecondOrderSystem& system) {
   io::RunInfo info;

@@ -7,8 +7,8 @@
 #include <string>
 #include <variant>
 
-#include "catena/core/mpi_comm.hpp"
 #include "catena/catenary/shape_finding.hpp"
+#include "catena/core/mpi_comm.hpp"
 
 namespace catena::app {
 namespace {
@@ -16,7 +16,8 @@ namespace {
 void print_axial_mode(std::FILE* out, const model::Model& m) {
   const double omega = cable_dropper_axial_omega(m);
   if (omega <= 0.0) return;
-  std::fprintf(out, "  cable droppers' first axial mode: up to %.0f Hz (%.0f rad/s, shortest dropper)\n",
+  std::fprintf(out,
+               "  cable droppers' first axial mode: up to %.0f Hz (%.0f rad/s, shortest dropper)\n",
                omega / (2.0 * std::numbers::pi), omega);
 }
 

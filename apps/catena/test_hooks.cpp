@@ -16,8 +16,8 @@ long positive_variable(const char* name) {
   char* end = nullptr;
   const long value = std::strtol(text, &end, 10);
   if (*end != '\0' || value <= 0)
-    throw InputError({"", 0, name}, std::string("environment variable ") + name + " = '" +
-                                        text + "'; accepted: a positive integer (steps)");
+    throw InputError({"", 0, name}, std::string("environment variable ") + name + " = '" + text +
+                                        "'; accepted: a positive integer (steps)");
   return value;
 }
 

@@ -16,7 +16,8 @@ WallClockSchedule::Action WallClockSchedule::due() {
   int action = static_cast<int>(Action::none);
   if (is_root_) {
     const double now = clock_();
-    if (periods_.checkpoint_seconds > 0.0 && now - last_checkpoint_ >= periods_.checkpoint_seconds) {
+    if (periods_.checkpoint_seconds > 0.0 &&
+        now - last_checkpoint_ >= periods_.checkpoint_seconds) {
       action = static_cast<int>(Action::checkpoint);
       last_checkpoint_ = last_flush_ = now;
     } else if (now - last_flush_ >= periods_.flush_seconds) {

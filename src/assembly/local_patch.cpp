@@ -34,8 +34,10 @@ void SecondOrderSystem::prepare_local_patches() {
     if (role(k) != PatchRole::kernel) continue;
     for (size_t i = offset_[k]; i < offset_[k + 1]; ++i) {
       const PetscInt l = local_index_[i];
-      if (l >= n) reaches_ghost[k] = 1;
-      else if (l >= 0) ++count[static_cast<size_t>(l) + 1];
+      if (l >= n)
+        reaches_ghost[k] = 1;
+      else if (l >= 0)
+        ++count[static_cast<size_t>(l) + 1];
     }
   }
   for (size_t l = 0; l < static_cast<size_t>(n); ++l) count[l + 1] += count[l];
@@ -190,7 +192,8 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
       patch.coupling_rows.push_back(local_index_[i] >= 0 ? position_in(patch.rows, local_index_[i])
                                                          : -1);
   for (const auto* local : joined)
-    for (PetscInt l : *local) patch.coupling_rows.push_back(l >= 0 ? position_in(patch.rows, l) : -1);
+    for (PetscInt l : *local)
+      patch.coupling_rows.push_back(l >= 0 ? position_in(patch.rows, l) : -1);
   patch.couplings.insert(patch.couplings.end(), joined_couplings.begin(), joined_couplings.end());
   patch.n_timed = joined_couplings.size();
   for (PetscInt r : patch.rows) patch.unknown_of_row.push_back(position_in(patch.unknowns, r));

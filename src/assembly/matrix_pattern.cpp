@@ -53,7 +53,7 @@ class RowCouplings {
       for (size_t k = offset[i]; k < offset[i + 1]; ++k)
         if (const PetscInt row = local_index[k]; row >= 0)
           at_[next[static_cast<size_t>(row)]++] = {static_cast<std::uint32_t>(i),
-                                                    static_cast<std::uint32_t>(k - offset[i])};
+                                                   static_cast<std::uint32_t>(k - offset[i])};
     seen_in_row_.resize(n_local);
   }
 
@@ -93,7 +93,7 @@ class RowCouplings {
   const std::vector<PetscInt>& local_;
   const std::vector<PetscInt>& global_;
   std::vector<std::vector<std::vector<int>>> sparse_columns_;
-  std::vector<size_t> start_;     // per local row, into at_
+  std::vector<size_t> start_;  // per local row, into at_
   std::vector<Incidence> at_;
   std::vector<size_t> seen_in_row_;  // per local column: the last row that listed it
   std::vector<PetscInt> columns_;
@@ -168,7 +168,8 @@ MatHandle SecondOrderSystem::create_matrix() const {
     });
   };
 
-  std::vector<PetscInt> diagonal(static_cast<size_t>(n), 0), off_diagonal(static_cast<size_t>(n), 0);
+  std::vector<PetscInt> diagonal(static_cast<size_t>(n), 0),
+      off_diagonal(static_cast<size_t>(n), 0);
   size_t longest = 0;
   visit_owned([&](PetscInt row, const std::vector<PetscInt>& columns) {
     for (PetscInt c : columns)

@@ -70,9 +70,9 @@ std::vector<int> partition_elements(const model::Model& model, int n_parts) {
   // which is no element) and prints an error to stdout, so ask only when connected.
   options[METIS_OPTION_CONTIG] = is_connected(xadj, adjncy) ? 1 : 0;
   std::vector<idx_t> part(n_el, 0);
-  const int status = METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr,
-                                         nullptr, nullptr, &nparts, nullptr, nullptr, options,
-                                         &objval, part.data());
+  const int status =
+      METIS_PartGraphKway(&nvtxs, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
+                          &nparts, nullptr, nullptr, options, &objval, part.data());
   if (status != METIS_OK)
     throw Error("METIS_PartGraphKway failed with status " + std::to_string(status) + " for " +
                 std::to_string(n_el) + " elements into " + std::to_string(n_parts) + " parts");

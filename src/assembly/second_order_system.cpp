@@ -78,8 +78,8 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     : comm_(comm),
       model_(&model),
       partition_(partition_model(comm, model)),
-      couplings_(couplings::make_couplings(model, partition_.element_owner,
-                                           partition_.node_owner, mpi_rank(comm))),
+      couplings_(couplings::make_couplings(model, partition_.element_owner, partition_.node_owner,
+                                           mpi_rank(comm))),
       dofs_(model, partition_, mpi_rank(comm), touched_nodes(couplings_)) {
   node_reference_.assign(kBlock * model.nodes.size(), 0.0);
   for (size_t n = 0; n < model.nodes.size(); ++n)
@@ -141,11 +141,10 @@ SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, Buff
   return {b.local.data(), b.global.data(), b.fixed.data(), b.positions.size()};
 }
 
-couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs,
-                                                  const double* q_local,
-                                                  const double* v_local,
-                                                  const elements::LoadPath& path, double t,
-                                                  Buffers& b) const {
+couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs, const double* q_local,
+                                                   const double* v_local,
+                                                   const elements::LoadPath& path, double t,
+                                                   Buffers& b) const {
   const size_t n = dofs.n;
   if (b.q.size() < n) {
     b.q.resize(n);

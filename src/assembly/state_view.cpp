@@ -15,9 +15,9 @@
 
 namespace catena::assembly {
 
-using detail::LocalArrayRead;
 using couplings::ElementCoupling;
 using couplings::ElementOrigin;
+using detail::LocalArrayRead;
 
 namespace {
 // Width of a node's row in the reference coordinates and in checkpoint rows.
@@ -25,7 +25,7 @@ constexpr size_t kBlock = model::kMaxBlockUnknowns;
 }  // namespace
 
 void StateView::section_results(const EvalPoint& p, std::vector<int>& element_indices,
-                                        std::vector<elements::SectionResult>& results) const {
+                                std::vector<elements::SectionResult>& results) const {
   const SecondOrderSystem& sys = system_;
   sys.scatter_to_local(p.q, sys.q_work_.get());
   const LocalArrayRead q(sys.q_work_.get());
@@ -43,7 +43,7 @@ void StateView::section_results(const EvalPoint& p, std::vector<int>& element_in
 }
 
 void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
-                                          std::vector<double>& slopes) const {
+                                  std::vector<double>& slopes) const {
   const SecondOrderSystem& sys = system_;
   sys.scatter_to_local(q_global, sys.q_work_.get());
   const LocalArrayRead q(sys.q_work_.get());
@@ -55,8 +55,10 @@ void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
       return l >= 0 ? q.data()[l] : sys.node_reference_[kBlock * n + k];
     };
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
-    for (int d = 0; d < 3; ++d) positions.push_back(kind.position >= 0 ? value(kind.position + d) : 0.0);
-    for (int d = 0; d < 3; ++d) slopes.push_back(kind.gradients >= 0 ? value(kind.gradients + d) : 0.0);
+    for (int d = 0; d < 3; ++d)
+      positions.push_back(kind.position >= 0 ? value(kind.position + d) : 0.0);
+    for (int d = 0; d < 3; ++d)
+      slopes.push_back(kind.gradients >= 0 ? value(kind.gradients + d) : 0.0);
   }
 }
 
@@ -78,20 +80,21 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   // element couplings carry it: R = f_int − f_ext at a fixed DOF, and an elastic support
   // pulls its node back.
   std::vector<double> partial(kBlock * supported.size(), 0.0), total(partial.size(), 0.0);
-  sys.visit_forces(p, [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
-    const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
-    if (!e) return;
-    const std::vector<couplings::DofKey>& keys = e->dofs();
-    for (size_t k = 0; k < f_el.size(); ++k) {
-      const int node = keys[k].index, comp = keys[k].component;
-      if (e->origin() == ElementOrigin::elastic_support)
-        partial[kBlock * slot(node) + comp] -= f_el[k];
-      else if (dofs.global[k] < 0)
-        partial[kBlock * slot(node) + comp] += f_el[k];
-    }
-  });
-  MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE,
-                MPI_SUM, sys.comm_);
+  sys.visit_forces(
+      p, [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
+        const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
+        if (!e) return;
+        const std::vector<couplings::DofKey>& keys = e->dofs();
+        for (size_t k = 0; k < f_el.size(); ++k) {
+          const int node = keys[k].index, comp = keys[k].component;
+          if (e->origin() == ElementOrigin::elastic_support)
+            partial[kBlock * slot(node) + comp] -= f_el[k];
+          else if (dofs.global[k] < 0)
+            partial[kBlock * slot(node) + comp] += f_el[k];
+        }
+      });
+  MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM,
+                sys.comm_);
 
   Reactions r;
   const int rank = mpi_rank(sys.comm_);
@@ -136,8 +139,8 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
       const bool on = c->on_path(p.t);
       double delta = 0.0, F = 0.0;
       if (on) {
-        F = c->force(sys.gather(sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr, p.path,
-                            p.t, sys.work_),
+        F = c->force(sys.gather(sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr,
+                                p.path, p.t, sys.work_),
                      &delta);
       }
       local[4 * k] = F;
@@ -155,7 +158,7 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
 }
 
 void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
-                                        std::vector<double>& multipliers) const {
+                                std::vector<double>& multipliers) const {
   const SecondOrderSystem& sys = system_;
   rows.clear();
   multipliers.clear();
@@ -173,11 +176,10 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
 }
 
 void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
-                                           const std::vector<double>& multipliers) const {
+                                   const std::vector<double>& multipliers) const {
   const SecondOrderSystem& sys = system_;
   CATENA_ASSERT(rows.size() == kBlock * sys.model_->nodes.size() &&
-                    multipliers.size() ==
-                        DofMap::kMultipliers * sys.model_->constraints.size(),
+                    multipliers.size() == DofMap::kMultipliers * sys.model_->constraints.size(),
                 "a row per node, a multiplier block per constraint");
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(x, &a));
@@ -194,7 +196,7 @@ void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
 }
 
 void StateView::owned_constraint_forces(Vec q, std::vector<int>& constraints,
-                                                std::vector<double>& forces) const {
+                                        std::vector<double>& forces) const {
   const SecondOrderSystem& sys = system_;
   constraints.clear();
   forces.clear();

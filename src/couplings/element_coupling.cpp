@@ -20,8 +20,8 @@ Part single_part(const JacobianCoefficients& c) {
 
 }  // namespace
 
-ElementCoupling::ElementCoupling(std::unique_ptr<elements::Element> element,
-                                 std::vector<int> nodes, ElementOrigin origin, int source)
+ElementCoupling::ElementCoupling(std::unique_ptr<elements::Element> element, std::vector<int> nodes,
+                                 ElementOrigin origin, int source)
     : element_(std::move(element)), nodes_(std::move(nodes)), origin_(origin), source_(source) {
   const int dpn = element_->dofs_per_node();
   dofs_.reserve(nodes_.size() * static_cast<size_t>(dpn));
@@ -29,8 +29,8 @@ ElementCoupling::ElementCoupling(std::unique_ptr<elements::Element> element,
     for (int k = 0; k < dpn; ++k) dofs_.push_back(DofKey::node(n, k));
 }
 
-void ElementCoupling::evaluate(const CouplingState& s, double* f,
-                               std::span<const MatrixRequest> m, Scratch& scratch) const {
+void ElementCoupling::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
+                               Scratch& scratch) const {
   const size_t n = dofs_.size();
   const size_t nn = n * n;
   bool stiffness = false, damping = false, mass = false;
@@ -40,10 +40,17 @@ void ElementCoupling::evaluate(const CouplingState& s, double* f,
     damping |= r.c.c_C != 0.0;
     mass |= r.c.c_M != 0.0;
     switch (single_part(r.c)) {
-      case Part::K: K = K ? K : r.out; break;
-      case Part::C: C = C ? C : r.out; break;
-      case Part::M: M = M ? M : r.out; break;
-      case Part::none: break;
+      case Part::K:
+        K = K ? K : r.out;
+        break;
+      case Part::C:
+        C = C ? C : r.out;
+        break;
+      case Part::M:
+        M = M ? M : r.out;
+        break;
+      case Part::none:
+        break;
     }
   }
   if (stiffness && !K) K = (scratch.b.resize(nn), scratch.b.data());
@@ -52,8 +59,7 @@ void ElementCoupling::evaluate(const CouplingState& s, double* f,
   if (f || stiffness || damping) {
     if (!f) scratch.a.resize(n);
     const elements::LocalState local{s.q, s.v, s.path};
-    element_->evaluate(local, {f != nullptr, stiffness, damping},
-                       {f ? f : scratch.a.data(), K, C});
+    element_->evaluate(local, {f != nullptr, stiffness, damping}, {f ? f : scratch.a.data(), K, C});
   }
   if (mass) element_->mass(M);
   // The other requests combine the parts (in the order K, C, M, as 0 + c_K K + ...).

@@ -2,7 +2,6 @@
 
 #include <type_traits>
 
-
 #include "catena/elements/ancf_beam.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/linear_spring.hpp"
@@ -48,9 +47,9 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
       [&](const auto& p) -> std::unique_ptr<elements::Element> {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, model::CableProps>) {
-          const elements::CableSection s{p.EA,           p.EI,           p.mass_per_length,
-                                         p.damping_time, p.prestrain,    p.tension_only,
-                                         p.prestrain_with_loads};
+          const elements::CableSection s{
+              p.EA,        p.EI,           p.mass_per_length,     p.damping_time,
+              p.prestrain, p.tension_only, p.prestrain_with_loads};
           return with_rayleigh(std::make_unique<elements::AncfCable>(length, s, model.gravity,
                                                                      desc.distributed_load),
                                p.rayleigh, model, desc.nodes);
@@ -59,8 +58,8 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
           const double l0 = p.unstretched_length > 0.0 ? p.unstretched_length : length;
           return std::make_unique<elements::TensionBar>(l0, s, model.gravity, length);
         } else if constexpr (std::is_same_v<P, model::SpringProps>) {
-          return std::make_unique<elements::LinearSpring>(xa, xb,
-                                                          elements::SpringSection{p.stiffness, p.damping});
+          return std::make_unique<elements::LinearSpring>(
+              xa, xb, elements::SpringSection{p.stiffness, p.damping});
         } else {
           static_assert(std::is_same_v<P, model::BeamProps>);
           auto node_ref = [&](int n) {
@@ -68,14 +67,13 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
             return elements::BeamNodeRef{node.position, node.tangent, node.section_y,
                                          node.section_z};
           };
-          const elements::BeamSection s{p.EA,   p.GA_y, p.GA_z,   p.GJ,     p.EI_y,
-                                        p.EI_z, p.mass_per_length, p.rho_Iy, p.rho_Iz,
-                                        p.damping_time};
-          return with_rayleigh(
-              std::make_unique<elements::AncfBeam>(
-                  node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
-                  elements::BeamLoads{model.gravity, desc.distributed_load}),
-              p.rayleigh, model, desc.nodes);
+          const elements::BeamSection s{
+              p.EA,     p.GA_y,   p.GA_z,        p.GJ, p.EI_y, p.EI_z, p.mass_per_length,
+              p.rho_Iy, p.rho_Iz, p.damping_time};
+          return with_rayleigh(std::make_unique<elements::AncfBeam>(
+                                   node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
+                                   elements::BeamLoads{model.gravity, desc.distributed_load}),
+                               p.rayleigh, model, desc.nodes);
         }
       },
       desc.props);

@@ -29,8 +29,7 @@ MovingLoad::MovingLoad(const model::Model& model, const model::MovingLoad& load,
 int MovingLoad::element_at(double t) const {
   const double s = position(t);
   if (t < load_.start_time || !stations_.contains(s)) return -1;
-  return first_dof_[stations_.element_at(s)] >= 0 ? static_cast<int>(stations_.element_at(s))
-                                                  : -1;
+  return first_dof_[stations_.element_at(s)] >= 0 ? static_cast<int>(stations_.element_at(s)) : -1;
 }
 
 void MovingLoad::active_dofs(double t, std::vector<int>& positions) const {

@@ -39,8 +39,8 @@ Vec3 NodeConstraint::acceleration(double t) const {
   return -w * w * std::sin(w * t) * constraint_.amplitude;
 }
 
-void NodeConstraint::evaluate(const CouplingState& s, double* f,
-                              std::span<const MatrixRequest> m, Scratch&) const {
+void NodeConstraint::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
+                              Scratch&) const {
   const size_t n = dofs_.size();
   const bool coincident = constraint_.type == model::ConstraintType::coincident;
   if (f) {

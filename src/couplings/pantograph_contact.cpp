@@ -97,8 +97,7 @@ void PantographContact::evaluate(const CouplingState& s, double* f,
     for (int i = 0; i < kActive; ++i)
       for (int j = 0; j < kActive; ++j)
         r.out[i * kActive + j] =
-            F == 0.0 ? 0.0
-                     : N[i] * (r.c.c_K * (k * N[j] + c * D[j]) + r.c.c_C * c * N[j]);
+            F == 0.0 ? 0.0 : N[i] * (r.c.c_K * (k * N[j] + c * D[j]) + r.c.c_C * c * N[j]);
 }
 
 }  // namespace catena::couplings

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace catena::elements {
 namespace {
 
@@ -205,7 +204,8 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
     accumulate(p.h, kAxialWeights[k] * L, pt, false);
   }
   if (rank_one) {
-    const double cb = L * EA * a * (law_at.dG - 1.0), cv = damped ? L * EA * a * tau * law_at.dW : 0.0;
+    const double cb = L * EA * a * (law_at.dG - 1.0),
+                 cv = damped ? L * EA * a * tau * law_at.dW : 0.0;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) K[i][j] += (cb * b[i] + cv * v[i]) * b[j].transpose();
   }
@@ -292,8 +292,7 @@ SectionResult AncfCable::section_result(const LocalState& s) const {
     eps[k] = a * slope_at(hermite_at(kAxialPoints[k] * length_, length_), e).norm() - 1.0;
     eps_mean += kAxialWeights[k] * eps[k];
   }
-  if (section_.tension_only)
-    return {section_.EA * AxialLaw(true).at(eps_mean).G, eps_mean};
+  if (section_.tension_only) return {section_.EA * AxialLaw(true).at(eps_mean).G, eps_mean};
   return {section_.EA * eps[1], eps[1]};
 }
 

@@ -8,7 +8,9 @@ namespace catena::elements {
 
 TensionBar::TensionBar(double unstretched_length, const BarSection& section, const Vec3& gravity,
                        double mesh_length)
-    : l0_(unstretched_length), mesh_length_(mesh_length), section_(section),
+    : l0_(unstretched_length),
+      mesh_length_(mesh_length),
+      section_(section),
       node_weight_(0.5 * section.mass_per_length * unstretched_length * gravity) {
   CATENA_ASSERT(l0_ > 0.0, "TensionBar: unstretched length must be positive");
   CATENA_ASSERT(mesh_length_ >= 0.0, "TensionBar: mesh length must not be negative");

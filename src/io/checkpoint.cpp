@@ -77,8 +77,8 @@ class Reader {
   }
   bool has_attribute(const char* name) const { return H5Aexists(file_.get(), name) > 0; }
   std::string text(const char* name) const {
-    const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
-                                            path_, name));
+    const AttributeHandle a(
+        checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen", path_, name));
     const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, name));
     char* value = nullptr;
     check_hdf5_status(H5Aread(a.get(), type.get(), &value), "H5Aread", path_, name);
@@ -86,14 +86,12 @@ class Reader {
     H5free_memory(value);
     return out;
   }
-  bool has(const char* name) const {
-    return H5Lexists(file_.get(), name, H5P_DEFAULT) > 0;
-  }
+  bool has(const char* name) const { return H5Lexists(file_.get(), name, H5P_DEFAULT) > 0; }
   // Names of the objects in group `name`, in HDF5's name order.
   std::vector<std::string> members(const char* name) const {
     std::vector<std::string> out;
-    check_hdf5_status(H5Literate_by_name(file_.get(), name, H5_INDEX_NAME, H5_ITER_INC,
-                                          nullptr, collect_link, &out, H5P_DEFAULT),
+    check_hdf5_status(H5Literate_by_name(file_.get(), name, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+                                         collect_link, &out, H5P_DEFAULT),
                       "H5Literate_by_name", path_, name);
     return out;
   }
@@ -107,8 +105,8 @@ class Reader {
         H5Aiterate2(g.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute, &names),
         "H5Aiterate2", path_, name);
     for (const std::string& n : names) {
-      const AttributeHandle a(checked_hdf5_id(H5Aopen(g.get(), n.c_str(), H5P_DEFAULT),
-                                              "H5Aopen", path_, n));
+      const AttributeHandle a(
+          checked_hdf5_id(H5Aopen(g.get(), n.c_str(), H5P_DEFAULT), "H5Aopen", path_, n));
       const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, n));
       if (H5Tget_class(type.get()) == H5T_FLOAT)
         check_hdf5_status(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &reals[n]), "H5Aread", path_, n);
@@ -120,20 +118,22 @@ class Reader {
     std::vector<double> out(expected);
     const DatasetHandle d(
         checked_hdf5_id(H5Dopen2(file_.get(), name, H5P_DEFAULT), "H5Dopen2", path_, name));
-    const DataspaceHandle space(checked_hdf5_id(H5Dget_space(d.get()), "H5Dget_space", path_, name));
+    const DataspaceHandle space(
+        checked_hdf5_id(H5Dget_space(d.get()), "H5Dget_space", path_, name));
     if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != expected)
-      throw Error(path_ + ": dataset " + name + " has the wrong size (not this model's checkpoint)");
+      throw Error(path_ + ": dataset " + name +
+                  " has the wrong size (not this model's checkpoint)");
     if (expected > 0)
-      check_hdf5_status(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                out.data()),
-                        "H5Dread", path_, name);
+      check_hdf5_status(
+          H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "H5Dread",
+          path_, name);
     return out;
   }
 
  private:
   void read_attribute(const char* name, hid_t type, void* value) const {
-    const AttributeHandle a(checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen",
-                                            path_, name));
+    const AttributeHandle a(
+        checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen", path_, name));
     check_hdf5_status(H5Aread(a.get(), type, value), "H5Aread", path_, name);
   }
   static herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* out) {
@@ -164,19 +164,22 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
                              const std::string& integrator) {
   auto fail = [&](const std::string& why) { throw Error(why); };
   if (!fs::is_regular_file(path))
-    fail("no such file (a run writes <output>.chk at its checkpoints, at SIGTERM/SIGINT "
-         "and at the end)");
+    fail(
+        "no such file (a run writes <output>.chk at its checkpoints, at SIGTERM/SIGINT "
+        "and at the end)");
   const Reader r(path);
   const std::string format = r.text("format");
   if (!known_format(format)) fail("not a Catena checkpoint (format " + format + ")");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
   if (!r.has_attribute("scene_identity"))
-    fail("written by an older Catena, which did not record which run it belongs to; run "
-         "afresh (without --restart)");
+    fail(
+        "written by an older Catena, which did not record which run it belongs to; run "
+        "afresh (without --restart)");
   if (const std::string why = model::first_identity_difference(
           model::scene_identity(model.source_text), r.text("scene_identity"));
       !why.empty())
-    fail("it belongs to another run (" + why + "; the scene after --set overrides must be "
+    fail("it belongs to another run (" + why +
+         "; the scene after --set overrides must be "
          "the same, except analysis.duration and the output's file and wall-clock keys); run "
          "afresh (without --restart), which replaces it");
   Checkpoint c;
@@ -199,8 +202,8 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   r.numbers(kResumeGroup, c.resume.reals, c.resume.integers);
   for (const std::string& name : r.members(kResumeVectors)) {
     c.resume.rows[name] = r.values(member_path(kResumeVectors, name).c_str(), kNodeRow * n);
-    c.resume.multipliers[name] =
-        r.values(member_path(kResumeMultipliers, name).c_str(), kMultiplierRow * model.constraints.size());
+    c.resume.multipliers[name] = r.values(member_path(kResumeMultipliers, name).c_str(),
+                                          kMultiplierRow * model.constraints.size());
   }
   return c;
 }
@@ -218,10 +221,10 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
   for (const auto& [name, rows] : resume.rows) {
     const std::string node_path = member_path(kResumeVectors, name);
     const std::vector<double> block = nodes.to_block(rows, kNodeRow);
-    write_block_dataset<double>(file, {node_path.c_str(), n_nodes, kNodeRow}, nodes.block(),
-                                block);
+    write_block_dataset<double>(file, {node_path.c_str(), n_nodes, kNodeRow}, nodes.block(), block);
     const std::string multiplier_path = member_path(kResumeMultipliers, name);
-    const std::vector<double> lambda = constraints.to_block(resume.multipliers.at(name), kMultiplierRow);
+    const std::vector<double> lambda =
+        constraints.to_block(resume.multipliers.at(name), kMultiplierRow);
     write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, kMultiplierRow},
                                 constraints.block(), lambda);
   }
@@ -244,8 +247,8 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
   std::optional<TemporaryFile> temporary;
   if (is_root) temporary.emplace(temporary_path);
   {
-    ParallelHdf5File file = run_collective_phase(
-        comm, [&] { return ParallelHdf5File(comm, temporary_path.string()); });
+    ParallelHdf5File file =
+        run_collective_phase(comm, [&] { return ParallelHdf5File(comm, temporary_path.string()); });
     const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
     const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
     const RowRedistribution nodes(comm, n_nodes, share.nodes, "checkpoint nodes");

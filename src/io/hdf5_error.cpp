@@ -55,8 +55,8 @@ std::string hdf5_failure_message(std::string_view call, std::string_view file,
   }
   message += ": ";
   if (names_a_write_cause(call_errno))
-    message += std::string(std::strerror(call_errno)) + " (HDF5: " +
-               innermost_hdf5_description() + ")";
+    message +=
+        std::string(std::strerror(call_errno)) + " (HDF5: " + innermost_hdf5_description() + ")";
   else
     message += innermost_hdf5_description();
   H5Eclear2(H5E_DEFAULT);
@@ -65,7 +65,12 @@ std::string hdf5_failure_message(std::string_view call, std::string_view file,
 
 bool names_a_write_cause(int error_number) {
   switch (error_number) {
-    case ENOSPC: case EDQUOT: case EIO: case EFBIG: case EROFS: case ESTALE:
+    case ENOSPC:
+    case EDQUOT:
+    case EIO:
+    case EFBIG:
+    case EROFS:
+    case ESTALE:
       return true;
     default:
       return false;

@@ -122,8 +122,8 @@ DatasetHandle write_block_dataset(const ParallelHdf5File& file, const BlockDatas
                     dataset.name);
   DatasetHandle created =
       file.agreed_create<DatasetHandle>({"H5Dcreate2", path, dataset.name}, [&] {
-        return H5Dcreate2(file.id(), dataset.name, Hdf5TypesOf<Value>::in_file(),
-                          file_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT);
+        return H5Dcreate2(file.id(), dataset.name, Hdf5TypesOf<Value>::in_file(), file_space.get(),
+                          H5P_DEFAULT, creation.get(), H5P_DEFAULT);
       });
 
   if (dataset.unit != nullptr) write_string_attribute({created.get(), path}, "unit", dataset.unit);

@@ -52,7 +52,8 @@ int acquire(const std::string& path, std::string& why, bool& held_by_other) {
       }
       return -1;
     }
-    struct stat open_file {}, named_file {};
+    struct stat open_file {
+    }, named_file{};
     if (::fstat(fd, &open_file) == 0 && ::stat(path.c_str(), &named_file) == 0 &&
         open_file.st_ino == named_file.st_ino && open_file.st_dev == named_file.st_dev) {
       const std::string owner = std::to_string(::getpid()) + " " + host_name() + "\n";

@@ -48,9 +48,9 @@ class Series {
     }
     // About 64 KiB chunks along time (at least one row), so appends touch few chunks.
     chunk[0] = std::max<hsize_t>(1, (64 * 1024 / 8) / row);
-    const DataspaceHandle space(checked_hdf5_id(
-        H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), "H5Screate_simple",
-        path_, name_));
+    const DataspaceHandle space(
+        checked_hdf5_id(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()),
+                        "H5Screate_simple", path_, name_));
     const PropertyListHandle create(
         checked_hdf5_id(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate", path_, name_));
     check_hdf5_status(H5Pset_chunk(create.get(), static_cast<int>(chunk.size()), chunk.data()),
@@ -136,8 +136,8 @@ class Series {
     const DataspaceHandle memory(checked_hdf5_id(H5Screate_simple(1, &memory_size, nullptr),
                                                  "H5Screate_simple", path_, name_));
     if (n_values > 0) {
-      check_hdf5_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(),
-                                            nullptr, count.data(), nullptr),
+      check_hdf5_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                            count.data(), nullptr),
                         "H5Sselect_hyperslab", path_, name_);
     } else {
       check_hdf5_status(H5Sselect_none(file_space.get()), "H5Sselect_none", path_, name_);
@@ -251,9 +251,20 @@ struct TransientWriter::Impl {
   }
 
   std::vector<Series*> all_series() {
-    return {&time, &positions, &velocities, &slopes, &axial, &constraint_forces,
-            &contact_force, &contact_position, &step_contact_force, &step_time,
-            &step_dt, &step_iterations, &step_error, &step_rejected};
+    return {&time,
+            &positions,
+            &velocities,
+            &slopes,
+            &axial,
+            &constraint_forces,
+            &contact_force,
+            &contact_position,
+            &step_contact_force,
+            &step_time,
+            &step_dt,
+            &step_iterations,
+            &step_error,
+            &step_rejected};
   }
 
   // Collective. Closes every dataset, then the file.

@@ -63,15 +63,17 @@ AnalysisType read_analysis(const Field& analysis, StaticOptions& options) {
 
 void read_output(const Field& output, OutputOptions& options) {
   if (!output.present()) return;
-  output.expect_map("output settings {file, interval, flush_wall_seconds, checkpoint_wall_seconds}");
+  output.expect_map(
+      "output settings {file, interval, flush_wall_seconds, checkpoint_wall_seconds}");
   output.check_keys({"file", "interval", "flush_wall_seconds", "checkpoint_wall_seconds"});
   options.file = output.child("file").text_or(options.file);
-  options.interval = output.child("interval").real_or(options.interval, RealRange::non_negative("s"));
-  options.flush_wall_seconds =
-      output.child("flush_wall_seconds").real_or(options.flush_wall_seconds, RealRange::positive("s"));
-  options.checkpoint_wall_seconds = output.child("checkpoint_wall_seconds")
-                                        .real_or(options.checkpoint_wall_seconds,
-                                                 RealRange::non_negative("s"));
+  options.interval =
+      output.child("interval").real_or(options.interval, RealRange::non_negative("s"));
+  options.flush_wall_seconds = output.child("flush_wall_seconds")
+                                   .real_or(options.flush_wall_seconds, RealRange::positive("s"));
+  options.checkpoint_wall_seconds =
+      output.child("checkpoint_wall_seconds")
+          .real_or(options.checkpoint_wall_seconds, RealRange::non_negative("s"));
 }
 
 }  // namespace catena::model::detail

@@ -28,8 +28,7 @@ const std::vector<std::string>& component_names() {
 
 std::string node_kind_note(const UnknownKindInfo& info) {
   std::string list;
-  for (int k = 0; k < info.size; ++k)
-    list += (k ? ", " : "") + std::string(info.components[k]);
+  for (int k = 0; k < info.size; ++k) list += (k ? ", " : "") + std::string(info.components[k]);
   return std::string(info.name) + " (" + list + "): " + std::string(info.used_by);
 }
 

@@ -236,9 +236,8 @@ class CatenaryAssembler {
     const std::size_t n_dropper_nodes =
         cable_droppers() ? n_droppers * static_cast<std::size_t>(d_.droppers.cable_elements + 1)
                          : 0;
-    const auto n_new =
-        static_cast<std::int64_t>(contact_.positions.size() + messenger_.positions.size() +
-                                  n_stitch_nodes + n_dropper_nodes);
+    const auto n_new = static_cast<std::int64_t>(
+        contact_.positions.size() + messenger_.positions.size() + n_stitch_nodes + n_dropper_nodes);
     std::int64_t id = reserve_ids(last_id, n_new, entry_, "node");
     contact_base_ = static_cast<int>(model_.nodes.size());
     for (const Vec3& x : contact_.positions) build_.add_node(Node{id++, x}, origin_);
@@ -347,9 +346,9 @@ class CatenaryAssembler {
     const Vec3 bottom_x = model_.nodes[static_cast<std::size_t>(lower)].position;
     const int top = static_cast<int>(model_.nodes.size());
     for (int j = 0; j <= n; ++j)
-      build_.add_node(Node{next_dropper_node_id_++,
-                           top_x + (bottom_x - top_x) * (static_cast<double>(j) / n)},
-                      origin_);
+      build_.add_node(
+          Node{next_dropper_node_id_++, top_x + (bottom_x - top_x) * (static_cast<double>(j) / n)},
+          origin_);
     CableProps cable;
     cable.EA = dropper_mesh_EA();
     cable.EI = dd.EI;
@@ -483,7 +482,7 @@ class CatenaryAssembler {
   std::vector<int> stitch_base_;         // model index of each stitch wire's first node
   int origin_ = 0;
   int contact_base_ = 0, messenger_base_ = 0;
-  int dropper_base_ = 0;  // the first cable-dropper node (none for bars)
+  int dropper_base_ = 0;                   // the first cable-dropper node (none for bars)
   std::int64_t next_element_id_ = 0;       // the next element id handed out
   std::int64_t next_dropper_node_id_ = 0;  // the next cable-dropper node id
 };

@@ -52,8 +52,8 @@ struct StitchDesign {
 
 struct DropperDesign {
   DropperModel model = DropperModel::bar;
-  int cable_elements = 0;     // per dropper, cable model only
-  double EI = 0.0;            // N·m², cable model only
+  int cable_elements = 0;                      // per dropper, cable model only
+  double EI = 0.0;                             // N·m², cable model only
   std::vector<std::vector<double>> positions;  // m from the span's start, per span
   double EA = 0.0;                             // N; 0 when `stiffness` is given
   double stiffness = 0.0;        // N/m (EA = stiffness × unstretched length); 0 when EA is

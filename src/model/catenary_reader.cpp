@@ -220,14 +220,15 @@ void read_dropper_model(const Field& droppers, DropperDesign& d) {
   d.EI = EI.real(RealRange::positive("N*m^2"));
   if (!(d.mass_per_length > 0.0))
     droppers.child("mass_per_length")
-        .fail("cable droppers need a mass per length > 0 kg/m (the cable's interior nodes "
-              "have no other inertia); give the dropper wire's mass or use 'model: bar'");
+        .fail(
+            "cable droppers need a mass per length > 0 kg/m (the cable's interior nodes "
+            "have no other inertia); give the dropper wire's mass or use 'model: bar'");
 }
 
 DropperDesign read_droppers(const Field& droppers, const std::vector<double>& spans) {
   droppers.expect_map("the droppers {positions, EA or stiffness, ...}");
-  droppers.check_keys({"positions", "model", "elements", "EI", "EA", "stiffness",
-                       "mass_per_length", "damping", "tension_only", "clamp_mass"});
+  droppers.check_keys({"positions", "model", "elements", "EI", "EA", "stiffness", "mass_per_length",
+                       "damping", "tension_only", "clamp_mass"});
   DropperDesign d;
   d.positions = read_dropper_positions(droppers.child("positions"), spans);
   const Field EA = droppers.child("EA");
@@ -332,8 +333,8 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   for (const double l : d.span_lengths) total_length += l;
   // Each span is within the coordinate bound; their sum must be too (node x coordinates).
   if (total_length > kMaxCoordinate)
-    catenary.fail("the spans add up to " + format_number(total_length) +
-                  " m; at most " + format_number(kMaxCoordinate) +
+    catenary.fail("the spans add up to " + format_number(total_length) + " m; at most " +
+                  format_number(kMaxCoordinate) +
                   " m is accepted (node coordinates are bounded, docs/scene.md \"Physical "
                   "bounds\"): fewer or shorter spans");
   if (total_length / d.element_length > max_catenary_elements)

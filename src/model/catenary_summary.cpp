@@ -194,10 +194,11 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
       : any_tension_only ? "partly tension-only"
                          : "carrying compression too (tension_only: false)";
   const std::string kind =
-      cables ? cat(plural(static_cast<long long>(c.droppers.size()), "cable"), " of ",
-                   plural(static_cast<long long>(c.droppers.front().elements.size()), "element"),
-                   " (ANCF, EI ", range_text(EI, "N*m^2"), ", distributed mass, hinged to the wires)")
-             : cat(plural(static_cast<long long>(c.droppers.size()), "bar"), " (axial force only)");
+      cables
+          ? cat(plural(static_cast<long long>(c.droppers.size()), "cable"), " of ",
+                plural(static_cast<long long>(c.droppers.front().elements.size()), "element"),
+                " (ANCF, EI ", range_text(EI, "N*m^2"), ", distributed mass, hinged to the wires)")
+          : cat(plural(static_cast<long long>(c.droppers.size()), "bar"), " (axial force only)");
   t.row("droppers",
         cat(kind, ", ", behaviour, ", ",
             stiffness.empty() ? cat("EA ", range_text(EA, "N"))

@@ -110,12 +110,14 @@ void read_constraints(const Field& constraints, SceneBuild& build) {
         const Field frequency = entry.child("frequency");
         if (c.amplitude.isZero()) {
           if (frequency.present())
-            frequency.fail("frequency is given but amplitude is zero or missing; give "
-                           "amplitude [m] too, or drop frequency");
+            frequency.fail(
+                "frequency is given but amplitude is zero or missing; give "
+                "amplitude [m] too, or drop frequency");
         } else {
           if (!frequency.present())
-            frequency.fail("missing required key (amplitude is nonzero); expected the "
-                           "frequency of the sine motion, a finite number > 0 [Hz]");
+            frequency.fail(
+                "missing required key (amplitude is nonzero); expected the "
+                "frequency of the sine motion, a finite number > 0 [Hz]");
           c.frequency = frequency.real(RealRange::positive("Hz"));
         }
       }

@@ -22,8 +22,8 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   if (!in.present()) return;
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
-                 "error_estimate", "newton", "newton_rtol", "newton_atol",
-                 "max_newton_iterations", "linear_algebra", "local_newton"});
+                 "error_estimate", "newton", "newton_rtol", "newton_atol", "max_newton_iterations",
+                 "linear_algebra", "local_newton"});
   const Field type = in.child("type");
   o.type = type.text_or(o.type);
   const IntegratorType* facts = find_integrator_type(o.type);
@@ -52,8 +52,9 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   if (facts->takes_alpha)
     o.alpha = alpha.real_or(o.alpha, RealRange::between(-1.0 / 3.0, true, 0.0, true, ""));
   else
-    fail_if_present(alpha, "'alpha' applies to integrator type hht only (and petsc, for "
-                           "-ts_type alpha2)");
+    fail_if_present(alpha,
+                    "'alpha' applies to integrator type hht only (and petsc, for "
+                    "-ts_type alpha2)");
   o.dt = in.child("dt").real_or(o.dt, RealRange::positive("s"));
   o.adaptive = in.child("adaptive").boolean_or(o.adaptive);
   const char* only_adaptive = " only applies with adaptive: true";
@@ -66,8 +67,8 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   o.dt_max = dt_max.real_or(o.dt_max, RealRange::non_negative("s"));
   if (o.adaptive && o.dt_min >= o.dt)
     (dt_min.present() ? dt_min : in.child("dt"))
-        .fail("dt_min = " + format_number(o.dt_min) + " s must be below the first step dt = " +
-              format_number(o.dt) + " s");
+        .fail("dt_min = " + format_number(o.dt_min) +
+              " s must be below the first step dt = " + format_number(o.dt) + " s");
   if (o.dt_max > 0.0 && o.dt_max < o.dt)
     dt_max.fail("dt_max = " + format_number(o.dt_max) + " s is below the first step dt = " +
                 format_number(o.dt) + " s; expected 0 (no limit) or >= dt");
@@ -106,8 +107,9 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   o.newton_rtol = in.child("newton_rtol")
                       .real_or(o.newton_rtol, RealRange::between(0.0, false, 1e-3, true, ""));
   o.newton_atol = in.child("newton_atol").real_or(o.newton_atol, RealRange::positive("N"));
-  o.max_newton_iterations = static_cast<int>(
-      in.child("max_newton_iterations").integer_or(o.max_newton_iterations, IntRange::between(1, 1000)));
+  o.max_newton_iterations =
+      static_cast<int>(in.child("max_newton_iterations")
+                           .integer_or(o.max_newton_iterations, IntRange::between(1, 1000)));
   // The combinations the solvers refuse (constraints, the embedded estimate, the decoupled
   // solve), here where the message can name the line.
   if (const std::optional<IntegratorRefusal> refusal = refuse_integrator(o, constraints)) {
@@ -151,7 +153,8 @@ void read_displacement(const Field& item, const Model& model,
   const Field shape = item.child("shape");
   const std::string shape_name = shape.text_or("sine");
   if (shape_name != "sine") shape.fail("unknown shape '" + shape_name + "'; accepted: sine");
-  const int n = static_cast<int>(item.child("half_waves").integer_or(1, IntRange::between(1, 1000)));
+  const int n =
+      static_cast<int>(item.child("half_waves").integer_or(1, IntRange::between(1, 1000)));
   const Vec3 amplitude = item.child("amplitude").vec3(RealRange::any("m"));
   const Vec3 a = model.nodes[nodes.front()].position, b = model.nodes[nodes.back()].position;
   const double length = (b - a).norm();
@@ -173,7 +176,8 @@ void read_initial(const Field& initial, Model& model) {
   const Field from = initial.child("from");
   const std::string source = from.text_or("static");
   if (source != "static" && source != "reference")
-    from.fail("unknown initial state '" + source + "'; accepted: static (the equilibrium under "
+    from.fail("unknown initial state '" + source +
+              "'; accepted: static (the equilibrium under "
               "the scene's loads), reference (the mesh, unstressed)");
   ic.from_static = source == "static";
   ic.velocity = initial.child("velocity").vec3_or(ic.velocity, RealRange::any("m/s"));
@@ -189,12 +193,12 @@ void read_initial(const Field& initial, Model& model) {
 void check_step_within_duration(const Field& dt, const Field& duration, const DynamicOptions& o) {
   const IntegratorOptions& in = o.integrator;
   if (in.adaptive || !(in.dt > o.duration)) return;
-  const std::string what = "integrator.dt = " + format_number(in.dt) + " s" +
-                           (dt.present() ? "" : " (the default)") +
-                           " is longer than analysis.duration = " + format_number(o.duration) +
-                           " s: a fixed step must not exceed the duration; expected dt <= " +
-                           format_number(o.duration) + " s (or adaptive: true, where dt is "
-                           "only the first step)";
+  const std::string what =
+      "integrator.dt = " + format_number(in.dt) + " s" + (dt.present() ? "" : " (the default)") +
+      " is longer than analysis.duration = " + format_number(o.duration) +
+      " s: a fixed step must not exceed the duration; expected dt <= " + format_number(o.duration) +
+      " s (or adaptive: true, where dt is "
+      "only the first step)";
   (dt.present() ? dt : duration).fail(what);
 }
 
@@ -207,7 +211,8 @@ void read_dynamics(const Field& scene, Model& model) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);
     fail_if_present(analysis.child("initial"), "'initial'" + why);
-    fail_if_present(scene.child("integrator"), "integrator settings apply to analysis.type: dynamic");
+    fail_if_present(scene.child("integrator"),
+                    "integrator settings apply to analysis.type: dynamic");
     for (const char* key : {"interval", "flush_wall_seconds", "checkpoint_wall_seconds"})
       fail_if_present(output.child(key), std::string("'") + key + "'" + why);
     return;

@@ -105,9 +105,9 @@ double resolve_prestrain(const PrestressSpec& spec, double EA, double length) {
                          ", which is <= -1 (no positive unstretched length); expected "
                          "tension > -EA = " +
                          format_number(-EA) + " N");
-      return bounded_prestrain(spec, prestrain,
-                               "tension " + format_number(spec.value) + " N with EA " +
-                                   format_number(EA) + " N");
+      return bounded_prestrain(
+          spec, prestrain,
+          "tension " + format_number(spec.value) + " N with EA " + format_number(EA) + " N");
     }
   }
   return 0.0;

@@ -16,8 +16,7 @@ using E = EmbeddedEstimate;
 constexpr std::string_view kExplicitFirstStage =
     "its explicit first stage leaves the Lagrange multipliers undetermined (singular stage "
     "matrix)";
-constexpr std::string_view kRadauFilter =
-    "its filter would need RADAU5's index-3 treatment";
+constexpr std::string_view kRadauFilter = "its filter would need RADAU5's index-3 treatment";
 
 constexpr std::array<IntegratorType, 7> kTypes{{
     {.name = "hht",
@@ -27,7 +26,11 @@ constexpr std::array<IntegratorType, 7> kTypes{{
      .takes_alpha = true,
      .takes_newton = true,
      .takes_local_newton = true},
-    {.name = "gauss", .alias = "", .method = M::irk, .min_stages = 1, .max_stages = 5,
+    {.name = "gauss",
+     .alias = "",
+     .method = M::irk,
+     .min_stages = 1,
+     .max_stages = 5,
      .takes_newton = true},
     {.name = "radau_iia",
      .alias = "radau",
@@ -45,7 +48,11 @@ constexpr std::array<IntegratorType, 7> kTypes{{
      .constraint_refusal = kExplicitFirstStage,
      .decoupled_refusal = "A is singular (its explicit first stage)",
      .takes_newton = true},
-    {.name = "lobatto_iiic", .alias = "", .method = M::irk, .min_stages = 2, .max_stages = 5,
+    {.name = "lobatto_iiic",
+     .alias = "",
+     .method = M::irk,
+     .min_stages = 2,
+     .max_stages = 5,
      .takes_newton = true},
     {.name = "sdirk",
      .alias = "",
@@ -163,8 +170,7 @@ std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& opti
           "error_estimate", name + stages + " has no embedded error estimate with constraints (" +
                                 std::string(type->embedded_constraint_refusal) +
                                 "); use step_doubling or auto"};
-    return IntegratorRefusal{"error_estimate", name + stages +
-                                                   " has no embedded error estimate (" +
+    return IntegratorRefusal{"error_estimate", name + stages + " has no embedded error estimate (" +
                                                    embedded_owners() +
                                                    " have); use step_doubling or auto"};
   }

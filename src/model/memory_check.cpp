@@ -50,9 +50,9 @@ void check_lines_fit(const Field& lines, const SectionTable& sections, const Sce
   const double need = estimate.per_host_bytes(budget.ranks, budget.ranks_on_host);
   if (need <= budget.host_bytes) return;
   largest->fail("the lines make " + std::to_string(size.elements) +
-               " elements, and a run of them alone needs an estimated " +
-               estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
-               budget.describe() + advice(budget));
+                " elements, and a run of them alone needs an estimated " +
+                estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+                budget.describe() + advice(budget));
 }
 
 void check_model_fits(const Field& scene, const SceneBuild& build, const MemoryBudget& budget) {
@@ -84,9 +84,9 @@ void check_model_fits(const Field& scene, const SceneBuild& build, const MemoryB
   else
     where.emplace(*origin);
   where->fail("the scene makes " + std::to_string(build.model.elements.size()) + " elements (" +
-             std::to_string(most) + " from here), and its run needs an estimated " +
-             estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
-             budget.describe() + advice(budget));
+              std::to_string(most) + " from here), and its run needs an estimated " +
+              estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+              budget.describe() + advice(budget));
 }
 
 }  // namespace catena::model::detail

@@ -51,7 +51,8 @@ ProblemSize problem_size(const Model& model) {
   for (const ElementDesc& e : model.elements)
     for (std::size_t i = 0; i < e.nodes.size(); ++i)
       for (std::size_t j = 0; j < e.nodes.size(); ++j)
-        if (i != j) size.matrix_nonzeros += static_cast<std::int64_t>(dofs[e.nodes[i]]) * dofs[e.nodes[j]];
+        if (i != j)
+          size.matrix_nonzeros += static_cast<std::int64_t>(dofs[e.nodes[i]]) * dofs[e.nodes[j]];
   // Multipliers: three rows and columns per constraint, each against a node block.
   const std::int64_t multipliers =
       kMultipliersPerConstraint * static_cast<std::int64_t>(model.constraints.size());
@@ -102,11 +103,11 @@ double MemoryEstimate::per_host_bytes(int ranks, int ranks_on_host) const {
 std::string MemoryEstimate::describe(int ranks, int ranks_on_host) const {
   const double share = static_cast<double>(ranks_on_host) / std::max(ranks, 1);
   return format_gib(per_host_bytes(ranks, ranks_on_host)) + " (model " + format_gib(model_bytes) +
-         " on each of " + std::to_string(ranks_on_host) + (ranks_on_host == 1 ? " rank" : " ranks") +
-         ", matrices and vectors " + format_gib(solver_bytes * share) + ", LU factors " +
-         format_gib(factor_bytes * share) + ", output " + format_gib(output_bytes * share) +
-         "; " + std::to_string(size.dofs) + " DOFs, " + std::to_string(size.matrix_nonzeros) +
-         " matrix non-zeros)";
+         " on each of " + std::to_string(ranks_on_host) +
+         (ranks_on_host == 1 ? " rank" : " ranks") + ", matrices and vectors " +
+         format_gib(solver_bytes * share) + ", LU factors " + format_gib(factor_bytes * share) +
+         ", output " + format_gib(output_bytes * share) + "; " + std::to_string(size.dofs) +
+         " DOFs, " + std::to_string(size.matrix_nonzeros) + " matrix non-zeros)";
 }
 
 double physical_memory_bytes() {
@@ -123,9 +124,10 @@ std::string format_gib(double bytes) {
 }
 
 std::string MemoryBudget::describe() const {
-  const std::string ranks_text = std::to_string(ranks_on_host) +
-                                 (ranks_on_host == 1 ? " rank" : " ranks") + " on it";
-  if (from_option) return "the --memory-limit of " + format_gib(host_bytes) + " per host (" + ranks_text + ")";
+  const std::string ranks_text =
+      std::to_string(ranks_on_host) + (ranks_on_host == 1 ? " rank" : " ranks") + " on it";
+  if (from_option)
+    return "the --memory-limit of " + format_gib(host_bytes) + " per host (" + ranks_text + ")";
   return "the " + format_gib(host_bytes) + " of physical memory of this host (" + ranks_text + ")";
 }
 

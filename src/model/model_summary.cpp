@@ -143,8 +143,8 @@ std::string describe(const Model& model, int n_ranks_running) {
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
     t.row("constraints", std::to_string(model.constraints.size()) + " (coincident " +
                              std::to_string(by_type[0]) + ", pinned " + std::to_string(by_type[1]) +
-                             ", prescribed " + std::to_string(by_type[2]) + "): " +
-                             std::to_string(3 * model.constraints.size()) +
+                             ", prescribed " + std::to_string(by_type[2]) +
+                             "): " + std::to_string(3 * model.constraints.size()) +
                              " Lagrange multipliers");
   }
   t.row("nodal loads",
@@ -158,8 +158,8 @@ std::string describe(const Model& model, int n_ranks_running) {
           "dropper lengths, steady-arm preloads and wire prestrains are set by 'catena run' "
           "before the analysis (docs/catenary.md)");
     if (model.evaluation_end > model.evaluation_start)
-      t.row("evaluation", "contact wire from " + format_number(model.evaluation_start) +
-                              " m to " + format_number(model.evaluation_end) + " m");
+      t.row("evaluation", "contact wire from " + format_number(model.evaluation_start) + " m to " +
+                              format_number(model.evaluation_end) + " m");
   }
   detail::describe_moving(model, t, notes);
   if (model.analysis == AnalysisType::dynamic && !detail::structure_is_damped(model))
@@ -201,13 +201,12 @@ std::string describe(const Model& model, int n_ranks_running) {
       text += ')';
     }
     t.row("dynamics", text);
-    t.row("initial state", model.dynamic_options.initial.from_static
-                               ? "static equilibrium (below)"
-                               : "reference configuration");
+    t.row("initial state", model.dynamic_options.initial.from_static ? "static equilibrium (below)"
+                                                                     : "reference configuration");
   }
   t.row("analysis", std::string(model.analysis == AnalysisType::dynamic ? "initial " : "") +
-                        "static; load steps initial " + format_number(s.initial_load_step) + ", min " +
-                        format_number(s.min_load_step) + ", at most " +
+                        "static; load steps initial " + format_number(s.initial_load_step) +
+                        ", min " + format_number(s.min_load_step) + ", at most " +
                         std::to_string(s.max_load_steps) + "; Newton rtol " +
                         format_number(s.rtol) + ", atol " + format_number(s.atol) + " N, at most " +
                         std::to_string(s.max_newton_iterations) + " iterations");

@@ -41,9 +41,11 @@ std::vector<Stage> read_stages(const Field& list) {
     stages.push_back(s);
   }
   if (stages.back().stiffness <= 0.0)
-    items.back().child("stiffness").fail(
-        "the last stage is joined to the ground by this stiffness; it must be > 0, else "
-        "the pantograph is a free body");
+    items.back()
+        .child("stiffness")
+        .fail(
+            "the last stage is joined to the ground by this stiffness; it must be > 0, else "
+            "the pantograph is a free body");
   return stages;
 }
 
@@ -89,8 +91,8 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
   const Vec3 up = g > 0.0 ? Vec3(-m.gravity / g) : Vec3(Vec3::UnitZ());
   if (std::abs(up.z()) < 1.0 - 1e-12)
     pantographs.fail("pantographs move vertically: gravity must point along -z (it is " +
-                     std::to_string(m.gravity.x()) + ", " + std::to_string(m.gravity.y()) +
-                     ", " + std::to_string(m.gravity.z()) + ")");
+                     std::to_string(m.gravity.x()) + ", " + std::to_string(m.gravity.y()) + ", " +
+                     std::to_string(m.gravity.z()) + ")");
   std::int64_t next_node_id = 0, next_element_id = 0;
   for (const Node& n : m.nodes) next_node_id = std::max(next_node_id, n.id + 1);
   for (const ElementDesc& e : m.elements) next_element_id = std::max(next_element_id, e.id + 1);
@@ -105,8 +107,9 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       entry.child("name").fail("pantograph name '" + c.name + "' is used twice");
     const Field path = entry.child("path"), line = entry.child("line");
     if (path.present() == line.present())
-      entry.fail("give exactly one of path (a path the catenary builder made, e.g. "
-                 "contact_wire) and line (a line name or a list of them in travel order)");
+      entry.fail(
+          "give exactly one of path (a path the catenary builder made, e.g. "
+          "contact_wire) and line (a line name or a list of them in travel order)");
     if (path.present()) {
       c.path = find_path(path, m);
     } else {
@@ -142,15 +145,16 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       contact_stiffness = kEn50318ContactStiffness;
     } else {
       if (!stages_field.present())
-        entry.fail("missing `stages` (head first: [{mass, stiffness, damping}, ...]) or "
-                   "`model: en50318`");
+        entry.fail(
+            "missing `stages` (head first: [{mass, stiffness, damping}, ...]) or "
+            "`model: en50318`");
       stages = read_stages(stages_field);
     }
     if (contact.present()) {
       contact.expect_map("contact settings {stiffness, damping}");
       contact.check_keys({"stiffness", "damping"});
-      contact_stiffness = contact.child("stiffness").real_or(contact_stiffness,
-                                                             RealRange::positive("N/m"));
+      contact_stiffness =
+          contact.child("stiffness").real_or(contact_stiffness, RealRange::positive("N/m"));
       c.damping = contact.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
     }
     if (contact_stiffness <= 0.0)

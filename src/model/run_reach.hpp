@@ -10,7 +10,7 @@
 namespace catena::model::detail {
 
 struct RunReach {
-  double farthest = 0.0;  // m along the contact wire, from its start (the first support)
+  double farthest = 0.0;   // m along the contact wire, from its start (the first support)
   std::string pantograph;  // the one that gets there
   double duration = 0.0;   // s, analysis.duration
 };

@@ -43,8 +43,8 @@ std::optional<std::string> first_difference(const YAML::Node& a, const YAML::Nod
     for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
       if (auto d = first_difference(a[i], b[i], path + "[" + std::to_string(i) + "]")) return d;
     if (a.size() != b.size())
-      return path + ": " + std::to_string(a.size()) + " entries here, " +
-             std::to_string(b.size()) + " in the checkpoint";
+      return path + ": " + std::to_string(a.size()) + " entries here, " + std::to_string(b.size()) +
+             " in the checkpoint";
     return std::nullopt;
   }
   if (a.IsMap()) {

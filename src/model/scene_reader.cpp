@@ -17,16 +17,16 @@
 #include "catena/model/node_kinds.hpp"
 #include "catenary_reader.hpp"
 #include "constraint_reader.hpp"
+#include "dynamics_reader.hpp"
 #include "element_reader.hpp"
 #include "free_body_check.hpp"
-#include "dynamics_reader.hpp"
 #include "line_generator.hpp"
 #include "memory_check.hpp"
 #include "moving_load_reader.hpp"
 #include "nodal_frames.hpp"
-#include "pantograph_reader.hpp"
 #include "node_reader.hpp"
 #include "overrides.hpp"
+#include "pantograph_reader.hpp"
 #include "scene_build.hpp"
 #include "section_reader.hpp"
 
@@ -37,10 +37,9 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",        "gravity",      "sections",         "nodes",      "lines",
-      "elements",    "supports",     "elastic_supports", "loads",      "masses",
-      "constraints", "moving_loads", "analysis",         "integrator", "output",
-      "catenary",    "pantographs"};
+      "name",     "gravity",          "sections", "nodes",    "lines",       "elements",
+      "supports", "elastic_supports", "loads",    "masses",   "constraints", "moving_loads",
+      "analysis", "integrator",       "output",   "catenary", "pantographs"};
   return keys;
 }
 

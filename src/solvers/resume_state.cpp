@@ -7,8 +7,7 @@ namespace catena::solvers {
 namespace {
 
 template <class Map>
-const typename Map::mapped_type& entry(const Map& map, const std::string& name,
-                                       const char* kind) {
+const typename Map::mapped_type& entry(const Map& map, const std::string& name, const char* kind) {
   const auto it = map.find(name);
   if (it == map.end())
     throw Error(std::string("the checkpoint's solver state has no ") + kind + " '" + name +

@@ -139,9 +139,9 @@ class WriteFailureTest : public ::testing::Test {
   std::unique_ptr<catena::io::TransientWriter> transient_writer(const fs::path& path) const {
     catena::io::RunInfo info;
     info.n_ranks = comm_size();
-    return std::make_unique<catena::io::TransientWriter>(
-        MPI_COMM_WORLD, path.string(), model_, info, my_rows(int(model_.nodes.size())),
-        my_rows(int(model_.elements.size())));
+    return std::make_unique<catena::io::TransientWriter>(MPI_COMM_WORLD, path.string(), model_,
+                                                         info, my_rows(int(model_.nodes.size())),
+                                                         my_rows(int(model_.elements.size())));
   }
 
   // Collective. One sample of made-up values.
@@ -181,9 +181,9 @@ TEST_F(WriteFailureTest, StepFlushFailingOnOneRankFailsOnEveryRank) {
   append_sample(*writer, 0.0);
   for (int k = 1; k <= 3; ++k) writer->append_step({0.01 * k, 0.01, 2, -1.0, 0, {}});
   inject(1, "/steps/dt");
-  expect_same_error_on_every_rank(output_error_of([&] { writer->flush(); }),
-                                  {"H5Dwrite failed for '" + path.string() + "' at /steps/dt",
-                                   "No space left on device"});
+  expect_same_error_on_every_rank(
+      output_error_of([&] { writer->flush(); }),
+      {"H5Dwrite failed for '" + path.string() + "' at /steps/dt", "No space left on device"});
   EXPECT_EQ(output_error_of([&] { writer->close("failed: flush", {}); }), "");
   if (comm_rank() == 0) {
     EXPECT_EQ(root_string_attribute(path, "status"), "failed: flush");
@@ -197,9 +197,9 @@ TEST_F(WriteFailureTest, FailingCloseOnOneRankFailsOnEveryRank) {
   const auto writer = transient_writer(path);
   append_sample(*writer, 0.0);
   inject(2, "");
-  expect_same_error_on_every_rank(output_error_of([&] { writer->close("complete", {}); }),
-                                  {"H5Fclose failed for '" + path.string() + "'",
-                                   "No space left on device"});
+  expect_same_error_on_every_rank(
+      output_error_of([&] { writer->close("complete", {}); }),
+      {"H5Fclose failed for '" + path.string() + "'", "No space left on device"});
   EXPECT_EQ(output_error_of([&] { writer->close("complete", {}); }), "") << "closed once only";
 }
 

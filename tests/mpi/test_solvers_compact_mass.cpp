@@ -57,8 +57,8 @@ TEST(CompactMass, SameProductFewerEntries) {
   PetscInt lo = 0, hi = 0;
   CATENA_PETSC(VecGetOwnershipRange(x.get(), &lo, &hi));
   for (PetscInt i = lo; i < hi; ++i)
-    CATENA_PETSC(VecSetValue(x.get(), i, std::sin(0.7 * static_cast<double>(i)) + 0.3,
-                             INSERT_VALUES));
+    CATENA_PETSC(
+        VecSetValue(x.get(), i, std::sin(0.7 * static_cast<double>(i)) + 0.3, INSERT_VALUES));
   CATENA_PETSC(VecAssemblyBegin(x.get()));
   CATENA_PETSC(VecAssemblyEnd(x.get()));
   CATENA_PETSC(MatMult(M.get(), x.get(), full.get()));

@@ -12,8 +12,8 @@
 
 #include "catena/assembly/state_view.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
@@ -34,7 +34,9 @@ std::vector<double> history(MPI_Comm comm, const catena::model::Model& m,
   std::vector<double> out;
   for (int step = 0; step < 200; ++step) {
     catena::test::advance_fixed(hht, 2e-4, 1);
-    out.push_back(catena::assembly::StateView(system).contact_states({hht.q(), hht.v(), {}, hht.time()})[0].force);
+    out.push_back(catena::assembly::StateView(system)
+                      .contact_states({hht.q(), hht.v(), {}, hht.time()})[0]
+                      .force);
   }
   for (int node = 0; node < static_cast<int>(m.nodes.size()); ++node)
     out.push_back(catena::test::global_value(comm, hht.q(), system.dof_map().global_dof(node, 2)));
@@ -62,7 +64,8 @@ std::pair<double, double> rank_difference(const catena::model::Model& m,
 // the iterates are the same up to the order of round-off additions.
 TEST(ContactRanks, SameContactForceOnEveryRankCount) {
   catena::test::ensure_petsc();
-  const catena::model::Model m = catena::model::parse_scene(catena::test::pantograph_on_wire_scene(3.0), "contact.yaml");
+  const catena::model::Model m =
+      catena::model::parse_scene(catena::test::pantograph_on_wire_scene(3.0), "contact.yaml");
   solvers::HhtOptions global_only;
   global_only.local_newton = false;
   const auto [worst, scale] = rank_difference(m, global_only);
@@ -73,7 +76,8 @@ TEST(ContactRanks, SameContactForceOnEveryRankCount) {
 // agree to the Newton tolerance instead (measured: 1.6e-8 relative at np 2).
 TEST(ContactRanks, SameContactForceWithLocalNewton) {
   catena::test::ensure_petsc();
-  const catena::model::Model m = catena::model::parse_scene(catena::test::pantograph_on_wire_scene(3.0), "contact.yaml");
+  const catena::model::Model m =
+      catena::model::parse_scene(catena::test::pantograph_on_wire_scene(3.0), "contact.yaml");
   solvers::HhtOptions local;
   local.local_newton_settings.max_window_fraction = 1.0;  // this small model is below the cost cap
   const auto [worst, scale] = rank_difference(m, local);

@@ -19,17 +19,15 @@ namespace solvers = catena::solvers;
 
 namespace {
 
-model::Model pendulum(bool driven_pivot) {
-  return catena::test::cable_pendulum(16, driven_pivot);
-}
+model::Model pendulum(bool driven_pivot) { return catena::test::cable_pendulum(16, driven_pivot); }
 
 struct Final {
   std::vector<double> values;  // positions of every node, then every multiplier
   long iterations = 0, factorizations = 0;
 };
 
-Final final_state(MPI_Comm comm, const model::Model& m, solvers::TableauFamily family,
-                  int stages, solvers::StageLinearAlgebra algebra) {
+Final final_state(MPI_Comm comm, const model::Model& m, solvers::TableauFamily family, int stages,
+                  solvers::StageLinearAlgebra algebra) {
   catena::assembly::SecondOrderSystem system(comm, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
@@ -81,4 +79,6 @@ TEST(IrkDecoupledRanks, RadauPendulum) { expect_same(false, solvers::TableauFami
 TEST(IrkDecoupledRanks, RadauDrivenPendulum) {
   expect_same(true, solvers::TableauFamily::radau_iia, 3);
 }
-TEST(IrkDecoupledRanks, GaussDrivenPendulum) { expect_same(true, solvers::TableauFamily::gauss, 2); }
+TEST(IrkDecoupledRanks, GaussDrivenPendulum) {
+  expect_same(true, solvers::TableauFamily::gauss, 2);
+}

@@ -20,9 +20,9 @@
 #include "catena/assembly/state_view.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
+#include "catena/solvers/newton/local_newton.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
-#include "catena/solvers/newton/local_newton.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
@@ -60,8 +60,8 @@ void add_wave(Vec x, double amplitude, double k, double phase) {
   PetscInt lo = 0, hi = 0;
   CATENA_PETSC(VecGetOwnershipRange(x, &lo, &hi));
   for (PetscInt i = lo; i < hi; ++i)
-    CATENA_PETSC(VecSetValue(x, i, amplitude * std::sin(k * static_cast<double>(i) + phase),
-                             ADD_VALUES));
+    CATENA_PETSC(
+        VecSetValue(x, i, amplitude * std::sin(k * static_cast<double>(i) + phase), ADD_VALUES));
   CATENA_PETSC(VecAssemblyBegin(x));
   CATENA_PETSC(VecAssemblyEnd(x));
 }
@@ -95,10 +95,11 @@ TEST(LocalPatch, EvaluatesWhatTheWholeSystemDoes) {
 
   const assembly::LocalPatch patch = middle_patch(system, 4);
   ASSERT_FALSE(patch.empty());  // 80 elements per rank at most 3 ranks: an interior exists
-  const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get()),
+  const std::vector<double> qa = catena::test::owned_values(q.get()),
+                            va = catena::test::owned_values(v.get()),
                             fa = catena::test::owned_values(f.get());
-  const double scale = *std::max_element(fa.begin(), fa.end(),
-                                         [](double x, double y) { return std::abs(x) < std::abs(y); });
+  const double scale = *std::max_element(
+      fa.begin(), fa.end(), [](double x, double y) { return std::abs(x) < std::abs(y); });
 
   // Force in the unknowns' rows.
   std::vector<double> f_rows(patch.rows.size());
@@ -174,12 +175,14 @@ TEST(LocalPatch, ChangingTheUnknownsChangesTheForceOnlyInTheRows) {
   std::vector<double> before(patch.rows.size()), after(patch.rows.size());
   system.force({q.get(), v.get(), {}}, f0.get());
   {
-    const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get());
+    const std::vector<double> qa = catena::test::owned_values(q.get()),
+                              va = catena::test::owned_values(v.get());
     system.patch_force(patch, qa.data(), va.data(), before.data());
   }
   for (size_t i = 0; i < patch.unknowns.size(); ++i) {
     const PetscInt g = system.dof_map().first_owned() + patch.unknowns[i];
-    CATENA_PETSC(VecSetValue(q.get(), g, 2e-3 * std::sin(1.3 * static_cast<double>(i)), ADD_VALUES));
+    CATENA_PETSC(
+        VecSetValue(q.get(), g, 2e-3 * std::sin(1.3 * static_cast<double>(i)), ADD_VALUES));
     CATENA_PETSC(VecSetValue(v.get(), g, 0.2, ADD_VALUES));
   }
   for (Vec x : {q.get(), v.get()}) {
@@ -188,7 +191,8 @@ TEST(LocalPatch, ChangingTheUnknownsChangesTheForceOnlyInTheRows) {
   }
   system.force({q.get(), v.get(), {}}, f1.get());
   {
-    const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get());
+    const std::vector<double> qa = catena::test::owned_values(q.get()),
+                              va = catena::test::owned_values(v.get());
     system.patch_force(patch, qa.data(), va.data(), after.data());
   }
   std::vector<double> change = catena::test::owned_values(f1.get());
@@ -219,7 +223,8 @@ TEST(LocalPatch, AContactCountsAsAKernel) {
   solvers::StaticSolver(system, m.static_options).solve(q.get());
   add_wave(v.get(), 0.05, 0.21, 1.0);
   const double t = 0.01;
-  ASSERT_GT(catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, t})[0].force, 0.0);  // in contact
+  ASSERT_GT(catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, t})[0].force,
+            0.0);  // in contact
   system.prepare_local_patches();
   system.force({q.get(), v.get(), {}, t}, f.get());
 
@@ -239,7 +244,8 @@ TEST(LocalPatch, AContactCountsAsAKernel) {
       EXPECT_FALSE(std::binary_search(patch.unknowns.begin(), patch.unknowns.end(), l));
     return;
   }
-  const std::vector<double> qa = catena::test::owned_values(q.get()), va = catena::test::owned_values(v.get()),
+  const std::vector<double> qa = catena::test::owned_values(q.get()),
+                            va = catena::test::owned_values(v.get()),
                             fa = catena::test::owned_values(f.get());
   std::vector<double> f_rows(patch.rows.size());
   system.patch_force(patch, qa.data(), va.data(), f_rows.data());
@@ -273,8 +279,12 @@ struct StepResidual {
   catena::VecHandle q_hat, v_hat, f_hat;
 
   StepResidual(assembly::SecondOrderSystem& s, const solvers::LocalNewton::Coefficients& coef)
-      : system(s), c(coef), M(s.create_matrix()), q_hat(s.create_vector()),
-        v_hat(s.create_vector()), f_hat(s.create_vector()) {
+      : system(s),
+        c(coef),
+        M(s.create_matrix()),
+        q_hat(s.create_vector()),
+        v_hat(s.create_vector()),
+        f_hat(s.create_vector()) {
     system.reference_state(q_hat.get());
     add_wave(q_hat.get(), 1e-3, 0.37, 0.0);
     add_wave(v_hat.get(), 0.1, 0.21, 1.0);
@@ -319,7 +329,8 @@ TEST(LocalNewton, FinishesALocalDisturbanceExactly) {
   // default cost cap (0.03·n unknowns) refuses them, and changes nothing.
   solvers::LocalNewtonSettings settings;
   settings.layers = 16;
-  const std::vector<double> a_before = catena::test::owned_values(a.get()), r_before = catena::test::owned_values(r.get());
+  const std::vector<double> a_before = catena::test::owned_values(a.get()),
+                            r_before = catena::test::owned_values(r.get());
   EXPECT_FALSE(solvers::LocalNewton(system, settings)
                    .correct(a.get(), r.get(), q.get(), v.get(), f.get(), R.c, atol, &norm));
   EXPECT_EQ(catena::test::owned_values(a.get()), a_before);
@@ -340,9 +351,10 @@ TEST(LocalNewton, FinishesALocalDisturbanceExactly) {
   EXPECT_LE(fresh, atol);
   EXPECT_NEAR(fresh, norm, 1e-5);
   const double f_scale = max_abs(f2.get());
-  for (auto [mine, theirs, tolerance] :
-       {std::tuple{r.get(), r2.get(), 1e-5}, {q.get(), q2.get(), 1e-12},
-        {v.get(), v2.get(), 1e-13}, {f.get(), f2.get(), 1e-9 * f_scale}}) {
+  for (auto [mine, theirs, tolerance] : {std::tuple{r.get(), r2.get(), 1e-5},
+                                         {q.get(), q2.get(), 1e-12},
+                                         {v.get(), v2.get(), 1e-13},
+                                         {f.get(), f2.get(), 1e-9 * f_scale}}) {
     CATENA_PETSC(VecAXPY(theirs, -1.0, mine));
     EXPECT_LE(max_abs(theirs), tolerance);
   }
@@ -361,7 +373,8 @@ TEST(LocalNewton, LeavesASpreadResidualUntouched) {
   add_wave(a.get(), 1.0, 0.9, 0.3);  // everywhere
   R.evaluate(a.get(), q.get(), v.get(), f.get(), r.get());
   std::vector<std::vector<double>> before;
-  for (Vec x : {a.get(), r.get(), q.get(), v.get(), f.get()}) before.push_back(catena::test::owned_values(x));
+  for (Vec x : {a.get(), r.get(), q.get(), v.get(), f.get()})
+    before.push_back(catena::test::owned_values(x));
 
   solvers::LocalNewtonSettings uncapped;  // so that the refusal is the spread's, not the cap's
   uncapped.max_window_fraction = 1.0;

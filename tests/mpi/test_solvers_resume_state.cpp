@@ -13,9 +13,9 @@
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/assembly/state_view.hpp"
 #include "catena/model/scene_reader.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
-#include "catena/solvers/statics/static_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
@@ -103,11 +103,13 @@ TEST(ResumeState, HhtWithContactAndLocalNewtonContinuesBitForBit) {
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
   solvers::StaticSolver(system, m.static_options).solve(q.get());
-  ASSERT_GT(catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, 0.0})[0].force, 0.0);
+  ASSERT_GT(
+      catena::assembly::StateView(system).contact_states({q.get(), v.get(), {}, 0.0})[0].force,
+      0.0);
   const solvers::HhtOptions options;  // local Newton on
   expect_exact_continuation(
-      [&] { return std::make_unique<solvers::HhtIntegrator>(system, options); }, q.get(),
-      v.get(), 2e-4, 60, 60);
+      [&] { return std::make_unique<solvers::HhtIntegrator>(system, options); }, q.get(), v.get(),
+      2e-4, 60, 60);
 }
 
 TEST(ResumeState, RadauContinuesBitForBit) {
@@ -122,6 +124,6 @@ TEST(ResumeState, RadauContinuesBitForBit) {
   options.family = solvers::TableauFamily::radau_iia;
   options.stages = 3;
   expect_exact_continuation(
-      [&] { return std::make_unique<solvers::IrkIntegrator>(system, options); }, q.get(),
-      v.get(), 0.02, 10, 10);
+      [&] { return std::make_unique<solvers::IrkIntegrator>(system, options); }, q.get(), v.get(),
+      0.02, 10, 10);
 }

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "catena/model/scene_reader.hpp"
 #include "catena/catenary/shape_finding.hpp"
+#include "catena/model/scene_reader.hpp"
 #include "petsc_test_session.hpp"
 #include "static_solution.hpp"
 
@@ -315,8 +315,8 @@ TEST(ShapeFinding, CableDroppersMatchBarDroppersOfTheSameMass) {
     // contact-wire node's share, i.e. the bar force plus half the weight minus a sixth.
     const double weight = 0.089 * l0 * 9.81;
     const double cable_pull = cables.statics.axial_force[c.droppers[i].element] - weight / 6.0;
-    const double bar_pull = bars.statics.axial_force[bars.model.catenary->droppers[i].element] -
-                            weight / 2.0;
+    const double bar_pull =
+        bars.statics.axial_force[bars.model.catenary->droppers[i].element] - weight / 2.0;
     worst_force = std::max(worst_force, std::abs(cable_pull - bar_pull));
     EXPECT_NEAR(cable_pull, bar_pull, 0.05) << "dropper " << i;
   }

@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "catena/model/scene_reader.hpp"
 #include "catena/catenary/shape_finding.hpp"
 #include "catena/catenary/static_elasticity.hpp"
+#include "catena/model/scene_reader.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 #include "static_solution.hpp"
@@ -77,7 +77,7 @@ double tensioned_beam_deflection(double F, double T, double EI, double L, double
 }
 
 catenary::ElasticityReport wire_elasticity(const Wire& wire, const std::vector<double>& positions,
-                                          double F) {
+                                           double F) {
   test::ensure_petsc();
   const model::Model m = wire.model();
   catenary::ElasticityProbe probe;
@@ -176,7 +176,7 @@ int contact_node_at(const model::Model& m, double x) {
 }
 
 catenary::ElasticityReport catenary_elasticity(const std::vector<double>& positions, double F,
-                                              const model::Model& m = shaped_catenary()) {
+                                               const model::Model& m = shaped_catenary()) {
   catenary::ElasticityProbe probe;
   probe.path = m.catenary->contact_wire.elements;
   probe.positions = positions;

@@ -24,8 +24,9 @@ constexpr double kEnd = 0.25;  // s: the rope has swung through ~40° and is whi
 catena::model::Model pendulum() {
   catena::model::Model m;
   m.gravity = Vec3(0, 0, -9.81);
-  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {1.2, 0, 0}, 8,
-                                            catena::model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}, false, false});
+  const auto nodes = catena::test::add_line(
+      m, {0, 0, 0}, {1.2, 0, 0}, 8,
+      catena::model::CableProps{1260.0, 8.505e-3, 9.972, 0.0, 0.0, {}, false, false});
   catena::test::set_reference_frames(m);
   catena::test::pin(m, nodes.front());
   return m;
@@ -36,8 +37,10 @@ std::array<double, 2> tip(solvers::TimeIntegrator& integrator,
                           const catena::assembly::SecondOrderSystem& system, int n) {
   catena::test::advance_fixed(integrator, kEnd / n, n);
   const int last = static_cast<int>(system.model().nodes.size()) - 1;
-  return {catena::test::global_value(system.comm(), integrator.q(), system.dof_map().global_dof(last, 0)),
-          catena::test::global_value(system.comm(), integrator.q(), system.dof_map().global_dof(last, 2))};
+  return {catena::test::global_value(system.comm(), integrator.q(),
+                                     system.dof_map().global_dof(last, 0)),
+          catena::test::global_value(system.comm(), integrator.q(),
+                                     system.dof_map().global_dof(last, 2))};
 }
 
 std::array<double, 2> irk_tip(solvers::TableauFamily family, int stages, int n) {

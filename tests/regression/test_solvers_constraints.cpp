@@ -17,9 +17,9 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/state_view.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
-#include "catena/solvers/statics/static_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"
@@ -46,8 +46,8 @@ model::Model pendulum(Pivot pivot, double amplitude = 0.05, double frequency = 2
   } else {
     model::Constraint c;
     c.node_a = nodes.front();
-    c.type = pivot == Pivot::pinned ? model::ConstraintType::pinned
-                                    : model::ConstraintType::prescribed;
+    c.type =
+        pivot == Pivot::pinned ? model::ConstraintType::pinned : model::ConstraintType::prescribed;
     if (pivot == Pivot::driven) {
       // u(t) = A (sin ωt − ωt): starts with zero velocity and acceleration, consistent
       // with the pendulum at rest (an inconsistent start would be an impulse on λ).
@@ -141,8 +141,8 @@ model::Model rope_with_dropper(bool clamp_by_constraint) {
     c.node_b = mid;
     m.constraints.push_back(c);
   }
-  m.nodes.push_back({static_cast<std::int64_t>(m.nodes.size() + 1),
-                     m.nodes[mid].position - Vec3(0, 0, 0.3)});
+  m.nodes.push_back(
+      {static_cast<std::int64_t>(m.nodes.size() + 1), m.nodes[mid].position - Vec3(0, 0, 0.3)});
   const int bottom = static_cast<int>(m.nodes.size()) - 1;
   model::ElementDesc bar;
   bar.id = 100;
@@ -168,11 +168,10 @@ std::array<double, 2> node_position(const model::Model& m, const Method& method,
 }
 
 const std::vector<Method>& constrained_methods() {
-  static const std::vector<Method> methods{{"hht", 0},          {"gauss", 1},
-                                           {"gauss", 2},        {"radau_iia", 1},
-                                           {"radau_iia", 2},    {"radau_iia", 3},
-                                           {"lobatto_iiic", 2}, {"lobatto_iiic", 3},
-                                           {"sdirk", 3}};
+  static const std::vector<Method> methods{
+      {"hht", 0},          {"gauss", 1},        {"gauss", 2},
+      {"radau_iia", 1},    {"radau_iia", 2},    {"radau_iia", 3},
+      {"lobatto_iiic", 2}, {"lobatto_iiic", 3}, {"sdirk", 3}};
   return methods;
 }
 
@@ -296,7 +295,8 @@ TEST(ConstraintStatics, MultiplierEqualsTheEliminatedSupportReaction) {
       tip[static_cast<size_t>(k)] =
           catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(mid, k));
     if (m == &a) {
-      const auto r = catena::assembly::StateView(system).reactions({q.get(), nullptr, {1.0, 1.0, 1.0}});
+      const auto r =
+          catena::assembly::StateView(system).reactions({q.get(), nullptr, {1.0, 1.0, 1.0}});
       double local[3] = {0, 0, 0};
       for (size_t i = 0; i < r.nodes.size(); ++i)
         if (r.nodes[i] == 0)
@@ -328,11 +328,11 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
   const double t_end = 0.25;
   const Result ref = run(m, {"radau_iia", 5}, t_end, 2048, true);
   for (const Method& method : constrained_methods()) {
-    const int p = method.type == "hht"
-                      ? 2
-                      : solvers::make_tableau(solvers::parse_tableau_family(method.type),
-                                              method.stages)
-                            .order;
+    const int p =
+        method.type == "hht"
+            ? 2
+            : solvers::make_tableau(solvers::parse_tableau_family(method.type), method.stages)
+                  .order;
     double eq[2], el[2];
     int k = 0;
     for (int n : {256, 512}) {
@@ -342,9 +342,10 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
       ++k;
     }
     const double pq = std::log2(eq[0] / eq[1]), pl = std::log2(el[0] / el[1]);
-    std::printf("%-16s positions %.2e -> %.2e (order %.2f), pivot force %.2e -> %.2e N "
-                "(order %.2f)\n",
-                label(method).c_str(), eq[0], eq[1], pq, el[0], el[1], pl);
+    std::printf(
+        "%-16s positions %.2e -> %.2e (order %.2f), pivot force %.2e -> %.2e N "
+        "(order %.2f)\n",
+        label(method).c_str(), eq[0], eq[1], pq, el[0], el[1], pl);
     const bool implicit_euler = method.type == "radau_iia" && method.stages == 1;
     if (implicit_euler) {
       // Order 1 in q; on this problem its damping leaves it preasymptotic (≈ 2.3).

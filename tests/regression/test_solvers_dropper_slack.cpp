@@ -50,11 +50,11 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/assembly/state_view.hpp"
+#include "catena/catenary/shape_finding.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/time/integrator_factory.hpp"
-#include "catena/catenary/shape_finding.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "petsc_test_session.hpp"
 
@@ -128,8 +128,8 @@ class SlackObserver : public solvers::TransientObserver {
     const std::size_t n = element_.size();
     std::vector<int> elements;
     std::vector<elements::SectionResult> results;
-    catena::assembly::StateView(system_).section_results({integrator_.q(), integrator_.v(), {}, integrator_.time()}, elements,
-                            results);
+    catena::assembly::StateView(system_).section_results(
+        {integrator_.q(), integrator_.v(), {}, integrator_.time()}, elements, results);
     // Force and strain of every dropper, summed over ranks (each owns some).
     std::vector<double> local(2 * n, 0.0), value(2 * n, 0.0);
     for (std::size_t i = 0; i < elements.size(); ++i)
@@ -141,7 +141,9 @@ class SlackObserver : public solvers::TransientObserver {
                   system_.comm());
     for (std::size_t i = 0; i < n; ++i) record(i, value[2 * i], value[2 * i + 1]);
     const double contact =
-        catena::assembly::StateView(system_).contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()})[0].force;
+        catena::assembly::StateView(system_)
+            .contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()})[0]
+            .force;
     min_contact = std::min(min_contact, contact);
     max_contact = std::max(max_contact, contact);
   }
@@ -190,7 +192,7 @@ class SlackObserver : public solvers::TransientObserver {
   std::vector<int> element_;
   std::vector<double> EA_;       // N, per dropper
   std::vector<double> residue_;  // its force in compression per EA·ε: 0, or the slack residue
-  std::map<int, int> index_;  // element → dropper number
+  std::map<int, int> index_;     // element → dropper number
 };
 
 struct SlackRun {
@@ -204,10 +206,10 @@ struct SlackRun {
 };
 
 SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
-            Droppers droppers = Droppers::bars) {
+             Droppers droppers = Droppers::bars) {
   test::ensure_petsc();
-  model::Model m = model::read_scene(
-      scene_file, overrides(integrator_settings, dropper_stiffness, droppers));
+  model::Model m =
+      model::read_scene(scene_file, overrides(integrator_settings, dropper_stiffness, droppers));
   catenary::find_catenary_shape(MPI_COMM_WORLD, m);  // without the pantograph's force
   const double wall_start = MPI_Wtime();
   assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
@@ -247,9 +249,8 @@ SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
       "%s, %s %g N/m: %ld steps, %ld rejected, %ld Newton failures, %ld Newton "
       "iterations, %ld factorisations, %.2f s\n",
       integrator->name().c_str(), droppers == Droppers::bars ? "bar droppers" : "cable droppers",
-      dropper_stiffness, r.report.steps_accepted,
-      r.report.steps_rejected, k.newton_failures, k.newton_iterations, k.factorizations,
-      MPI_Wtime() - wall_start);
+      dropper_stiffness, r.report.steps_accepted, r.report.steps_rejected, k.newton_failures,
+      k.newton_iterations, k.factorizations, MPI_Wtime() - wall_start);
   std::printf("  contact force %.1f to %.1f N\n", r.min_contact, r.max_contact);
   std::printf(
       "  %d of %zu droppers went slack, %d slackened and re-tensioned at least twice "
@@ -260,7 +261,8 @@ SlackRun run(const std::string& integrator_settings, double dropper_stiffness,
   std::printf(
       ")\n  episodes of <= %d steps (%g ms) between switches: %ld, of them taut %ld (largest "
       "peak %.1f N); chatter events (taut, peak > %g N): %ld\n",
-      chatter_steps, 1e3 * chatter_steps * dt, r.short_episodes, r.short_taut, r.short_taut_peak, kChatterForce, r.chatter);
+      chatter_steps, 1e3 * chatter_steps * dt, r.short_episodes, r.short_taut, r.short_taut_peak,
+      kChatterForce, r.chatter);
   // (a) the fixed-step run completes without Newton failure or rejected step.
   EXPECT_NEAR(r.report.t_reached, m.dynamic_options.duration, 1e-12);
   EXPECT_EQ(r.report.steps_rejected, 0);
@@ -294,4 +296,3 @@ TEST(DropperSlack, HhtCableDroppersSlackenAndRetensionWithoutNewtonFailure) {
 TEST(DropperSlack, RadauIIACableDroppersSlackenAndRetensionWithoutNewtonFailure) {
   run("{type: radau, stages: 3, dt: 0.00025}", 1.0e5, Droppers::cables);  // (a) and (b)
 }
-

@@ -81,4 +81,3 @@ TEST(ElasticCatenary, MatchesClosedFormAndConverges) {
   std::printf("  observed shape convergence rate %.2f\n", rate);
   EXPECT_GT(rate, 2.5);
 }
-

@@ -23,7 +23,7 @@ namespace {
 
 constexpr double kMass = 2.0;
 constexpr double kOmega = 2.0 * std::numbers::pi;  // period 1 s
-constexpr double kX0 = 0.1;                          // m, initial displacement
+constexpr double kX0 = 0.1;                        // m, initial displacement
 
 struct History {
   std::vector<double> x, v;
@@ -149,7 +149,7 @@ TEST(Hht, TautWireFirstFrequency) {
   }
   const double period =
       (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  std::printf("  taut wire: f1 = %.6f Hz (closed form %.6f Hz, difference %.2e)\n", 1 / period,
-              f1, (1 / period - f1) / f1);
+  std::printf("  taut wire: f1 = %.6f Hz (closed form %.6f Hz, difference %.2e)\n", 1 / period, f1,
+              (1 / period - f1) / f1);
   EXPECT_NEAR(1 / period, f1, 1e-3 * f1);
 }

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kMass = 2.0;
 constexpr double kOmega = 2.0 * std::numbers::pi;  // period 1 s
-constexpr double kX0 = 0.1;                          // m
+constexpr double kX0 = 0.1;                        // m
 
 using Method = catena::test::TableauChoice;
 
@@ -124,7 +124,8 @@ TEST_P(EveryMethod, TautStringFirstFrequency) {
   EXPECT_NEAR(1 / period, f1, 1e-3 * f1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catena, EveryMethod, testing::ValuesIn(catena::test::every_tableau()), method_name);
+INSTANTIATE_TEST_SUITE_P(Catena, EveryMethod, testing::ValuesIn(catena::test::every_tableau()),
+                         method_name);
 
 }  // namespace
 
@@ -150,8 +151,10 @@ TEST(Irk, GaussConservesTheEnergyOfALinearSystem) {
     worst = std::max(worst, std::abs(0.5 * kMass * vx * vx + 0.5 * k * x * x - e0) / e0);
   }
   const auto& c = irk.counters();
-  std::printf("  gauss_2, 1e5 steps: worst relative energy error %.2e; %ld factorisations, "
-              "%ld Newton iterations\n", worst, c.factorizations, c.newton_iterations);
+  std::printf(
+      "  gauss_2, 1e5 steps: worst relative energy error %.2e; %ld factorisations, "
+      "%ld Newton iterations\n",
+      worst, c.factorizations, c.newton_iterations);
   EXPECT_LT(worst, 1e-10);
   // Simplified Newton keeps one factorisation for the whole constant-step run.
   EXPECT_EQ(c.factorizations, 1);
@@ -175,8 +178,8 @@ TEST(Irk, RadauEmbeddedEstimateHasOrderSPlusOne) {
       estimates.push_back(irk.attempt(h, &tol).error);
     }
     const double order = std::log2(estimates[0] / estimates[1]);
-    std::printf("  radau_iia_%d: estimates %.3e %.3e, order %.2f (theory %d)\n", s,
-                estimates[0], estimates[1], order, s + 1);
+    std::printf("  radau_iia_%d: estimates %.3e %.3e, order %.2f (theory %d)\n", s, estimates[0],
+                estimates[1], order, s + 1);
     EXPECT_NEAR(order, s + 1, 0.3);
   }
 }
@@ -200,15 +203,15 @@ TEST(Irk, DenseOutputIsContinuousAndAccurate) {
     for (double theta : {0.25, 0.5, 0.75}) {
       const double t = irk.previous_time() + theta * 0.02;
       irk.interpolate(t, qi.get(), vi.get());
-      worst = std::max(worst, std::abs(global_value(MPI_COMM_WORLD, qi.get(), g) -
-                                       kX0 * std::cos(kOmega * t)));
+      worst = std::max(
+          worst, std::abs(global_value(MPI_COMM_WORLD, qi.get(), g) - kX0 * std::cos(kOmega * t)));
     }
     irk.interpolate(irk.time(), qi.get(), vi.get());
     end_gap = std::max(end_gap, std::abs(global_value(MPI_COMM_WORLD, qi.get(), g) -
                                          global_value(MPI_COMM_WORLD, irk.q(), g)));
   }
-  std::printf("  radau_iia_3 dense output: worst error %.2e m, gap at step ends %.1e m\n",
-              worst, end_gap);
+  std::printf("  radau_iia_3 dense output: worst error %.2e m, gap at step ends %.1e m\n", worst,
+              end_gap);
   EXPECT_LT(worst, 1e-6);
   EXPECT_LT(end_gap, 1e-14);
 }

@@ -39,9 +39,7 @@ namespace {
 
 // The pendulum of meshes/cable_pendulum.yaml; its pivot eliminated, or a constraint
 // driven along x(t) = A (sin ωt − ωt) (zero velocity and acceleration at the start).
-model::Model pendulum(bool driven_pivot) {
-  return catena::test::cable_pendulum(8, driven_pivot);
-}
+model::Model pendulum(bool driven_pivot) { return catena::test::cable_pendulum(8, driven_pivot); }
 
 struct Method {
   TableauFamily family;
@@ -125,13 +123,12 @@ TEST_P(Operator, ShellProductAndSolveMatchTheCoupledMatrix) {
   EXPECT_LT(inverse, 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catena, Operator,
-                         testing::Values(Method{TableauFamily::radau_iia, 3},
-                                         Method{TableauFamily::gauss, 2},
-                                         Method{TableauFamily::gauss, 3},
-                                         Method{TableauFamily::lobatto_iiic, 3},
-                                         Method{TableauFamily::lobatto_iiic, 4}),
-                         [](const testing::TestParamInfo<Method>& param) { return label(param.param); });
+INSTANTIATE_TEST_SUITE_P(
+    Catena, Operator,
+    testing::Values(Method{TableauFamily::radau_iia, 3}, Method{TableauFamily::gauss, 2},
+                    Method{TableauFamily::gauss, 3}, Method{TableauFamily::lobatto_iiic, 3},
+                    Method{TableauFamily::lobatto_iiic, 4}),
+    [](const testing::TestParamInfo<Method>& param) { return label(param.param); });
 
 // One integrator of the given linear algebra on its own system.
 struct IntegratorRun {
@@ -169,17 +166,18 @@ void expect_same_iterates(const model::Model& m, const Method& method, int n_ste
     iterations += a.newton_iterations;
     coupled.irk->accept();
     decoupled.irk->accept();
-    worst_q = std::max(worst_q, max_difference(coupled.irk->q(), decoupled.irk->q()) /
-                                    max_abs(coupled.irk->q()));
-    worst_v = std::max(worst_v, max_difference(coupled.irk->v(), decoupled.irk->v()) /
-                                    max_abs(coupled.irk->v()));
+    worst_q = std::max(
+        worst_q, max_difference(coupled.irk->q(), decoupled.irk->q()) / max_abs(coupled.irk->q()));
+    worst_v = std::max(
+        worst_v, max_difference(coupled.irk->v(), decoupled.irk->v()) / max_abs(coupled.irk->v()));
   }
   const auto& cc = coupled.irk->counters();
   const auto& cd = decoupled.irk->counters();
-  std::printf("  %s%s: %d steps, %d Newton iterations, %ld factorisations, %ld tangents; worst "
-              "relative difference q %.2e, v %.2e\n",
-              label(method).c_str(), m.constraints.empty() ? "" : " (constrained)", n_steps,
-              iterations, cd.factorizations, cd.jacobian_evaluations, worst_q, worst_v);
+  std::printf(
+      "  %s%s: %d steps, %d Newton iterations, %ld factorisations, %ld tangents; worst "
+      "relative difference q %.2e, v %.2e\n",
+      label(method).c_str(), m.constraints.empty() ? "" : " (constrained)", n_steps, iterations,
+      cd.factorizations, cd.jacobian_evaluations, worst_q, worst_v);
   EXPECT_LT(worst_q, 1e-10);
   EXPECT_LT(worst_v, 1e-10);
   EXPECT_EQ(cc.newton_iterations, cd.newton_iterations);
@@ -204,13 +202,12 @@ TEST_P(SameIterates, OnTheDrivenPendulumWithAConstraint) {
   expect_same_iterates(pendulum(true), GetParam(), 64, 0.25 / 64);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catena, SameIterates,
-                         testing::Values(Method{TableauFamily::radau_iia, 3},
-                                         Method{TableauFamily::radau_iia, 5},
-                                         Method{TableauFamily::gauss, 2},
-                                         Method{TableauFamily::gauss, 3},
-                                         Method{TableauFamily::lobatto_iiic, 3}),
-                         [](const testing::TestParamInfo<Method>& param) { return label(param.param); });
+INSTANTIATE_TEST_SUITE_P(
+    Catena, SameIterates,
+    testing::Values(Method{TableauFamily::radau_iia, 3}, Method{TableauFamily::radau_iia, 5},
+                    Method{TableauFamily::gauss, 2}, Method{TableauFamily::gauss, 3},
+                    Method{TableauFamily::lobatto_iiic, 3}),
+    [](const testing::TestParamInfo<Method>& param) { return label(param.param); });
 
 // Radau IIA's estimate filter M + hγ0 C + (hγ0)² K is the decoupled solve's real block:
 // the decoupled integrator solves with that factorisation instead of its own, so it
@@ -237,9 +234,10 @@ TEST(DecoupledEstimate, RadauEstimateReusesTheRealBlock) {
   }
   const auto& cc = coupled.irk->counters();
   const auto& cd = decoupled.irk->counters();
-  std::printf("  estimates agree to %.2e relative; factorisations coupled %ld (stage + "
-              "filter), decoupled %ld\n",
-              worst, cc.factorizations, cd.factorizations);
+  std::printf(
+      "  estimates agree to %.2e relative; factorisations coupled %ld (stage + "
+      "filter), decoupled %ld\n",
+      worst, cc.factorizations, cd.factorizations);
   EXPECT_LT(worst, 1e-8);
   EXPECT_LT(cd.factorizations, cc.factorizations);
   EXPECT_EQ(cd.linear_solves, cc.linear_solves);

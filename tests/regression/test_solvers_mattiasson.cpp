@@ -67,12 +67,11 @@ TEST_P(Mattiasson, TipMatchesElastica) {
   double previous = 0.0;
   for (int n : {4, 8, 16, 32}) {
     const Tip tip = cantilever_tip(kind, ref.load, n);
-    const double error = std::max({std::abs(tip.v - ref.v), std::abs(tip.u - ref.u),
-                                   std::abs(tip.theta - ref.theta)});
+    const double error = std::max(
+        {std::abs(tip.v - ref.v), std::abs(tip.u - ref.u), std::abs(tip.theta - ref.theta)});
     std::printf("  %s PL²/EI = %4.1f, %2d elements: v/L %.5f u/L %.5f θ %.5f (max error %.1e%s)\n",
                 kind == Kind::cable ? "cable" : "beam ", ref.load, n, tip.v, tip.u, tip.theta,
-                error,
-                previous > 0 ? (", ratio " + std::to_string(previous / error)).c_str() : "");
+                error, previous > 0 ? (", ratio " + std::to_string(previous / error)).c_str() : "");
     previous = error;
     if (n == 32) {
       EXPECT_NEAR(tip.v, ref.v, 1e-4);

@@ -15,8 +15,8 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/state_view.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "petsc_test_session.hpp"
@@ -40,7 +40,8 @@ supports:
   - {node: 1, fix: pinned}
   - {node: 2, fix: pinned}
 pantographs:
-  - )" + pantograph + R"(
+  - )" + pantograph +
+         R"(
 analysis: {type: dynamic, duration: 1.0}
 )";
 }
@@ -64,10 +65,10 @@ void set_array(Vec x, const std::vector<double>& values) {
 
 TEST(PantographContact, JacobianMatchesFiniteDifferences) {
   catena::test::ensure_petsc();
-  const model::Model m = model::parse_scene(
-      wire_scene("{name: p, line: cw, speed: 40, start: 7.3, static_force: 120, "
-                 "model: en50318, contact: {stiffness: 50000, damping: 30}}"),
-      "pantograph.yaml");
+  const model::Model m =
+      model::parse_scene(wire_scene("{name: p, line: cw, speed: 40, start: 7.3, static_force: 120, "
+                                    "model: en50318, contact: {stiffness: 50000, damping: 30}}"),
+                         "pantograph.yaml");
   catena::assembly::SecondOrderSystem system(PETSC_COMM_SELF, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector(),
                     f = system.create_vector();
@@ -134,8 +135,10 @@ TEST(PantographContact, FreePantographVibratesAtItsNaturalFrequencies) {
     statics.solve(q.get());  // the wire sags; the static force lifts the stages by F/k2
     const double offset = 0.0;
     const auto& dofs = system.dof_map();
-    const double z_head = catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(head, 2));
-    const double z_frame = catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(frame, 2));
+    const double z_head =
+        catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(head, 2));
+    const double z_frame =
+        catena::test::global_value(MPI_COMM_WORLD, q.get(), dofs.global_dof(frame, 2));
     catena::test::set_global_value(q.get(), dofs.global_dof(head, 2), z_head + offset + x1);
     catena::test::set_global_value(q.get(), dofs.global_dof(frame, 2), z_frame + offset + x2);
     solvers::HhtOptions o;
@@ -150,8 +153,9 @@ TEST(PantographContact, FreePantographVibratesAtItsNaturalFrequencies) {
     int crossings = 0;
     for (int step = 1; step <= 3 * per_period + 50; ++step) {
       catena::test::advance_fixed(hht, dt, 1);
-      const double z = catena::test::global_value(MPI_COMM_WORLD, hht.q(), dofs.global_dof(head, 2)) -
-                       z_head - offset;
+      const double z =
+          catena::test::global_value(MPI_COMM_WORLD, hht.q(), dofs.global_dof(head, 2)) - z_head -
+          offset;
       if (previous < 0.0 && z >= 0.0) {
         const double tc = (step - 1 + previous / (previous - z)) * dt;
         if (crossings == 0) first_crossing = tc;
@@ -179,7 +183,8 @@ TEST(PantographContact, LosesContactAndRecovers) {
   system.reference_state(q.get());
   solvers::StaticSolver statics(system, m.static_options);
   statics.solve(q.get());
-  const double F0 = catena::assembly::StateView(system).contact_states({q.get(), nullptr, {}, 0.0})[0].force;
+  const double F0 =
+      catena::assembly::StateView(system).contact_states({q.get(), nullptr, {}, 0.0})[0].force;
   // Static contact force: 120 N plus the frame spring's share of the wire's sag there.
   EXPECT_NEAR(F0, 120.0, 3.0);
   // Throw the head down at 1 m/s: it leaves the wire, and the uplift brings it back.
@@ -191,11 +196,15 @@ TEST(PantographContact, LosesContactAndRecovers) {
   double smallest = 1e300;
   for (int step = 0; step < 1500; ++step) {
     catena::test::advance_fixed(hht, 2e-4, 1);  // throws on Newton failure
-    const double F = catena::assembly::StateView(system).contact_states({hht.q(), hht.v(), {}, hht.time()})[0].force;
+    const double F = catena::assembly::StateView(system)
+                         .contact_states({hht.q(), hht.v(), {}, hht.time()})[0]
+                         .force;
     ASSERT_TRUE(std::isfinite(F));
     smallest = std::min(smallest, F);
-    if (F == 0.0) ++free_steps;
-    else if (free_steps > 0) ++contact_after_free;
+    if (F == 0.0)
+      ++free_steps;
+    else if (free_steps > 0)
+      ++contact_after_free;
   }
   EXPECT_GE(smallest, 0.0);
   EXPECT_GT(free_steps, 10) << "the head should have left the wire";

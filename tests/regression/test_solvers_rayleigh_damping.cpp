@@ -75,8 +75,8 @@ TEST(RayleighDamping, TautWireFirstModeDecaysAtTheRayleighRatio) {
     double w = 0.0;
     const double zeta = measured_first_mode_ratio(c.alpha, c.beta, w);
     const double expected = c.alpha / (2.0 * w) + c.beta * w / 2.0;
-    std::printf("  %-9s alpha %.4g 1/s, beta %.4g s: zeta %.6f (expected %.6f)\n", c.label,
-                c.alpha, c.beta, zeta, expected);
+    std::printf("  %-9s alpha %.4g 1/s, beta %.4g s: zeta %.6f (expected %.6f)\n", c.label, c.alpha,
+                c.beta, zeta, expected);
     EXPECT_NEAR(zeta, expected, 0.01 * expected) << c.label;
   }
 }

@@ -113,8 +113,8 @@ TEST(StaticFailures, NonConvergenceNamesLoadLevelAndNode) {
   catena::test::ensure_petsc();
   model::Model m;
   m.gravity = Vec3(0, 0, -9.81);
-  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {50, 0, 0}, 20,
-                                            model::CableProps{1e6, 1.0, 1.0, 0.0, -0.02, {}, false, false});
+  const auto nodes = catena::test::add_line(
+      m, {0, 0, 0}, {50, 0, 0}, 20, model::CableProps{1e6, 1.0, 1.0, 0.0, -0.02, {}, false, false});
   catena::test::set_reference_frames(m);
   catena::test::pin(m, nodes.front());
   catena::test::pin(m, nodes.back());

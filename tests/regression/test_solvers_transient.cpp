@@ -30,7 +30,9 @@ class Recorder : public solvers::TransientObserver {
     x.push_back(catena::test::global_value(comm_, q, g_));
   }
   void step(const solvers::StepRecord& r) override { steps.push_back(r); }
-  bool stop_requested() override { return stop_after > 0 && static_cast<int>(steps.size()) >= stop_after; }
+  bool stop_requested() override {
+    return stop_after > 0 && static_cast<int>(steps.size()) >= stop_after;
+  }
   std::vector<double> times, x;
   std::vector<solvers::StepRecord> steps;
   int stop_after = 0;
@@ -47,8 +49,8 @@ struct OscillatorRun {
 };
 
 template <class Integrator, class Options>
-OscillatorRun run_oscillator(const Options& integrator_options, const solvers::TransientOptions& options,
-                   int stop_after = 0) {
+OscillatorRun run_oscillator(const Options& integrator_options,
+                             const solvers::TransientOptions& options, int stop_after = 0) {
   const catena::model::Model m = catena::test::oscillator(kMass, kOmega);
   catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
@@ -116,8 +118,8 @@ TEST(Transient, AdaptiveErrorFollowsTheTolerance) {
         EXPECT_NEAR(run.recorder.times[k], 0.01 * static_cast<double>(k), 1e-12);
       errors.push_back(run.worst_sample_error);
       steps.push_back(run.report.steps_accepted);
-      std::printf("  %s, atol %.0e: %ld steps (%ld rejected), worst sampled error %.2e m\n",
-                  c.name, tol, run.report.steps_accepted, run.report.steps_rejected,
+      std::printf("  %s, atol %.0e: %ld steps (%ld rejected), worst sampled error %.2e m\n", c.name,
+                  tol, run.report.steps_accepted, run.report.steps_rejected,
                   run.worst_sample_error);
     }
     // A 100× tighter tolerance buys accuracy and costs steps; the global error stays within

@@ -13,9 +13,9 @@ namespace catena::test {
 class ElasticCatenary {
  public:
   // Solves the end condition p(L0) = p_B for t0 by Newton's method.
-  ElasticCatenary(const Vec3& p_a, const Vec3& p_b, double unstretched_length, double EA,
-                  double q, const Vec3& load_direction);
-  Vec3 position(double s) const;   // at unstretched arc length s ∈ [0, L0]
+  ElasticCatenary(const Vec3& p_a, const Vec3& p_b, double unstretched_length, double EA, double q,
+                  const Vec3& load_direction);
+  Vec3 position(double s) const;  // at unstretched arc length s ∈ [0, L0]
   Vec3 tension(double s) const { return t0_ - s * q_ * u_; }
   // Forces of the supports on the cable: −t(0) at A, t(L0) at B.
   Vec3 reaction_a() const { return -t0_; }

@@ -18,7 +18,8 @@ std::vector<double> central_difference_jacobian(
     xp[j] = x[j] - step;
     fn(xp, fm);
     xp[j] = x[j];
-    for (int i = 0; i < n_out; ++i) jac[static_cast<size_t>(i) * m + j] = (fp[i] - fm[i]) / (2 * step);
+    for (int i = 0; i < n_out; ++i)
+      jac[static_cast<size_t>(i) * m + j] = (fp[i] - fm[i]) / (2 * step);
   }
   return jac;
 }

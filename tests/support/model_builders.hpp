@@ -16,7 +16,7 @@ std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_e
 // scene reader does.
 void set_reference_frames(model::Model& m);
 
-void pin(model::Model& m, int node);    // fix x, y, z
+void pin(model::Model& m, int node);  // fix x, y, z
 
 // The flexible pendulum of meshes/cable_pendulum.yaml (Berzeri et al.: 1.2 m, EA 1260 N,
 // EI 8.505e-3 N·m², 9.972 kg/m, gravity −z) in n_elements cables: its pivot pinned, or

@@ -10,7 +10,9 @@ std::vector<std::function<void()>>& hooks() {
 }
 }  // namespace
 
-void register_before_mpi_finalize(std::function<void()> hook) { hooks().push_back(std::move(hook)); }
+void register_before_mpi_finalize(std::function<void()> hook) {
+  hooks().push_back(std::move(hook));
+}
 
 void run_before_mpi_finalize_hooks() {
   for (auto it = hooks().rbegin(); it != hooks().rend(); ++it) (*it)();

@@ -45,8 +45,8 @@ struct ContactModel {
 };
 
 // The reference values of the active DOFs, the head raised by `lift`.
-std::vector<double> reference_active(const model::Model& m, const PantographContact& c,
-                                     double t, double lift) {
+std::vector<double> reference_active(const model::Model& m, const PantographContact& c, double t,
+                                     double lift) {
   std::vector<int> active;
   c.active_dofs(t, active);
   std::vector<double> q;
@@ -99,7 +99,7 @@ TEST(PantographContact, JacobiansMatchFiniteDifferences) {
   const PantographContact c(cm.m, 0);
   const double t = 0.013;  // s = 3.36 m, inside element 1
   std::vector<double> q = reference_active(cm.m, c, t, 0.012);
-  q[4] += 0.002;   // wire node 1 moved up a little, its slope tilted
+  q[4] += 0.002;  // wire node 1 moved up a little, its slope tilted
   q[8] += 0.001;
   std::vector<double> v(15, 0.0);
   v[2] = 0.3;

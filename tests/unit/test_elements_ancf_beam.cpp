@@ -99,7 +99,8 @@ Evaluation evaluate(const AncfBeam& e, const std::vector<double>& q,
                     const std::vector<double>& v = {}, double load_factor = 1.0) {
   Evaluation out{std::vector<double>(kN), std::vector<double>(kN * kN),
                  std::vector<double>(kN * kN)};
-  e.evaluate({q, v, catena::elements::LoadPath(load_factor)}, {true, true, true}, {out.f.data(), out.K.data(), out.C.data()});
+  e.evaluate({q, v, catena::elements::LoadPath(load_factor)}, {true, true, true},
+             {out.f.data(), out.K.data(), out.C.data()});
   return out;
 }
 
@@ -288,7 +289,8 @@ TEST(AncfBeam, ExternalLoadsIntegrateToTheResultant) {
   const auto q = to_vector(beam.reference_state());
   const double lambda = 0.7;
   std::vector<double> f(kN);
-  beam.evaluate({q, {}, catena::elements::LoadPath(lambda)}, {true, false, false}, {f.data(), nullptr, nullptr});
+  beam.evaluate({q, {}, catena::elements::LoadPath(lambda)}, {true, false, false},
+                {f.data(), nullptr, nullptr});
   const Vec3 resultant = block(f, kRA) + block(f, kRB);
   const Vec3 expected =
       -lambda * beam.length() * (s.mass_per_length * kLoads.gravity + kLoads.distributed);

@@ -32,8 +32,8 @@ std::vector<double> perturbed(std::vector<double> q, double amplitude, std::mt19
 
 // K and C against finite differences at `trials` random perturbations of q (amplitude
 // `amplitude`) with random velocities of up to 1.
-void expect_jacobians_match(const AncfCable& cable, const std::vector<double>& q,
-                            double amplitude, unsigned seed, int trials) {
+void expect_jacobians_match(const AncfCable& cable, const std::vector<double>& q, double amplitude,
+                            unsigned seed, int trials) {
   std::mt19937 rng(seed);
   for (int trial = 0; trial < trials; ++trial) {
     const auto check = catena::test::check_element_jacobians(
@@ -88,7 +88,8 @@ TEST(AncfCable, NoInternalForceUnderRigidMotion) {
   // Rigid velocity: v = ω × (x − a) for positions, ω × t for slopes.
   const Vec3 omega(0.4, 1.1, -0.7), t = R * Vec3::UnitX();
   const Vec3 vb = omega.cross(b - a), vt = omega.cross(t);
-  const std::vector<double> v = {0, 0, 0, vt[0], vt[1], vt[2], vb[0], vb[1], vb[2], vt[0], vt[1], vt[2]};
+  const std::vector<double> v = {0,     0,     0,     vt[0], vt[1], vt[2],
+                                 vb[0], vb[1], vb[2], vt[0], vt[1], vt[2]};
   const auto f = catena::test::element_force(cable, q, v, 1.0);
   // Round-off floor: EA·1e-13 (|r'| = 1 to machine precision).
   for (double x : f) EXPECT_NEAR(x, 0.0, 1e-13 * s.EA);
@@ -184,8 +185,10 @@ TEST(AncfCable, TensionOnlyLawIsSmoothAcrossTheSlackBand) {
     const std::vector<double> q = {0, 0, 0, 0, 0, -stretch, 0, 0, -stretch * L, 0, 0, -stretch};
     const double N = cable.section_result({q, {}, {}}).axial_force;
     const double smooth = (eps + d) * (eps + d) / (4.0 * d);
-    EXPECT_NEAR(N, s.EA * ((1 - AncfCable::kSlackStiffness) * smooth + AncfCable::kSlackStiffness * eps),
-                1e-9 * s.EA * d) << "eps " << eps;
+    EXPECT_NEAR(
+        N, s.EA * ((1 - AncfCable::kSlackStiffness) * smooth + AncfCable::kSlackStiffness * eps),
+        1e-9 * s.EA * d)
+        << "eps " << eps;
     EXPECT_GT(N, AncfCable::kSlackStiffness * s.EA * eps);
     std::mt19937 rng(5);
     // Perturbations far below the band keep every sampling point inside it.
@@ -234,8 +237,8 @@ TEST(AncfCable, TautTensionOnlyCableMatchesTheLinearSection) {
   s.tension_only = true;
   CableSection linear = kSection;
   const double L = 0.5;
-  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero()), reference(L, linear, Vec3::Zero(),
-                                                                      Vec3::Zero());
+  const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero()),
+      reference(L, linear, Vec3::Zero(), Vec3::Zero());
   const std::vector<double> q = {0, 0, 0, 0, 0, -1.01, 0, 0, -1.02 * L, 0, 0, -1.03};
   const std::vector<double> v = {0, 0, 0, 0, 0, -0.1, 0, 0, -0.2, 0, 0, 0.05};
   const auto f = catena::test::element_force(cable, q, v, 1.0);
@@ -261,7 +264,8 @@ TEST(AncfCable, PrestrainPutOnWithTheLoads) {
     const catena::elements::LoadPath path(1.0, loads, 0.0);
     EXPECT_DOUBLE_EQ(AncfCable::section_prestrain(s, path), s.prestrain * loads);
     EXPECT_NEAR(cable.section_result({q, {}, path}).axial_force, s.EA * s.prestrain * loads,
-                1e-9 * s.EA) << "loads " << loads;
+                1e-9 * s.EA)
+        << "loads " << loads;
   }
   s.prestrain_with_loads = false;  // a wire: tensioned first (path.prestrain), loads aside
   EXPECT_DOUBLE_EQ(AncfCable::section_prestrain(s, catena::elements::LoadPath(1.0, 0.0, 0.0)),

@@ -52,7 +52,7 @@ TEST(LinearSpring, JacobiansAndForces) {
   EXPECT_LT(c.stiffness, 1e-8);
   EXPECT_LT(c.damping, 1e-8);
   const auto f = catena::test::element_force(spring, q, v, 1.0);
-  EXPECT_NEAR(f[3], 1e3 * 0.2, 1e-9);         // stretch 0.2 beyond the reference offset
+  EXPECT_NEAR(f[3], 1e3 * 0.2, 1e-9);          // stretch 0.2 beyond the reference offset
   EXPECT_NEAR(f[4], 2e3 * 0.2 - 2 * 1, 1e-9);  // k Δy + c Δv_y
 }
 

@@ -46,10 +46,10 @@ TEST(CatenaryAutoSpans, SpanCountFollowsDurationSpeedAndRunOut) {
     std::size_t spans;
   };
   const std::vector<Case> cases{
-      {{"catenary.run_out_spans=0"}, 3},                              // 140 m: span 3
-      {{"analysis.duration=2.0"}, 6},                                 // 206.7 m: span 4, + 2
-      {{"pantographs[0].speed_kmh=72", "analysis.duration=4"}, 4},    // exactly 120 m: span 2
-      {{"pantographs[0].speed_kmh=0"}, 3},                            // standing at 40 m
+      {{"catenary.run_out_spans=0"}, 3},                            // 140 m: span 3
+      {{"analysis.duration=2.0"}, 6},                               // 206.7 m: span 4, + 2
+      {{"pantographs[0].speed_kmh=72", "analysis.duration=4"}, 4},  // exactly 120 m: span 2
+      {{"pantographs[0].speed_kmh=0"}, 3},                          // standing at 40 m
       {{"catenary.span_length=50", "catenary.droppers.positions=[5, 25, 45]"}, 5},  // 140/50
   };
   for (const Case& c : cases) {

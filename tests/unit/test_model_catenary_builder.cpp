@@ -512,11 +512,10 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
 // prestrain put on with the loads, damping as a Kelvin–Voigt time c·L/EA.
 TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
   const int per = 3;
-  const Model m = read_scene(scene_file, {"catenary.droppers.model=cable",
-                                          "catenary.droppers.EI=0.02",
-                                          "catenary.droppers.mass_per_length=0.089",
-                                          "catenary.droppers.damping=50",
-                                          "catenary.droppers.elements=" + std::to_string(per)});
+  const Model m = read_scene(
+      scene_file, {"catenary.droppers.model=cable", "catenary.droppers.EI=0.02",
+                   "catenary.droppers.mass_per_length=0.089", "catenary.droppers.damping=50",
+                   "catenary.droppers.elements=" + std::to_string(per)});
   const CatenaryLayout& c = *m.catenary;
   const int wire_elements = n_spans * elements_per_span;
   const int n_droppers = n_spans * droppers_per_span;

@@ -60,9 +60,9 @@ TEST(IntegratorCatalogue, StageRangesPerFamily) {
   EXPECT_FALSE(stages_accepted(type("sdirk"), 2));
   EXPECT_TRUE(stages_accepted(type("sdirk"), 3));
   EXPECT_FALSE(stages_accepted(type("sdirk"), 4));
-  EXPECT_EQ(default_stages(type("sdirk"), 5), 3);   // its only stage count
-  EXPECT_EQ(default_stages(type("radau"), 5), 5);   // the fallback (the options' default)
-  EXPECT_TRUE(stages_accepted(type("hht"), 99));    // no stages: nothing to refuse
+  EXPECT_EQ(default_stages(type("sdirk"), 5), 3);  // its only stage count
+  EXPECT_EQ(default_stages(type("radau"), 5), 5);  // the fallback (the options' default)
+  EXPECT_TRUE(stages_accepted(type("hht"), 99));   // no stages: nothing to refuse
 }
 
 TEST(IntegratorCatalogue, EmbeddedEstimates) {

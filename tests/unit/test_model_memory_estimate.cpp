@@ -65,12 +65,13 @@ TEST(ProblemSize, CountsNodesDofsAndBlocksOfACableChain) {
 TEST(ProblemSize, ImplicitRungeKuttaNeedsStagesTimesTheLinearAlgebra) {
   const std::string dynamic = "analysis: {type: dynamic, duration: 1}\n";
   EXPECT_EQ(problem_size(parse_scene(wire_scene(10, dynamic), "w.yaml")).factor_multiple, 2.0);
-  EXPECT_EQ(problem_size(parse_scene(wire_scene(10, dynamic + "integrator: {type: radau, stages: 3}\n"),
-                                     "w.yaml"))
-                .factor_multiple,
-            6.0);
+  EXPECT_EQ(
+      problem_size(
+          parse_scene(wire_scene(10, dynamic + "integrator: {type: radau, stages: 3}\n"), "w.yaml"))
+          .factor_multiple,
+      6.0);
   EXPECT_EQ(problem_size(parse_scene(wire_scene(10, dynamic + "integrator: {type: radau, stages: "
-                                                          "3, linear_algebra: coupled}\n"),
+                                                              "3, linear_algebra: coupled}\n"),
                                      "w.yaml"))
                 .factor_multiple,
             9.0);
@@ -100,8 +101,7 @@ TEST(MemoryBudget, TenMillionElementsAreRefusedBeforeTheLineIsBuilt) {
   EXPECT_NE(message.find("the lines make 10000000 elements"), std::string::npos) << message;
   EXPECT_NE(message.find("needs an estimated"), std::string::npos) << message;
   EXPECT_NE(message.find("60000000 DOFs"), std::string::npos) << message;
-  EXPECT_NE(message.find("more than the 24 GiB of physical memory of this host"),
-            std::string::npos)
+  EXPECT_NE(message.find("more than the 24 GiB of physical memory of this host"), std::string::npos)
       << message;
   EXPECT_NE(message.find("--memory-limit"), std::string::npos) << message;
 }

@@ -37,8 +37,7 @@ TEST(NodeKinds, TheKindThatHoldsEveryAttachedElementsUnknowns) {
   EXPECT_EQ(kinds[index_of(m, 31)], UnknownKind::ancf_beam);   // beam + spring
   EXPECT_EQ(kinds[index_of(m, 38)], UnknownKind::ancf_beam);   // beam interior
   const std::vector<int> dofs = all_node_dofs(m);
-  for (std::size_t i = 0; i < m.nodes.size(); ++i)
-    EXPECT_EQ(dofs[i], kind_info(kinds[i]).size);
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) EXPECT_EQ(dofs[i], kind_info(kinds[i]).size);
 }
 
 TEST(NodeKinds, NodesTouchedOnlyByBarsSpringsOrMassesArePoints) {

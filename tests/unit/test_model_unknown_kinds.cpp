@@ -17,8 +17,7 @@ TEST(UnknownKinds, NodeKindsNestByTheirComponents) {
             UnknownKind::ancf_cable);
   EXPECT_EQ(kind_holding_both(UnknownKind::ancf_beam, UnknownKind::ancf_cable),
             UnknownKind::ancf_beam);
-  EXPECT_EQ(kind_holding_both(UnknownKind::ancf_beam, UnknownKind::point),
-            UnknownKind::ancf_beam);
+  EXPECT_EQ(kind_holding_both(UnknownKind::ancf_beam, UnknownKind::point), UnknownKind::ancf_beam);
   EXPECT_EQ(kind_holding_both(UnknownKind::point, UnknownKind::point), UnknownKind::point);
 }
 

@@ -15,8 +15,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <complex>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,9 +37,7 @@ struct Case {
   int stages;
 };
 
-std::string label(const Case& c) {
-  return make_tableau(c.family, c.stages).name;
-}
+std::string label(const Case& c) { return make_tableau(c.family, c.stages).name; }
 
 std::vector<Case> decouplable() {
   std::vector<Case> cases;
@@ -121,7 +119,8 @@ TEST_P(Decouplable, ReproducesTheButcherMatrix) {
     for (int j = 0; j < i; ++j)
       closest = std::min(closest, std::abs(e[static_cast<size_t>(i)] - e[static_cast<size_t>(j)]));
   }
-  if (s > 1) std::printf("  %s: closest eigenvalue pair %.3e apart\n", tableau.name.c_str(), closest);
+  if (s > 1)
+    std::printf("  %s: closest eigenvalue pair %.3e apart\n", tableau.name.c_str(), closest);
   if (tableau.family == TableauFamily::radau_iia && tableau.b_embedded) {
     ASSERT_EQ(form->blocks.front().size, 1);
     EXPECT_NEAR(form->D(0, 0), tableau.gamma0, 1e-15 * tableau.gamma0);
@@ -129,7 +128,9 @@ TEST_P(Decouplable, ReproducesTheButcherMatrix) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Catena, Decouplable, testing::ValuesIn(decouplable()),
-                         [](const testing::TestParamInfo<Case>& param) { return label(param.param); });
+                         [](const testing::TestParamInfo<Case>& param) {
+                           return label(param.param);
+                         });
 
 TEST(TableauDecomposition, RefusesLobattoIIIA) {
   for (int s = 2; s <= 5; ++s) {

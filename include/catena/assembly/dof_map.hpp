@@ -2,11 +2,11 @@
 // Global numbering of the free degrees of freedom.
 //
 // Each node's unknowns are a block of its kind (model/unknown_kinds.hpp, chosen by the
-// elements attached to it: model/node_kinds.hpp), in the kind's component order. Fixed DOFs (supports) are eliminated: they get no global index (−1).
-// Free DOFs are numbered contiguously per rank: rank 0's owned nodes in ascending node
-// index, then rank 1's, ...; within a node, in layout order. The numbering is computed
-// identically on every rank from the replicated model (O(global nodes) memory per rank,
-// O(local) work per evaluation).
+// elements attached to it: model/node_kinds.hpp), in the kind's component order. Fixed DOFs
+// (supports) are eliminated: they get no global index (−1). Free DOFs are numbered contiguously per
+// rank: rank 0's owned nodes in ascending node index, then rank 1's, ...; within a node, in layout
+// order. The numbering is computed identically on every rank from the replicated model (O(global
+// nodes) memory per rank, O(local) work per evaluation).
 //
 // Lagrange multipliers (model::Constraint, a `multiplier` block each) are unknowns too: a
 // constraint belongs to the rank owning its node A, and its multipliers are numbered after
@@ -31,8 +31,7 @@ class DofMap {
 
   // Not collective (deterministic on every rank). `touched`: the nodes this rank's
   // couplings act on (any order, repeats allowed; owned ones are ignored).
-  DofMap(const model::Model& model, const Partition& partition, int rank,
-         std::vector<int> touched);
+  DofMap(const model::Model& model, const Partition& partition, int rank, std::vector<int> touched);
 
   int n_nodes() const { return static_cast<int>(node_offset_.size()) - 1; }
   int node_dofs(int node) const { return node_offset_[node + 1] - node_offset_[node]; }
@@ -70,12 +69,12 @@ class DofMap {
  private:
   const Partition* partition_;
   std::vector<model::UnknownKind> node_kinds_;  // n_nodes
-  std::vector<int> node_offset_;    // n_nodes + 1
-  std::vector<PetscInt> global_;    // per nodal DOF
-  std::vector<PetscInt> local_;     // per nodal DOF
+  std::vector<int> node_offset_;                // n_nodes + 1
+  std::vector<PetscInt> global_;                // per nodal DOF
+  std::vector<PetscInt> local_;                 // per nodal DOF
   std::vector<PetscInt> ghosts_;
   std::vector<int> owned_nodes_;
-  std::vector<int> global_node_;    // per global DOF: its node
+  std::vector<int> global_node_;        // per global DOF: its node
   std::vector<int> global_constraint_;  // per global DOF: its constraint or −1
   std::vector<int> constraint_owner_;   // per constraint: owning rank
   std::vector<PetscInt> multiplier_;    // 3 per constraint: global index

@@ -28,7 +28,7 @@ namespace catena::assembly {
 struct LocalPatch {
   double t = 0.0;                  // s: the time the couplings' active DOFs are taken at
   std::vector<PetscInt> unknowns;  // owned local indices, ascending
-  std::vector<PetscInt> rows;      // owned local indices the couplings touch (⊇ unknowns), ascending
+  std::vector<PetscInt> rows;  // owned local indices the couplings touch (⊇ unknowns), ascending
   // This rank's couplings acting on an unknown (indices into its coupling list): the kernel
   // couplings in ascending order, then the n_timed ones active at t (contacts).
   std::vector<size_t> couplings;

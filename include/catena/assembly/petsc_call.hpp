@@ -49,9 +49,8 @@ class CallbackGuard {
 
 }  // namespace catena
 
-#define CATENA_PETSC(expr)                                                    \
-  do {                                                                        \
-    const PetscErrorCode catena_ierr_ = (expr);                               \
-    if (catena_ierr_ != 0)                                        \
-      ::catena::throw_petsc_error(catena_ierr_, #expr, __FILE__, __LINE__);   \
+#define CATENA_PETSC(expr)                                                                       \
+  do {                                                                                           \
+    const PetscErrorCode catena_ierr_ = (expr);                                                  \
+    if (catena_ierr_ != 0) ::catena::throw_petsc_error(catena_ierr_, #expr, __FILE__, __LINE__); \
   } while (0)

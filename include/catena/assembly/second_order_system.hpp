@@ -93,11 +93,10 @@ class SecondOrderSystem {
   // reached from them across `layers` kernels (a moving contact counts as one), those of
   // them a patch may change alone.
   LocalPatch local_patch(const std::vector<PetscInt>& seeds, int layers, double t = 0.0);
-  // Not collective. Σ f_e(q, v) over the patch's kernels and contacts, per row (f_rows: rows.size()),
-  // from the owned arrays of q and v (v may be null: zero velocity). Moving loads are left
-  // out: they do not depend on the state, so they cancel in a change of the residual.
-  void patch_force(const LocalPatch& patch, const double* q, const double* v,
-                   double* f_rows) const;
+  // Not collective. Σ f_e(q, v) over the patch's kernels and contacts, per row (f_rows:
+  // rows.size()), from the owned arrays of q and v (v may be null: zero velocity). Moving loads are
+  // left out: they do not depend on the state, so they cancel in a change of the residual.
+  void patch_force(const LocalPatch& patch, const double* q, const double* v, double* f_rows) const;
   // Not collective. Σ M_e d_e over the patch's kernels, per row, for d given per unknown.
   void patch_mass_product(const LocalPatch& patch, const double* d, double* out_rows) const;
   // Not collective. The unknowns' block of c_K K + c_C C + c_M M at (q, v) (owned arrays;
@@ -150,8 +149,8 @@ class SecondOrderSystem {
   // The state of `dofs` from local arrays (v may be null: zero velocity), gathered into
   // b.q and b.v.
   couplings::CouplingState gather(const ActiveDofs& dofs, const double* q_local,
-                                  const double* v_local, const elements::LoadPath& path,
-                                  double t, Buffers& b) const;
+                                  const double* v_local, const elements::LoadPath& path, double t,
+                                  Buffers& b) const;
   // Evaluates coupling i at the gathered state of its active DOFs into f (may be null)
   // and m.
   void evaluate(size_t i, const ActiveDofs& dofs, const double* q_local, const double* v_local,

@@ -16,9 +16,9 @@ namespace catena::assembly {
 
 // Per supported node (owned by this rank): reaction of the supports on the node.
 struct Reactions {
-  std::vector<int> nodes;       // ascending model node indices
-  std::vector<double> force;    // 3 per node, N
-  std::vector<double> moment;   // 3 per node, N·m (from fixed slope DOFs)
+  std::vector<int> nodes;      // ascending model node indices
+  std::vector<double> force;   // 3 per node, N
+  std::vector<double> moment;  // 3 per node, N·m (from fixed slope DOFs)
 };
 
 // A moving contact (model::MovingContact, a pantograph head on a wire) at a state.
@@ -40,8 +40,7 @@ class StateView {
                        std::vector<elements::SectionResult>& results) const;
   // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
   // slopes (∂r/∂x, zero where a node has none), 3 each.
-  void owned_node_values(Vec q, std::vector<double>& positions,
-                         std::vector<double>& slopes) const;
+  void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes) const;
   // Collective. Support reactions at owned supported nodes.
   Reactions reactions(const EvalPoint& p) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
@@ -55,8 +54,8 @@ class StateView {
   // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
   void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
   // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
-  // from rows (kMaxBlockUnknowns per node, all nodes) and its owned multiplier slots from multipliers (3
-  // per constraint, all constraints).
+  // from rows (kMaxBlockUnknowns per node, all nodes) and its owned multiplier slots from
+  // multipliers (3 per constraint, all constraints).
   void set_from_node_rows(Vec x, const std::vector<double>& rows,
                           const std::vector<double>& multipliers) const;
 

@@ -50,7 +50,7 @@ struct ElasticityPoint {
 
 struct ElasticityReport {
   std::vector<ElasticityPoint> points;  // per ElasticityProbe::positions, same order
-  solvers::StaticReport base;                    // the equilibrium without the probe
+  solvers::StaticReport base;           // the equilibrium without the probe
   long newton_iterations = 0;           // over all points
   long factorizations = 0;              // of the Newton matrix, over all points
 };

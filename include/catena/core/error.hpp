@@ -20,8 +20,8 @@ class Error : public std::runtime_error {
 // Where in the user's input a problem is. Any field may be empty / zero when unknown.
 struct InputLocation {
   std::string file;
-  int line = 0;       // 1-based; 0 = unknown
-  std::string key;    // dotted path, e.g. "elements[3].nodes"
+  int line = 0;     // 1-based; 0 = unknown
+  std::string key;  // dotted path, e.g. "elements[3].nodes"
 };
 
 class InputError : public Error {

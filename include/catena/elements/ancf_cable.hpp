@@ -79,7 +79,6 @@ class AncfCable final : public Element {
   static constexpr double kSlackBand = 2.0e-5;
 
  private:
-
   double length_;
   CableSection section_;
   // μ_x g + q at full load, N/m of mesh length (a Vec3, not the four nodal blocks: the

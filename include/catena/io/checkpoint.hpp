@@ -42,8 +42,8 @@ struct CheckpointFacts {
   double last_dt = 0.0;  // s, the last accepted step (an adaptive restart starts with it)
   std::int64_t samples = 0, steps = 0;  // output rows written up to the checkpoint
   std::string integrator;               // TimeIntegrator::name() of the run
-  std::string run_id;        // the run's identifier, also in its output file (run_id)
-  std::string code_version;  // Catena version that wrote it
+  std::string run_id;                   // the run's identifier, also in its output file (run_id)
+  std::string code_version;             // Catena version that wrote it
   int ranks = 0;                        // of the run that wrote it (0: not recorded)
 };
 
@@ -90,7 +90,6 @@ Checkpoint read_checkpoint(MPI_Comm comm, const std::string& path, const model::
 
 // Collective. Whether `path` is a readable checkpoint written for a model with other node,
 // element or constraint counts (false if it is missing or unreadable).
-bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
-                                 const model::Model& model);
+bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path, const model::Model& model);
 
 }  // namespace catena::io

@@ -18,9 +18,7 @@ namespace catena::io {
 
 // "dir/OUT.part.h5" for "dir/OUT.h5" (the extension kept, so tools still see HDF5).
 std::string partial_output_path(const std::string& output_path);
-inline std::string checkpoint_path(const std::string& output_path) {
-  return output_path + ".chk";
-}
+inline std::string checkpoint_path(const std::string& output_path) { return output_path + ".chk"; }
 
 // Collective. A new run id (made on rank 0, broadcast): 32 hex digits.
 std::string new_run_id(MPI_Comm comm);

@@ -8,19 +8,19 @@
 namespace catena::io {
 
 struct StaticResult {
-  std::vector<int> owned_nodes;     // node indices (into Model::nodes), ascending
-  std::vector<double> positions;    // 3 per owned node, m
-  std::vector<double> slopes;       // 3 per owned node: ∂r/∂x (−); zeros where a node has none
+  std::vector<int> owned_nodes;   // node indices (into Model::nodes), ascending
+  std::vector<double> positions;  // 3 per owned node, m
+  std::vector<double> slopes;     // 3 per owned node: ∂r/∂x (−); zeros where a node has none
 
-  std::vector<int> owned_elements;  // element indices (into Model::elements), ascending
-  std::vector<double> axial_force;  // 1 per owned element, N (tension positive), mid-point
-  std::vector<double> axial_strain; // 1 per owned element, −
+  std::vector<int> owned_elements;   // element indices (into Model::elements), ascending
+  std::vector<double> axial_force;   // 1 per owned element, N (tension positive), mid-point
+  std::vector<double> axial_strain;  // 1 per owned element, −
 
-  std::vector<int> support_nodes;      // owned nodes with fixed DOFs or elastic supports
-  std::vector<double> reaction_force;  // 3 per support node, N (force of support on node)
-  std::vector<double> reaction_moment; // 3 per support node, N·m (from fixed slope DOFs)
+  std::vector<int> support_nodes;       // owned nodes with fixed DOFs or elastic supports
+  std::vector<double> reaction_force;   // 3 per support node, N (force of support on node)
+  std::vector<double> reaction_moment;  // 3 per support node, N·m (from fixed slope DOFs)
 
-  double load_factor = 1.0;        // reached load level (1 = full load)
+  double load_factor = 1.0;  // reached load level (1 = full load)
   int n_load_steps = 0;
   int n_newton_iterations = 0;
   double residual_norm = 0.0;

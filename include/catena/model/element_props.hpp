@@ -30,14 +30,14 @@ struct Rayleigh {
 struct CableProps {
   static constexpr const char* kind = "cable";
   static constexpr UnknownKind node_kind = UnknownKind::ancf_cable;  // [r, r_x]
-  double EA = 0.0;               // N, axial stiffness
-  double EI = 0.0;               // N·m², bending stiffness
+  double EA = 0.0;                                                   // N, axial stiffness
+  double EI = 0.0;                                                   // N·m², bending stiffness
   double mass_per_length = 0.0;  // kg/m, per unit unstretched length
   double damping_time = 0.0;     // s, Kelvin–Voigt axial: N = EA (ε + τ ε̇)
   // Prestrain ε_p: the element's unstretched length is L_mesh / (1 + ε_p). Set from the
   // scene's `tension` (ε_p = T/EA), `prestrain` or `unstretched_length`.
   double prestrain = 0.0;
-  Rayleigh rayleigh;             // proportional damping α M + β K_ref
+  Rayleigh rayleigh;  // proportional damping α M + β K_ref
   // Droppers as cables (catenary builder): no compression beyond a slack residue
   // (elements::AncfCable::kSlackStiffness), and the prestrain, a length found by shape
   // finding rather than a tension, put on with the loads along the static load path.
@@ -60,15 +60,15 @@ struct CableProps {
 struct BeamProps {
   static constexpr const char* kind = "beam";
   static constexpr UnknownKind node_kind = UnknownKind::ancf_beam;  // [r, r_x, r_y, r_z]
-  double EA = 0.0;                // N
-  double GA_y = 0.0, GA_z = 0.0;  // N, shear stiffnesses
-  double GJ = 0.0;                // N·m², torsional stiffness
-  double EI_y = 0.0, EI_z = 0.0;  // N·m², bending about the section's y and z axes
-  double mass_per_length = 0.0;   // kg/m
+  double EA = 0.0;                                                  // N
+  double GA_y = 0.0, GA_z = 0.0;                                    // N, shear stiffnesses
+  double GJ = 0.0;                                                  // N·m², torsional stiffness
+  double EI_y = 0.0, EI_z = 0.0;      // N·m², bending about the section's y and z axes
+  double mass_per_length = 0.0;       // kg/m
   double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, section rotary inertia per length
-  double damping_time = 0.0;      // s, Kelvin–Voigt on all strains
-  Vec3 y_axis = Vec3::UnitZ();    // reference direction of the section's y axis
-  Rayleigh rayleigh;              // proportional damping α M + β K_ref (last: aggregates)
+  double damping_time = 0.0;          // s, Kelvin–Voigt on all strains
+  Vec3 y_axis = Vec3::UnitZ();        // reference direction of the section's y axis
+  Rayleigh rayleigh;                  // proportional damping α M + β K_ref (last: aggregates)
 
   // Scene keys (docs/scene.md "type: beam").
   template <class Keys>
@@ -93,11 +93,11 @@ struct BeamProps {
 struct BarProps {
   static constexpr const char* kind = "bar";
   static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
-  double EA = 0.0;               // N
-  double mass_per_length = 0.0;  // kg/m, lumped half to each node
-  double damping = 0.0;          // N·s/m, along the bar (c·d(length)/dt)
+  double EA = 0.0;                                              // N
+  double mass_per_length = 0.0;                                 // kg/m, lumped half to each node
+  double damping = 0.0;             // N·s/m, along the bar (c·d(length)/dt)
   double unstretched_length = 0.0;  // m; 0 = the mesh length
-  bool tension_only = false;     // slack (zero force) when shorter than unstretched
+  bool tension_only = false;        // slack (zero force) when shorter than unstretched
 
   // Scene keys (docs/scene.md "type: bar").
   template <class Keys>
@@ -115,8 +115,8 @@ struct BarProps {
 struct SpringProps {
   static constexpr const char* kind = "spring";
   static constexpr UnknownKind node_kind = UnknownKind::point;  // [r]
-  Vec3 stiffness = Vec3::Zero();  // N/m per global axis
-  Vec3 damping = Vec3::Zero();    // N·s/m per global axis
+  Vec3 stiffness = Vec3::Zero();                                // N/m per global axis
+  Vec3 damping = Vec3::Zero();                                  // N·s/m per global axis
 
   // Scene keys (docs/scene.md "type: spring").
   template <class Keys>

@@ -24,7 +24,7 @@ namespace catena::model {
 struct ProblemSize {
   std::int64_t nodes = 0;
   std::int64_t elements = 0;
-  std::int64_t dofs = 0;           // nodal DOFs (supports not subtracted) + multipliers
+  std::int64_t dofs = 0;             // nodal DOFs (supports not subtracted) + multipliers
   std::int64_t matrix_nonzeros = 0;  // of one n × n Newton matrix
   // The integrator's linear algebra, in multiples of one real n × n matrix and factor:
   // statics (tangent and its stability LDLᵀ) and HHT 2, an s-stage IRK 2s (decoupled:
@@ -64,7 +64,7 @@ std::string format_gib(double bytes);
 // How much memory a run may use, and on how many ranks it runs. Set by the app; a
 // budget with host_bytes = 0 checks nothing.
 struct MemoryBudget {
-  double host_bytes = 0.0;  // per host: physical memory, or --memory-limit
+  double host_bytes = 0.0;   // per host: physical memory, or --memory-limit
   bool from_option = false;  // host_bytes is the user's --memory-limit
   int ranks = 1;
   int ranks_on_host = 1;  // the most ranks any host runs

@@ -15,7 +15,7 @@
 namespace catena::model {
 
 struct Node {
-  std::int64_t id = 0;  // user id (generated ids for line interior nodes)
+  std::int64_t id = 0;           // user id (generated ids for line interior nodes)
   Vec3 position = Vec3::Zero();  // m, reference (mesh) position
   // Reference nodal frame, set by the scene reader from the attached elements:
   // tangent = ∂r/∂x (unit) where a cable or beam attaches (zero otherwise; all attached
@@ -28,10 +28,10 @@ struct Node {
 
 struct ElementDesc {
   std::int64_t id = 0;
-  std::vector<int> nodes;        // node indices
+  std::vector<int> nodes;  // node indices
   ElementProps props;
   Vec3 distributed_load = Vec3::Zero();  // N/m per unit mesh length (cable, beam)
-  std::string set;               // name of the line / set it belongs to ("" = none)
+  std::string set;                       // name of the line / set it belongs to ("" = none)
 };
 
 // Fixed DOFs of a node, eliminated from the system. Bits index the nodal layout
@@ -64,10 +64,10 @@ enum class ConstraintType { coincident, pinned, prescribed };
 struct Constraint {
   ConstraintType type = ConstraintType::pinned;
   int node_a = 0;
-  int node_b = -1;                 // coincident only
-  Vec3 velocity = Vec3::Zero();    // m/s, prescribed only
-  Vec3 amplitude = Vec3::Zero();   // m, prescribed only
-  double frequency = 0.0;          // Hz, prescribed only
+  int node_b = -1;                // coincident only
+  Vec3 velocity = Vec3::Zero();   // m/s, prescribed only
+  Vec3 amplitude = Vec3::Zero();  // m, prescribed only
+  double frequency = 0.0;         // Hz, prescribed only
 };
 
 struct NodalLoad {
@@ -114,10 +114,10 @@ struct IntegratorOptions {
   double alpha = -0.1;       // HHT only, ∈ [−1/3, 0]
   double dt = 1e-3;          // s: the step (fixed) or the first step (adaptive)
   bool adaptive = false;
-  double rtol = 1e-4;        // local error, relative to the displacement from the reference
-  double atol = 1e-6;        // local error, absolute (m for positions, 1 for slopes)
-  double dt_min = 1e-10;     // s: below this an adaptive run stops with an error
-  double dt_max = 0.0;       // s: 0 = no limit beyond the duration
+  double rtol = 1e-4;     // local error, relative to the displacement from the reference
+  double atol = 1e-6;     // local error, absolute (m for positions, 1 for slopes)
+  double dt_min = 1e-10;  // s: below this an adaptive run stops with an error
+  double dt_max = 0.0;    // s: 0 = no limit beyond the duration
   // auto: embedded where the method has one (Radau IIA odd s, HHT), else step doubling.
   std::string error_estimate = "auto";  // auto | embedded | step_doubling
   std::string newton = "simplified";    // simplified (frozen Jacobian) | full
@@ -173,14 +173,14 @@ struct ElementPath {
 // The head's coupling to every element of the path is preallocated, so the sparsity
 // pattern is fixed for the run.
 struct MovingContact {
-  std::string name;            // the pantograph's name
-  int head_node = 0;           // node index of the head
-  int path = 0;                // index into Model::paths
-  double speed = 0.0;          // m/s
-  double start = 0.0;          // m along the path at t = 0
-  double stiffness = 0.0;      // N/m, k_c > 0
-  double damping = 0.0;        // N·s/m (acts only in contact)
-  Vec3 up = Vec3::UnitZ();     // unit contact direction (opposite to gravity)
+  std::string name;         // the pantograph's name
+  int head_node = 0;        // node index of the head
+  int path = 0;             // index into Model::paths
+  double speed = 0.0;       // m/s
+  double start = 0.0;       // m along the path at t = 0
+  double stiffness = 0.0;   // N/m, k_c > 0
+  double damping = 0.0;     // N·s/m (acts only in contact)
+  Vec3 up = Vec3::UnitZ();  // unit contact direction (opposite to gravity)
   // What the pantograph reader built, for `catena check` (the stages themselves are nodes,
   // point masses, springs, an elastic support and loads in the model's vectors).
   struct Stage {
@@ -201,8 +201,8 @@ struct DynamicOptions {
 
 struct Model {
   std::string name;
-  std::string source_file;  // path as given
-  std::string source_text;  // the scene text after --set overrides, stored in output
+  std::string source_file;        // path as given
+  std::string source_text;        // the scene text after --set overrides, stored in output
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
 
   std::vector<Node> nodes;

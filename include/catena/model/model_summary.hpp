@@ -23,8 +23,8 @@ int suggested_rank_count(const Model& model);
 // and the suggested rank count; then "Left out:" (what the model does not represent:
 // anchor spans, what the scene leaves out or disables such as stitch wires, clamp masses
 // or damping) and "warning: " lines (a pantograph or load leaving its path before the
-// analysis ends, an evaluation section not traversed within the duration). `n_ranks_running` is the size of the communicator
-// the check runs on, shown beside the suggestion (pass 1 if unknown).
+// analysis ends, an evaluation section not traversed within the duration). `n_ranks_running` is the
+// size of the communicator the check runs on, shown beside the suggestion (pass 1 if unknown).
 std::string describe(const Model& model, int n_ranks_running);
 
 }  // namespace catena::model

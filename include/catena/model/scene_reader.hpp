@@ -38,8 +38,7 @@ void check_scene_text(const std::string& text, const std::string& file_label);
 // run's estimated memory (memory_estimate.hpp) exceeds it, the lines before they are
 // generated. Throws InputError.
 Model parse_scene(const std::string& text, const std::string& file_label,
-                  const std::vector<std::string>& overrides = {},
-                  const MemoryBudget& budget = {});
+                  const std::vector<std::string>& overrides = {}, const MemoryBudget& budget = {});
 
 // Not collective. Reads the file at `path` (it must exist, be a readable regular file of
 // at most max_scene_bytes) and parses it with `path` as the label. Throws InputError.

@@ -43,10 +43,10 @@ enum class UnknownKind : std::uint8_t {
 enum class UpdateRule : std::uint8_t { additive };
 
 struct UnknownKindInfo {
-  std::string_view name;   // in messages: "a cable node"
-  std::string_view label;  // in summaries: "cable"
+  std::string_view name;     // in messages: "a cable node"
+  std::string_view label;    // in summaries: "cable"
   std::string_view used_by;  // in messages: who gives a node this kind
-  int size;               // unknowns in a block of this kind (<= kMaxBlockUnknowns)
+  int size;                  // unknowns in a block of this kind (<= kMaxBlockUnknowns)
   // Component names, the first `size` used; supports (`fix: [rx_z]`) and messages use them.
   std::array<std::string_view, kMaxBlockUnknowns> components;
   int position;  // first component of the block's position (x, y, z), or −1

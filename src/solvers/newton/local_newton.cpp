@@ -103,8 +103,8 @@ bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients&
     ~EndEvent() { PetscLogEventEnd(local_newton_event(), 0, 0, 0, 0); }
   } end_event;
   // Where corrections keep failing (a residual spread over the system, or windows that
-  // cannot be owned alone: constraints, contacts across ranks), try ever more rarely: after k failures
-  // in a row, skip the next 2^k − 1 calls (at most 63). Same decision on every rank.
+  // cannot be owned alone: constraints, contacts across ranks), try ever more rarely: after k
+  // failures in a row, skip the next 2^k − 1 calls (at most 63). Same decision on every rank.
   if (skip_ > 0) {
     --skip_;
     return false;
@@ -127,8 +127,8 @@ bool LocalNewton::correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients&
   return true;
 }
 
-LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficients& c,
-                                          double atol, int layers, double* norm) {
+LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficients& c, double atol,
+                                          int layers, double* norm) {
   const MPI_Comm comm = system_.comm();
   PetscInt n = 0;
   CATENA_PETSC(VecGetLocalSize(vecs.r, &n));
@@ -144,7 +144,7 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   // What the windows cannot change must already meet the tolerance (with a margin for the
   // rows at the windows' edges, which the correction moves too).
   double sums[3] = {0.0, 0.0, static_cast<double>(nu)};  // outside², inside², unknowns
-  for (PetscInt i = 0, next = 0; i < n; ++i) {  // unknowns ascending: `next` walks them
+  for (PetscInt i = 0, next = 0; i < n; ++i) {           // unknowns ascending: `next` walks them
     const bool inside = next < static_cast<PetscInt>(nu) && patch.unknowns[next] == i;
     sums[inside ? 1 : 0] += r.data()[i] * r.data()[i];
     if (inside) ++next;
@@ -153,8 +153,8 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
   MPI_Allreduce(sums, global, 3, MPI_DOUBLE, MPI_SUM, comm);
   const double total_unknowns = global[2];
   if (total_unknowns == 0.0) return Outcome::no_window;
-  if (total_unknowns > settings_.max_window_fraction *
-                           static_cast<double>(system_.dof_map().n_global()))
+  if (total_unknowns >
+      settings_.max_window_fraction * static_cast<double>(system_.dof_map().n_global()))
     return Outcome::too_wide;
   if (std::sqrt(std::max(global[0], 0.0)) > 0.9 * atol) return Outcome::too_narrow;
   double previous = std::sqrt(std::max(global[0], 0.0) + global[1]);
@@ -201,7 +201,8 @@ LocalNewton::Outcome LocalNewton::attempt(const Vectors& vecs, const Coefficient
       Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
       lu.compute(J);
       Eigen::VectorXd rhs(size), delta;
-      for (size_t i = 0; i < nu; ++i) rhs[static_cast<Eigen::Index>(i)] = -r.data()[patch.unknowns[i]];
+      for (size_t i = 0; i < nu; ++i)
+        rhs[static_cast<Eigen::Index>(i)] = -r.data()[patch.unknowns[i]];
       if (lu.info() == Eigen::Success) delta = lu.solve(rhs);
       if (lu.info() != Eigen::Success || !delta.allFinite()) {
         failed = 1;

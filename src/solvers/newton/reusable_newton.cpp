@@ -28,9 +28,9 @@ ReusableNewton::ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& p
   CATENA_PETSC(PetscOptionsGetReal(nullptr, prefix.c_str(), name, &theta, &set));
   if (set) {
     if (!(theta > 0.0 && theta < 1.0))
-      throw InputError({"", 0, "-" + prefix + (name + 1)},
-                       "refresh contraction " + std::to_string(theta) +
-                           " is outside the accepted range (0, 1)");
+      throw InputError(
+          {"", 0, "-" + prefix + (name + 1)},
+          "refresh contraction " + std::to_string(theta) + " is outside the accepted range (0, 1)");
     settings_.refresh_contraction = theta;
   }
   // Our convergence test owns the iteration limit.
@@ -69,9 +69,8 @@ PetscErrorCode ReusableNewton::form_jacobian(SNES snes, Vec x, Mat J, Mat, void*
   });
 }
 
-PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm,
-                                         PetscReal snorm, PetscReal fnorm,
-                                         SNESConvergedReason* reason, void* ctx) {
+PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                         PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   auto* self = static_cast<ReusableNewton*>(ctx);
   const NewtonSettings& s = self->settings_;
   *reason = SNES_CONVERGED_ITERATING;
@@ -102,7 +101,8 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
       // The tangent of an earlier iterate no longer contracts well: re-evaluate it now.
       self->tangent_valid_ = false;
       if (SNESSetLagJacobian(snes, -2) != 0) return PETSC_ERR_LIB;
-    } else if (theta > s.divergence_contraction && self->previous_theta_ > s.divergence_contraction) {
+    } else if (theta > s.divergence_contraction &&
+               self->previous_theta_ > s.divergence_contraction) {
       // Two poor iterations in a row with a fresh tangent (one is tolerated: full Newton's
       // residual may grow once before it converges).
       why << "Newton does not contract (|F| ratios " << self->previous_theta_ << ", " << theta

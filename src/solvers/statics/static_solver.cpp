@@ -3,8 +3,8 @@
 #include <petscsnes.h>
 
 #include <algorithm>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 
 #include "catena/assembly/petsc_call.hpp"
@@ -56,9 +56,7 @@ struct StaticSolver::Impl {
 
   static PetscErrorCode form_function(SNES, Vec q, Vec f, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
-    return self->guard.run([&] {
-      self->system.force({q, nullptr, self->path}, f);
-    });
+    return self->guard.run([&] { self->system.force({q, nullptr, self->path}, f); });
   }
   static PetscErrorCode form_jacobian(SNES, Vec q, Mat J, Mat, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
@@ -76,8 +74,8 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   s.jacobian = system.create_matrix();
   CATENA_PETSC(SNESCreate(system.comm(), s.snes.out()));
   CATENA_PETSC(SNESSetFunction(s.snes.get(), s.residual.get(), Impl::form_function, &s));
-  CATENA_PETSC(SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(),
-                               Impl::form_jacobian, &s));
+  CATENA_PETSC(
+      SNESSetJacobian(s.snes.get(), s.jacobian.get(), s.jacobian.get(), Impl::form_jacobian, &s));
   // Scene tolerances first, so that -static_snes_* on the command line wins.
   CATENA_PETSC(SNESSetTolerances(s.snes.get(), options.atol, options.rtol, kNewtonStepTolerance,
                                  options.max_newton_iterations, 100000));
@@ -128,9 +126,9 @@ constexpr double kRoundoffFraction = 1e-10;
 
 void check_factorisation(const MumpsStatus& mumps, const std::string& where) {
   if (mumps.infog1 < 0)
-    throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
-                         std::to_string(mumps.infog1) + ", INFOG(2) = " +
-                         std::to_string(mumps.infog2) + " at " + where);
+    throw NumericalError(
+        "static solve: MUMPS failed with INFOG(1) = " + std::to_string(mumps.infog1) +
+        ", INFOG(2) = " + std::to_string(mumps.infog2) + " at " + where);
 }
 
 }  // namespace
@@ -180,10 +178,10 @@ StaticReport StaticSolver::solve(Vec q) {
     if (s.n_jacobians > 0) {
       const MumpsStatus newton = mumps_status(ksp);
       if (newton.infog1 < 0 && newton.infog1 != -10)
-        throw NumericalError("static solve: MUMPS failed with INFOG(1) = " +
-                             std::to_string(newton.infog1) + ", INFOG(2) = " +
-                             std::to_string(newton.infog2) + " at " +
-                             describe_path(target, tau_end));
+        throw NumericalError(
+            "static solve: MUMPS failed with INFOG(1) = " + std::to_string(newton.infog1) +
+            ", INFOG(2) = " + std::to_string(newton.infog2) + " at " +
+            describe_path(target, tau_end));
     }
 
     // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
@@ -250,8 +248,7 @@ StaticReport StaticSolver::solve(Vec q) {
        << " steps converged to unstable equilibria (negative tangent stiffness) and were "
           "retried. ";
     if (singular)
-      os << "The stiffness matrix at the last equilibrium is singular ("
-         << tangent.null_pivots
+      os << "The stiffness matrix at the last equilibrium is singular (" << tangent.null_pivots
          << " null pivots): the structure is probably a mechanism; check its supports.";
     else
       os << "Try a smaller analysis.load_steps.initial or more analysis.newton.max_iterations.";

@@ -54,8 +54,8 @@ void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
   algebraic_.zero_algebraic(a);
 }
 
-void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q,
-                             Vec v, Vec a) {
+void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q, Vec v,
+                             Vec a) {
   AccelerationSolver(system, mass).solve(t, q, v, a);
 }
 

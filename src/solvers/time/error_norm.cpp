@@ -23,8 +23,7 @@ double weighted_error_norm(const ErrorTolerance& tol, Vec error, Vec q0, Vec q1)
     if (skip && skip[i] != 0.0) continue;
     sums[1] += 1.0;
     const double ref = r ? r[i] : 0.0;
-    const double scale =
-        tol.atol + tol.rtol * std::max(std::abs(a[i] - ref), std::abs(b[i] - ref));
+    const double scale = tol.atol + tol.rtol * std::max(std::abs(a[i] - ref), std::abs(b[i] - ref));
     const double x = e[i] / scale;
     sum += x * x;
   }

@@ -6,10 +6,10 @@
 #include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
-#include "catena/solvers/time/algebraic_part.hpp"
 #include "catena/solvers/newton/local_newton.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
+#include "catena/solvers/time/algebraic_part.hpp"
 #include "catena/solvers/time/step_state.hpp"
 
 namespace catena::solvers {
@@ -30,9 +30,9 @@ bool local_newton_options(bool on, LocalNewtonSettings& local) {
     throw InputError({"", 0, "-hht_local_newton_worn"},
                      "local Newton worn fraction " + std::to_string(worn) + "; accepted: > 0");
   if (!(window > 0.0 && window <= 1.0))
-    throw InputError({"", 0, "-hht_local_newton_max_window"},
-                     "local Newton window fraction " + std::to_string(window) +
-                         "; accepted: (0, 1]");
+    throw InputError(
+        {"", 0, "-hht_local_newton_max_window"},
+        "local Newton window fraction " + std::to_string(window) + "; accepted: (0, 1]");
   local.layers = static_cast<int>(layers);
   local.worn_fraction = worn;
   local.max_window_fraction = window;
@@ -145,13 +145,12 @@ struct HhtIntegrator::Impl {
 HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options)
     : StepStateIntegrator(system) {
   if (!(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
-    throw InputError({"", 0, "integrator.alpha"},
-                     "HHT alpha = " + std::to_string(options.alpha) +
-                         " is outside the accepted range [-1/3, 0]");
+    throw InputError({"", 0, "integrator.alpha"}, "HHT alpha = " + std::to_string(options.alpha) +
+                                                      " is outside the accepted range [-1/3, 0]");
   impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known,
-                       &s.tangent_q, &s.tangent_v})
+  for (VecHandle* v :
+       {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known, &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
   // Only the matrices this system uses: each holds the full pattern from the start.
   s.mass = system.create_matrix();
@@ -187,8 +186,8 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
     s.newton->set_local_correction([&s](Vec a, Vec r, double atol, double* norm) {
       const LocalNewton::Coefficients c{1.0 + s.options.alpha, s.beta * s.h * s.h, s.gamma * s.h,
                                         s.state.time() + s.h};
-      return s.local->correct(a, r, s.state.pending_q(), s.state.pending_v(), s.f1.get(), c,
-                              atol, norm);
+      return s.local->correct(a, r, s.state.pending_q(), s.state.pending_v(), s.f1.get(), c, atol,
+                              norm);
     });
   }
 }

@@ -17,8 +17,8 @@ AccelerationSolve consistent_acceleration_of(assembly::SecondOrderSystem& system
 }
 
 StepState::StepState(const assembly::SecondOrderSystem& system) {
-  for (VecHandle* v : {&q_, &v_, &a_, &q_prev_, &v_prev_, &a_prev_, &q_pending_, &v_pending_,
-                       &a_pending_})
+  for (VecHandle* v :
+       {&q_, &v_, &a_, &q_prev_, &v_prev_, &a_prev_, &q_pending_, &v_pending_, &a_pending_})
     *v = system.create_vector();
 }
 

@@ -24,9 +24,9 @@ class Driver {
          const TransientOptions& options, TransientObserver& observer)
       : system_(system), in_(integrator), options_(options), observer_(observer) {
     const StepControl& c = options.step;
-    doubling_ = c.adaptive && (c.estimate == ErrorEstimate::step_doubling ||
-                               (c.estimate == ErrorEstimate::automatic &&
-                                !integrator.has_embedded_estimate()));
+    doubling_ = c.adaptive &&
+                (c.estimate == ErrorEstimate::step_doubling ||
+                 (c.estimate == ErrorEstimate::automatic && !integrator.has_embedded_estimate()));
     if (c.adaptive && c.estimate == ErrorEstimate::embedded && !integrator.has_embedded_estimate())
       throw InputError({"", 0, "integrator.error_estimate"},
                        integrator.name() + " has no embedded error estimate; use step_doubling");
@@ -105,8 +105,9 @@ class Driver {
       }
       if (c.adaptive) {
         const double factor =
-            a.error > 0.0 ? std::min(c.growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
-                          : c.growth;
+            a.error > 0.0
+                ? std::min(c.growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
+                : c.growth;
         // Keep h (and its factorisation) for small changes.
         h = (factor >= 1.0 && factor <= 1.2) ? step : step * factor;
       } else {
@@ -227,8 +228,7 @@ class Driver {
   // at dt until now (its later halvings count as the same cut step).
   void note_fixed_step_cut(double t, double failed, double h_next, bool first_failure) {
     if (first_failure) ++report_.fixed_steps_cut;
-    observer_.fixed_step_cut(
-        {t, failed, h_next, last_failure_.failure, report_.fixed_steps_cut});
+    observer_.fixed_step_cut({t, failed, h_next, last_failure_.failure, report_.fixed_steps_cut});
   }
 
   void record(double step, const Attempt& a, int rejected, double next_h) {
@@ -253,8 +253,10 @@ class Driver {
     os << in_.name() << ": the step size fell below its minimum at t = " << t << " s (h = " << h
        << " s < dt_min = " << options_.step.dt_min << " s)";
     const StepOutcome& f = last_failure_;
-    if (!f.failure.empty()) os << "; last attempt: " << f.failure;
-    else if (f.error > 0) os << "; last error estimate " << f.error << " (accepted: <= 1)";
+    if (!f.failure.empty())
+      os << "; last attempt: " << f.failure;
+    else if (f.error > 0)
+      os << "; last error estimate " << f.error << " (accepted: <= 1)";
     os << "; residual |R| = " << f.residual_norm << " N";
     if (f.worst_dof >= 0) os << "; largest residual at " << system_.describe_dof(f.worst_dof);
     throw NumericalError(os.str());

@@ -69,8 +69,8 @@ double TautString::first_frequency() const {
 model::Model TautString::model() const {
   model::Model m;
   m.gravity = Vec3::Zero();
-  const auto nodes =
-      add_line(m, {0, 0, 0}, {L, 0, 0}, n, model::CableProps{EA, EI, mu, 0.0, T / EA, {}, false, false});
+  const auto nodes = add_line(m, {0, 0, 0}, {L, 0, 0}, n,
+                              model::CableProps{EA, EI, mu, 0.0, T / EA, {}, false, false});
   set_reference_frames(m);
   pin(m, nodes.front());
   pin(m, nodes.back());

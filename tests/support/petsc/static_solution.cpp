@@ -38,7 +38,8 @@ GatheredStatic solve_static(MPI_Comm comm, const model::Model& m) {
   std::vector<elements::SectionResult> sections;
   catena::assembly::StateView(system).section_results({q.get(), nullptr, {}}, elements, sections);
   for (size_t i = 0; i < elements.size(); ++i) g.axial_force[elements[i]] = sections[i].axial_force;
-  const assembly::Reactions r = catena::assembly::StateView(system).reactions({q.get(), nullptr, {}});
+  const assembly::Reactions r =
+      catena::assembly::StateView(system).reactions({q.get(), nullptr, {}});
   for (size_t i = 0; i < r.nodes.size(); ++i)
     for (int d = 0; d < 3; ++d) {
       g.reaction_force[3 * r.nodes[i] + d] = r.force[3 * i + d];

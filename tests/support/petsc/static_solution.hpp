@@ -11,9 +11,9 @@
 namespace catena::test {
 
 struct GatheredStatic {
-  std::vector<double> positions;  // 3 per node, model order
-  std::vector<double> slopes;     // 3 per node
-  std::vector<double> axial_force;  // per element
+  std::vector<double> positions;       // 3 per node, model order
+  std::vector<double> slopes;          // 3 per node
+  std::vector<double> axial_force;     // per element
   std::vector<double> reaction_force;  // 3 per model node (zero where unsupported)
   std::vector<double> reaction_moment;
   solvers::StaticReport report;

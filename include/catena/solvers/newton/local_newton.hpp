@@ -23,9 +23,9 @@
 namespace catena::solvers {
 
 struct LocalNewtonSettings {
-  int layers = 32;              // kernel layers around the large entries, to start with
-  int max_layers = 1024;        // the widest window tried
-  int max_iterations = 4;       // local Newton iterations per correction
+  int layers = 32;         // kernel layers around the large entries, to start with
+  int max_layers = 1024;   // the widest window tried
+  int max_iterations = 4;  // local Newton iterations per correction
   // The windows hold the largest entries of R, all but a rest of norm outside_fraction·atol.
   double outside_fraction = 0.5;
   // A correction must cost less than the global iteration it replaces: measured on the
@@ -43,10 +43,10 @@ struct LocalNewtonSettings {
 };
 
 struct LocalNewtonCounters {
-  long attempts = 0;     // corrections tried
-  long successes = 0;    // corrections that met the tolerance
-  long iterations = 0;   // local Newton iterations (over every rank's windows at once)
-  long unknowns = 0;     // window unknowns, summed over ranks and iterations
+  long attempts = 0;    // corrections tried
+  long successes = 0;   // corrections that met the tolerance
+  long iterations = 0;  // local Newton iterations (over every rank's windows at once)
+  long unknowns = 0;    // window unknowns, summed over ranks and iterations
 };
 
 class LocalNewton {
@@ -64,8 +64,7 @@ class LocalNewton {
   // vectors). If the windows bring ‖R‖₂ to atol, updates all five in place (r and f
   // exactly where they changed), sets *norm and returns true; otherwise changes nothing
   // and returns false.
-  bool correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol,
-               double* norm);
+  bool correct(Vec a, Vec r, Vec q, Vec v, Vec f, const Coefficients& c, double atol, double* norm);
 
   const LocalNewtonCounters& counters() const { return counters_; }
   // The window width (kernel layers) the next correction starts from.
@@ -99,7 +98,7 @@ class LocalNewton {
   LocalNewtonSettings settings_;
   LocalNewtonCounters counters_;
   int layers_;
-  int misses_ = 0, skip_ = 0;  // failures in a row; calls still to skip
+  int misses_ = 0, skip_ = 0;          // failures in a row; calls still to skip
   double worked_since_tangent_ = 0.0;  // window unknowns × iterations, all ranks
   double worn_limit_ = 0.0;
 };

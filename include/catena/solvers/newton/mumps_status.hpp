@@ -9,7 +9,7 @@
 namespace catena::solvers {
 
 struct MumpsStatus {
-  bool is_mumps = false;  // false: another solver was chosen on the command line
+  bool is_mumps = false;   // false: another solver was chosen on the command line
   bool symmetric = false;  // LDLᵀ (PCCHOLESKY): negative_pivots is the inertia
   long infog1 = 0, infog2 = 0, null_pivots = 0, negative_pivots = 0;
 };

@@ -55,7 +55,7 @@ struct NewtonSettings {
   bool full_newton = false;
   // Refresh a stale tangent above this rate; -<prefix>newton_refresh_contraction overrides it.
   double refresh_contraction = 0.3;
-  double divergence_contraction = 0.9;  // fail above this rate with a fresh tangent
+  double divergence_contraction = 0.9;   // fail above this rate with a fresh tangent
   Pivoting pivoting = Pivoting::needed;  // may the factorisation skip pivoting (direct_newton.hpp)
 };
 
@@ -68,9 +68,8 @@ class ReusableNewton {
 
   // Collective. J: the matrix to build into (its pattern fixed); r: a residual-shaped
   // vector (kept). Options prefix `prefix` (e.g. "irk_": -irk_ksp_type, ...).
-  ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& prefix,
-                 JacobianSymmetry symmetry, const NewtonSettings& settings, Residual residual,
-                 MatrixBuilder builder);
+  ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& prefix, JacobianSymmetry symmetry,
+                 const NewtonSettings& settings, Residual residual, MatrixBuilder builder);
   ~ReusableNewton();
   ReusableNewton(const ReusableNewton&) = delete;
   ReusableNewton& operator=(const ReusableNewton&) = delete;
@@ -78,7 +77,10 @@ class ReusableNewton {
   // The matrix coefficients changed (e.g. a new step size): rebuild before the next solve.
   void invalidate_matrix() { matrix_valid_ = false; }
   // The tangent is out of date: re-evaluate it before the next solve.
-  void invalidate_tangent() { tangent_valid_ = false; matrix_valid_ = false; }
+  void invalidate_tangent() {
+    tangent_valid_ = false;
+    matrix_valid_ = false;
+  }
 
   // Collective. Solves F(x) = 0 from the initial guess in x. A solve that started from
   // the tangent of an earlier solve and fails is retried once from the same guess with a

@@ -23,8 +23,8 @@ struct StaticReport {
   int n_load_steps = 0;      // accepted
   int n_rejected_steps = 0;
   int n_unstable_rejections = 0;  // rejected because the equilibrium was unstable
-  int n_newton_iterations = 0;  // over all attempts
-  double residual_norm = 0.0;   // 2-norm of f at the returned state, N
+  int n_newton_iterations = 0;    // over all attempts
+  double residual_norm = 0.0;     // 2-norm of f at the returned state, N
 };
 
 class StaticSolver {

@@ -34,7 +34,7 @@ class AccelerationSolver {
 };
 
 // Collective. One-off AccelerationSolver(system, mass).solve(t, q, v, a).
-void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q,
-                             Vec v, Vec a);
+void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q, Vec v,
+                             Vec a);
 
 }  // namespace catena::solvers

@@ -17,15 +17,15 @@ namespace catena::solvers {
 // Cumulative work counters (reported per run and in the output's statistics).
 struct IntegratorCounters {
   long steps_accepted = 0;
-  long steps_rejected = 0;       // error test failed or Newton failed
+  long steps_rejected = 0;  // error test failed or Newton failed
   long newton_iterations = 0;
-  long newton_failures = 0;      // attempts whose Newton iteration did not converge
-  long residual_evaluations = 0; // full-system f evaluations (a stage counts once)
-  long jacobian_evaluations = 0; // element K/C assemblies
-  long factorizations = 0;       // numeric LU/LDLᵀ factorisations
-  long linear_solves = 0;        // pairs of triangular solves
-  long local_corrections = 0;    // Newton solves finished by a local correction (HHT)
-  long local_unknowns = 0;       // window unknowns of local Newton iterations, summed
+  long newton_failures = 0;       // attempts whose Newton iteration did not converge
+  long residual_evaluations = 0;  // full-system f evaluations (a stage counts once)
+  long jacobian_evaluations = 0;  // element K/C assemblies
+  long factorizations = 0;        // numeric LU/LDLᵀ factorisations
+  long linear_solves = 0;         // pairs of triangular solves
+  long local_corrections = 0;     // Newton solves finished by a local correction (HHT)
+  long local_unknowns = 0;        // window unknowns of local Newton iterations, summed
 };
 
 // Not collective. The counters an integrator keeps itself (steps, Newton iterations and
@@ -51,7 +51,7 @@ struct ErrorTolerance {
 double weighted_error_norm(const ErrorTolerance& tol, Vec error, Vec q0, Vec q1);
 
 struct StepOutcome {
-  bool converged = false;     // Newton converged (if not, `failure` says why)
+  bool converged = false;  // Newton converged (if not, `failure` says why)
   int newton_iterations = 0;
   double residual_norm = 0.0;  // 2-norm of the last Newton residual, N
   // Weighted local error estimate (≤ 1: acceptable) when the integrator has an embedded

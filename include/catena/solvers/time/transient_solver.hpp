@@ -29,11 +29,11 @@ namespace catena::solvers {
 enum class ErrorEstimate { automatic, embedded, step_doubling };
 
 struct StepControl {
-  double dt = 1e-3;      // s: the fixed step, or the first adaptive step
+  double dt = 1e-3;  // s: the fixed step, or the first adaptive step
   bool adaptive = false;
   double rtol = 1e-4, atol = 1e-6;  // weighted local error (time_integrator.hpp)
-  double dt_min = 1e-10;  // s
-  double dt_max = 0.0;    // s, 0: no limit
+  double dt_min = 1e-10;            // s
+  double dt_max = 0.0;              // s, 0: no limit
   ErrorEstimate estimate = ErrorEstimate::automatic;
   double growth = 5.0, shrink = 0.2, safety = 0.9;
 };

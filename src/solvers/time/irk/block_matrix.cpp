@@ -131,8 +131,8 @@ void BlockMatrix::assemble_rows(const std::vector<Mat>& K_rows, const std::vecto
         }
       }
       const PetscInt row = g * s + i;
-      CATENA_PETSC(MatSetValues(B_.get(), 1, &row, n * s, cols.data(), values.data(),
-                                INSERT_VALUES));
+      CATENA_PETSC(
+          MatSetValues(B_.get(), 1, &row, n * s, cols.data(), values.data(), INSERT_VALUES));
     }
   }
   CATENA_PETSC(MatAssemblyBegin(B_.get(), MAT_FINAL_ASSEMBLY));

@@ -4,10 +4,10 @@
 #include <sstream>
 #include <vector>
 
-#include "catena/solvers/time/irk/block_matrix.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
-#include "catena/solvers/time/irk/interleaved_vectors.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
+#include "catena/solvers/time/irk/block_matrix.hpp"
+#include "catena/solvers/time/irk/interleaved_vectors.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 // 2n × 2n one (complex pair), its MUMPS KSP and its block vectors.
 struct Block {
   EigenBlock where;
-  MatHandle single;                 // size 1: M′ + hλ C + h²λ² K, K's pattern
+  MatHandle single;                   // size 1: M′ + hλ C + h²λ² K, K's pattern
   std::unique_ptr<BlockMatrix> pair;  // size 2: [R −S; S R], interleaved
   KspHandle ksp;
   VecHandle rhs, solution, row_scale;
@@ -234,8 +234,8 @@ DecoupledStageSolver::DecoupledStageSolver(Mat pattern, const Eigen::MatrixXd& A
       v->push_back(std::move(x));
     }
   const PetscInt n_local = m.n_owned * m.s;
-  CATENA_PETSC(MatCreateShell(comm, n_local, n_local, PETSC_DETERMINE, PETSC_DETERMINE, &m,
-                              m.shell.out()));
+  CATENA_PETSC(
+      MatCreateShell(comm, n_local, n_local, PETSC_DETERMINE, PETSC_DETERMINE, &m, m.shell.out()));
   CATENA_PETSC(MatShellSetOperation(m.shell.get(), MATOP_MULT,
                                     reinterpret_cast<void (*)(void)>(Impl::shell_mult)));
 }

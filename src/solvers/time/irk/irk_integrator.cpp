@@ -7,15 +7,15 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/model/integrator_catalogue.hpp"
-#include "catena/solvers/time/algebraic_part.hpp"
-#include "catena/solvers/time/irk/block_matrix.hpp"
-#include "catena/solvers/time/consistent_acceleration.hpp"
-#include "catena/solvers/time/irk/decoupled_stage_solver.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
-#include "catena/solvers/time/irk/interleaved_vectors.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
+#include "catena/solvers/time/algebraic_part.hpp"
+#include "catena/solvers/time/consistent_acceleration.hpp"
+#include "catena/solvers/time/irk/block_matrix.hpp"
+#include "catena/solvers/time/irk/decoupled_stage_solver.hpp"
+#include "catena/solvers/time/irk/interleaved_vectors.hpp"
 #include "catena/solvers/time/step_state.hpp"
 
 namespace catena::solvers {
@@ -143,9 +143,7 @@ struct IrkIntegrator::Impl {
 
   // Constraint rows g(U_i) are scaled by m̄/h² (the stage matrix then holds m̄ Ā_ij G).
   double constraint_row_scale() const { return algebraic->mass_scale() / (h * h); }
-  Mat block_diagonal_part() const {
-    return algebraic->active() ? mass_coupling.get() : mass.get();
-  }
+  Mat block_diagonal_part() const { return algebraic->active() ? mass_coupling.get() : mass.get(); }
 
   std::vector<Vec> raw(const std::vector<VecHandle>& v) const {
     std::vector<Vec> out;
@@ -315,8 +313,7 @@ struct IrkIntegrator::Impl {
 IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptions& options)
     : StepStateIntegrator(system), impl_(std::make_unique<Impl>(system, options, step_state())) {
   Impl& m = *impl_;
-  for (VecHandle* v : {&m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv, &m.tangent_q,
-                       &m.tangent_v})
+  for (VecHandle* v : {&m.scratch, &m.ru, &m.rv, &m.rhs, &m.xu, &m.xv, &m.tangent_q, &m.tangent_v})
     *v = system.create_vector();
   m.Kst = vectors(system, m.s);
   m.Klast = vectors(system, m.s);
@@ -337,16 +334,14 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
   if (m.algebraic->active()) {
     // Lobatto IIIA: A's zero first row (explicit first stage) makes the stage matrix
     // singular in the multiplier rows (the catalogue's refusal, also the scene reader's).
-    if (const std::optional<model::IntegratorRefusal> refusal =
-            model::refuse_integrator({.type = std::string(tableau_family_name(m.T.family)),
-                                      .stages = m.s},
-                                     system.model().constraints.size()))
+    if (const std::optional<model::IntegratorRefusal> refusal = model::refuse_integrator(
+            {.type = std::string(tableau_family_name(m.T.family)), .stages = m.s},
+            system.model().constraints.size()))
       throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
     if (m.T.family != TableauFamily::radau_iia)
       m.end_multipliers = std::make_unique<AccelerationSolver>(system, m.mass.get());
     m.mass_coupling = system.create_matrix();
-    system.jacobian({m.state.q(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
-                    m.mass_coupling.get());
+    system.jacobian({m.state.q(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0}, m.mass_coupling.get());
   }
   // Decoupled where the transformation is exact: simplified Newton (one K, C for every
   // stage) and an A with distinct nonzero eigenvalues.
@@ -545,8 +540,8 @@ void IrkIntegrator::restore_resume_state(const ResumeState& in) {
   // the estimate's filter are assembled and factored again from them when next needed.
   const long serial = static_cast<long>(in.integer("irk.tangent_serial"));
   if (serial > 0)
-    m.evaluate_tangent({in.vector("irk.tangent_q"), in.vector("irk.tangent_v"), {},
-                        in.real("irk.tangent_t")});
+    m.evaluate_tangent(
+        {in.vector("irk.tangent_q"), in.vector("irk.tangent_v"), {}, in.real("irk.tangent_t")});
   m.tangent_serial = serial;
   m.blocks_h = m.estimate_h = -1.0;
   m.blocks_tangent = m.estimate_tangent = -1;

@@ -54,8 +54,9 @@ std::optional<TableauDecomposition> decompose_butcher_matrix(const Eigen::Matrix
     }
     for (int j = 0; j < i; ++j)
       if (std::abs(values(i) - values(j)) <= kSeparation * scale) {
-        refuse(why_not, "A has a repeated eigenvalue (not diagonalisable by a well-"
-                        "conditioned T)");
+        refuse(why_not,
+               "A has a repeated eigenvalue (not diagonalisable by a well-"
+               "conditioned T)");
         return std::nullopt;
       }
   }
@@ -127,8 +128,8 @@ std::optional<TableauDecomposition> decompose_butcher_matrix(const Eigen::Matrix
         out.D(i, j) = static_cast<double>(D(i, j));
       } else if (std::abs(D(i, j)) > kOffBlock * scale) {
         std::ostringstream os;
-        os << "T⁻¹AT is not block diagonal (entry (" << i << ", " << j << ") = "
-           << static_cast<double>(D(i, j)) << ")";
+        os << "T⁻¹AT is not block diagonal (entry (" << i << ", " << j
+           << ") = " << static_cast<double>(D(i, j)) << ")";
         refuse(why_not, os.str());
         return std::nullopt;
       }

@@ -301,8 +301,7 @@ PetscTsIntegrator::PetscTsIntegrator(assembly::SecondOrderSystem& system,
                      "the PETSc TS bridge takes no Lagrange-multiplier constraints");
   impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.qw, &s.vw, &s.qdw, &s.vdw, &s.fw, &s.Mb})
-    *v = system.create_vector();
+  for (VecHandle* v : {&s.qw, &s.vw, &s.qdw, &s.vdw, &s.fw, &s.Mb}) *v = system.create_vector();
   for (MatHandle* m : {&s.M, &s.K, &s.C}) *m = system.create_matrix();
   // M is constant (ANCF); K and C are evaluated once here for their patterns.
   system.reference_state(s.qw.get());
@@ -455,8 +454,8 @@ StepOutcome PetscTsIntegrator::attempt(double h, const ErrorTolerance*) {
     CATENA_PETSC(TSAlpha2GetParams(ts, &am, &af, &gamma, &beta));
     const double h1 = t1 - s.state.time();
     CATENA_PETSC(VecWAXPY(s.state.pending_a(), -1.0, s.state.v(), s.state.pending_v()));
-    CATENA_PETSC(VecAXPBY(s.state.pending_a(), -(1.0 - gamma) / gamma, 1.0 / (h1 * gamma),
-                          s.state.a()));
+    CATENA_PETSC(
+        VecAXPBY(s.state.pending_a(), -(1.0 - gamma) / gamma, 1.0 / (h1 * gamma), s.state.a()));
   }
   // First-order types: the new acceleration is solved for if dense output needs it.
   s.state.set_pending(t1, s.second_order);

@@ -44,11 +44,11 @@ namespace catena::solvers {
 // The stage matrix's parts; pointers owned by the caller, kept valid while the solver
 // uses them (until the next assemble()).
 struct StageMatrixParts {
-  Mat K = nullptr;           // ∂R/∂q, n × n
-  Mat C = nullptr;           // ∂R/∂v, n × n (same pattern)
-  Mat M = nullptr;           // the δ_ij part (M, or M + Gᵀ), same pattern
-  Vec row_scale = nullptr;   // d (null: none), laid out as the DOFs
-  double h = 0.0;            // s
+  Mat K = nullptr;          // ∂R/∂q, n × n
+  Mat C = nullptr;          // ∂R/∂v, n × n (same pattern)
+  Mat M = nullptr;          // the δ_ij part (M, or M + Gᵀ), same pattern
+  Vec row_scale = nullptr;  // d (null: none), laid out as the DOFs
+  double h = 0.0;           // s
 };
 
 class DecoupledStageSolver {

@@ -38,7 +38,7 @@ struct TableauDecomposition {
   Eigen::MatrixXd T, T_inv;  // s × s, T_inv = T⁻¹ to rounding
   Eigen::MatrixXd D;         // s × s real block diagonal, blocks as above
   std::vector<EigenBlock> blocks;
-  double condition = 0.0;    // ‖T‖₂ ‖T⁻¹‖₂
+  double condition = 0.0;  // ‖T‖₂ ‖T⁻¹‖₂
 };
 
 // Not collective. The decomposition of the s × s matrix A, or nothing with the reason in
