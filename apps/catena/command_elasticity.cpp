@@ -151,8 +151,11 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
   for (const catenary::ElasticityPoint& p : report.points) {
     curve.uplift.push_back(1e3 * p.uplift);
     curve.elasticity.push_back(1e3 * p.elasticity);
+    curve.linear.push_back(1e3 * p.linear_elasticity);
+    curve.slack.push_back(p.slackened);
   }
   curve.summary = post::summarize_elasticity(curve.elasticity);
+  curve.linear_summary = post::summarize_elasticity(curve.linear);
   if (rank != 0) return;
   std::fprintf(info,
                "static equilibrium: %d load steps, %d Newton iterations; %zu loaded equilibria: "
@@ -164,6 +167,7 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
     print_elasticity_json(stdout, curve);
   else
     print_elasticity_table(stdout, curve);
+  warn_slack_droppers(curve);
 }
 
 }  // namespace catena::app

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <variant>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/assembly/state_view.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/newton/mumps_status.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
 
@@ -59,6 +63,86 @@ double probe_time(double x, double length) {
   while (t - kProbeEntry > length) t = std::nextafter(t, 0.0);
   return t;
 }
+
+// Counts the tension-only elements (droppers) of this rank that go slack — axial strain
+// below zero, shorter than unstretched — at a state where they were taut at the base
+// equilibrium. Each model element is evaluated on one rank, so the counts add up.
+class SlackCounter {
+ public:
+  // Collective. Records which of this rank's tension-only elements are taut at q0.
+  SlackCounter(const assembly::SecondOrderSystem& system, Vec q0) : view_(system) {
+    const model::Model& m = system.model();
+    view_.section_results(at(q0), elements_, results_);
+    for (std::size_t i = 0; i < elements_.size(); ++i) {
+      const bool tension_only = std::visit(
+          [](const auto& p) {
+            if constexpr (requires { p.tension_only; })
+              return p.tension_only;
+            else
+              return false;
+          },
+          m.elements[static_cast<std::size_t>(elements_[i])].props);
+      if (tension_only && results_[i].axial_strain >= 0.0) taut_.push_back(i);
+    }
+  }
+
+  // Collective. How many of the elements taut at q0 are slack at q (on every rank).
+  int slackened(MPI_Comm comm, Vec q) {
+    view_.section_results(at(q), elements_, results_);
+    int local = 0, total = 0;
+    for (const std::size_t i : taut_) local += results_[i].axial_strain < 0.0 ? 1 : 0;
+    MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, comm);
+    return total;
+  }
+
+ private:
+  static assembly::EvalPoint at(Vec q) { return {q, nullptr, elements::LoadPath{}, 0.0}; }
+
+  assembly::StateView view_;
+  std::vector<int> elements_;
+  std::vector<elements::SectionResult> results_;
+  std::vector<std::size_t> taut_;  // positions in results_ (ascending element index)
+};
+
+// The linear elasticity's solver: the static tangent at the base equilibrium, factored
+// once (LDLᵀ; the tangent with constraints is a symmetric saddle-point matrix).
+class TangentSolve {
+ public:
+  // Collective. `tangent` is copied: the Newton iterations refill theirs.
+  TangentSolve(MPI_Comm comm, Mat tangent)
+      : ksp_(solvers::create_direct_ksp(comm, "elasticity_linear_",
+                                        solvers::JacobianSymmetry::symmetric)) {
+    CATENA_PETSC(MatDuplicate(tangent, MAT_COPY_VALUES, matrix_.out()));
+    CATENA_PETSC(KSPSetOperators(ksp_.get(), matrix_.get(), matrix_.get()));
+    CATENA_PETSC(KSPSetUp(ksp_.get()));
+    const solvers::MumpsStatus mumps = solvers::mumps_status(ksp_.get());
+    if (mumps.infog1 < 0 || mumps.null_pivots > 0)
+      throw NumericalError(
+          "static elasticity: the tangent at the static equilibrium cannot be "
+          "factored (MUMPS INFOG(1) = " +
+          std::to_string(mumps.infog1) + ", " + std::to_string(mumps.null_pivots) +
+          " null pivots): the structure is not held statically");
+  }
+
+  // Collective. Pᵀ K₀⁻¹ P.
+  double energy_norm(Vec P, Vec work) {
+    CATENA_PETSC(KSPSolve(ksp_.get(), P, work));
+    KSPConvergedReason reason;
+    CATENA_PETSC(KSPGetConvergedReason(ksp_.get(), &reason));
+    const solvers::MumpsStatus mumps = solvers::mumps_status(ksp_.get());
+    if (reason < 0 || mumps.infog1 < 0)
+      throw NumericalError("static elasticity: the tangent solve failed (KSP reason " +
+                           std::to_string(reason) +
+                           ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) + ")");
+    PetscScalar value = 0.0;
+    CATENA_PETSC(VecDot(P, work, &value));
+    return value;
+  }
+
+ private:
+  KspHandle ksp_;
+  MatHandle matrix_;
+};
 
 }  // namespace
 
@@ -113,6 +197,8 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
   system.jacobian({q0.get(), nullptr, full_load, 0.0}, assembly::kStaticJacobian, J.get());
   round_off.set_tangent(J.get());
   const double atol = probed.static_options.atol + round_off.at(q0.get());
+  TangentSolve tangent(comm, J.get());
+  SlackCounter slack(system, q0.get());
 
   // R(q) = f(q) − λ P: the structure at the end of the load path with λ of the probe.
   double lambda = 1.0;
@@ -138,6 +224,7 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
 
     ElasticityPoint point;
     point.position = x;
+    point.linear_elasticity = tangent.energy_norm(P.get(), q.get()) / (magnitude * magnitude);
     CATENA_PETSC(VecCopy(q0.get(), q.get()));
     double reached = 0.0, increment = 1.0;
     int halvings = 0;
@@ -160,6 +247,7 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
         increment *= 0.5;
       }
     }
+    point.slackened = slack.slackened(comm, q.get());
     // u = Pᵀ(q − q0)/|F|: the displacement at x along F, interpolated as P was spread.
     CATENA_PETSC(VecAXPY(q.get(), -1.0, q0.get()));
     PetscScalar work = 0.0;

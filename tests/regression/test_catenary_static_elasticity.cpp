@@ -120,9 +120,12 @@ TEST(StaticElasticity, TensionedBeamClosedForm) {
     if (p.position == 0.0 || p.position == wire.L) continue;
     const double exact = tensioned_beam_deflection(F, wire.T, wire.EI, wire.L, p.position);
     const double string = string_deflection(F, wire.T, wire.L, p.position);
-    std::printf("  x = %5.2f m: uplift / beam %.6f, string / beam %.6f\n", p.position,
-                p.uplift / exact, string / exact);
+    std::printf("  x = %5.2f m: uplift / beam %.6f, linear / beam %.6f, string / beam %.6f\n",
+                p.position, p.uplift / exact, p.linear_elasticity * F / exact, string / exact);
     EXPECT_NEAR(p.uplift / exact, 1.0, 2e-3) << "x = " << p.position;
+    // The closed form is the linear theory of a tensioned beam: the tangent's answer.
+    EXPECT_NEAR(p.linear_elasticity * F / exact, 1.0, 2e-3) << "x = " << p.position;
+    EXPECT_EQ(p.slackened, 0);
   }
 }
 
@@ -230,6 +233,32 @@ TEST(StaticElasticity, CatenaryMidSpanSofterThanSupportAndLinearForSmallForces) 
     EXPECT_NEAR(e[2][i] / e[0][i], 1.0, 0.01);
   }
   EXPECT_GT(e[3][0] / e[0][0], 1.1);
+}
+
+// The linear elasticity (Pᵀ K₀⁻¹ P / |F|²) is the limit of small forces: independent of
+// the force, met by the Newton solution at 10 N, and what the 200 N probe departs from at
+// the steady arm, where it slackens the two droppers beside it (counted per point; at
+// mid-span 200 N slackens the dropper there: 0.4496 against 0.4334 mm/N linear).
+TEST(StaticElasticity, LinearElasticityIsTheSmallForceLimitAndSlackDroppersAreCounted) {
+  const model::Model& m = shaped_catenary();
+  const double support =
+      catenary::path_arc_length_at(m, m.catenary->contact_wire.elements, m.registration_nodes[1]);
+  const std::vector<double> x{support, support + 30.0};  // steady arm, mid-span of span 2
+  const catenary::ElasticityReport small = catenary_elasticity(x, 10.0);
+  const catenary::ElasticityReport large = catenary_elasticity(x, 200.0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double linear = small.points[i].linear_elasticity;
+    std::printf(
+        "  x = %5.1f m: linear %.6f mm/N; 10 N %.6f mm/N (%d slack), 200 N %.6f mm/N "
+        "(%d slack)\n",
+        x[i], 1e3 * linear, 1e3 * small.points[i].elasticity, small.points[i].slackened,
+        1e3 * large.points[i].elasticity, large.points[i].slackened);
+    EXPECT_NEAR(large.points[i].linear_elasticity / linear, 1.0, 1e-9);
+    EXPECT_NEAR(small.points[i].elasticity / linear, 1.0, 0.01);
+    EXPECT_EQ(small.points[i].slackened, 0);
+  }
+  EXPECT_GE(large.points[0].slackened, 2);  // the droppers either side of the steady arm
+  EXPECT_GT(large.points[0].elasticity / large.points[0].linear_elasticity, 1.1);
 }
 
 // A stitch wire (18 m, 2800 N, as in meshes/stitched_catenary.yaml) hangs the droppers

@@ -9,7 +9,18 @@
 // r_0: the static equilibrium of the model (StaticSolver from the reference
 // configuration, the load path included); r_F: the equilibrium with F added at x. The
 // response is the structure's, nonlinearity included (a tension-only dropper may go slack
-// under the probe), so e depends (weakly) on |F|.
+// under the probe), so e depends on |F|: weakly while every dropper stays taut, strongly
+// once droppers beside the point go slack.
+//
+// Beside it, the linear elasticity, the limit of e as |F| → 0 (what EN 50119 means by the
+// elasticity of a contact line as it hangs):
+//
+//   e_lin(x) = Pᵀ K₀⁻¹ P / |F|²
+//
+// with K₀ the static tangent at r_0 (one LDLᵀ factorisation for every point, options
+// prefix -elasticity_linear_) and P the probe's generalised force below. Each point also
+// counts the tension-only elements (droppers) that are taut at r_0 and slack at r_F (axial
+// strain below zero): where any are, e(x) is no longer the line's small-force elasticity.
 //
 // The probe is a model::MovingLoad along the path, spread onto the nodes of the element
 // holding x by the cable shape functions exactly as the system spreads every moving load
@@ -41,9 +52,11 @@ struct ElasticityProbe {
 };
 
 struct ElasticityPoint {
-  double position = 0.0;    // m along the path
-  double uplift = 0.0;      // m, displacement at `position` along the force
-  double elasticity = 0.0;  // m/N, uplift / |force|
+  double position = 0.0;           // m along the path
+  double uplift = 0.0;             // m, displacement at `position` along the force
+  double elasticity = 0.0;         // m/N, uplift / |force|
+  double linear_elasticity = 0.0;  // m/N, Pᵀ K₀⁻¹ P / |force|²: the limit of small forces
+  int slackened = 0;               // tension-only elements taut at r_0, slack under the probe
   int newton_iterations = 0;
   int increments = 0;  // load increments of the probe force (1 unless Newton needed more)
 };
@@ -59,7 +72,8 @@ struct ElasticityReport {
 // `model`'s moving loads and moving contacts are left out (the structure alone, as it
 // stands statically; a pantograph's own nodes are the caller's to remove). Throws what
 // StaticSolver throws for the base equilibrium, and NumericalError when the probe force
-// cannot be applied at a point (Newton fails at an increment of 1/64 of it).
+// cannot be applied at a point (Newton fails at an increment of 1/64 of it) or the
+// tangent at r_0 cannot be factored or solved.
 ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
                                    const ElasticityProbe& probe);
 
