@@ -205,6 +205,22 @@ TEST(ContactStatistics, FiltersTheWholeRecordNotJustTheSection) {
   EXPECT_NEAR(filtered[2500], 115.0, 1e-9);  // sin = 0 there: steady state, no transient
 }
 
+// The contact position of the sample at a section end is stored as 240.0 or as
+// 239.99999999998892 m depending on the step sequence that reached it: both are in.
+TEST(ContactStatistics, SampleCountDoesNotDependOnRoundOffAtTheSectionEnds) {
+  PantographRecord p = sine_record(115.0, 30.0, 2.0);  // x = 0.5 k m, 500 m/s, 1 ms
+  const auto exact = contact_statistics(p, {}, section_options(1250.0, 3750.0));
+  p.position[2500] = std::nextafter(1250.0, 0.0) - 1e-11;  // below the start by round-off
+  p.position[7500] = 3750.0 * (1.0 + 4e-14);               // beyond the end by round-off
+  const auto rounded = contact_statistics(p, {}, section_options(1250.0, 3750.0));
+  EXPECT_EQ(exact.n_samples, 5001u);
+  EXPECT_EQ(rounded.n_samples, exact.n_samples);
+  EXPECT_EQ(rounded.standard_deviation, exact.standard_deviation);
+  // A sample a hundredth of the spacing (5 mm) outside stays out.
+  p.position[7500] = 3750.005;
+  EXPECT_EQ(contact_statistics(p, {}, section_options(1250.0, 3750.0)).n_samples, 5000u);
+}
+
 TEST(ContactStatistics, ContactLossCountsRawZerosInsideTheSectionOnly) {
   PantographRecord p;
   p.name = "trailing";

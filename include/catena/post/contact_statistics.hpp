@@ -8,7 +8,9 @@
 //      (20 Hz by default) with the zero-phase Butterworth filter of butterworth.hpp
 //      (2nd-order section forward and backward: |H|², −6 dB at the cutoff), so the
 //      section's edges are not start-up transients of the filter.
-//   2. The section samples are those whose contact position lies in [x_start, x_end].
+//   2. The section samples are those whose contact position lies in [x_start, x_end],
+//      the ends widened by round-off's reach (max(1e-6 of the distance between samples,
+//      1e-9 of |x|)): a sample at an end is in, however its position was rounded.
 //   3. Over them: mean F_m, population standard deviation σ, statistical maximum
 //      F_m + 3σ and minimum F_m − 3σ, actual maximum and minimum — all of the FILTERED
 //      force; the contact-loss percentage counts section samples whose RAW force is ≤ 0.
