@@ -11,7 +11,8 @@ std::string usage() {
   return R"(catena — parallel solver for cables, beams and overhead contact lines
 
 Usage:
-  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [PETSc options]
+  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
+               [--quiet] [PETSc options]
   catena check SCENE.yaml [--set KEY=VALUE ...]
   catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]
   catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
@@ -33,6 +34,10 @@ Options:
                         --set sections.cw.EA=2e7 (validated like the file; repeatable)
   --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
                         OUT.h5 (same scene; analysis.duration may be raised)
+  --progress S          dynamics: a progress line (simulated time, steps, Newton
+                        iterations, rate, ETA) every S seconds of wall time (default 5;
+                        0: every step; off: none)
+  --quiet               no progress lines (as --progress off)
   --memory-limit GIB    run and check: memory per host the run may use (default: the
                         host's physical memory); a scene whose estimated need exceeds it
                         is refused (docs/scene.md, "Memory"); off: no check
@@ -104,6 +109,16 @@ double parse_positive(const std::string& token, const char* flag, const char* un
   if (!(value > 0.0))
     throw InputError({"", 0, flag},
                      "must be positive (got " + token + " " + unit + "); accepted: " + accepted);
+  return value;
+}
+
+// A finite number >= 0, the whole token.
+double parse_non_negative(const std::string& token, const char* flag, const char* unit,
+                          const std::string& accepted) {
+  const double value = parse_real(token, flag, accepted);
+  if (!(value >= 0.0))
+    throw InputError({"", 0, flag}, "must not be negative (got " + token + " " + unit +
+                                        "); accepted: " + accepted);
   return value;
 }
 
@@ -234,6 +249,15 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.restart = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
+    } else if (a == "--progress") {
+      const std::string& every = value("--progress");
+      cl.progress_seconds =
+          every == "off" ? -1.0
+                         : parse_non_negative(every, "--progress", "s",
+                                              "wall seconds between progress lines, >= 0 (0: "
+                                              "every step), or off");
+    } else if (a == "--quiet") {
+      cl.progress_seconds = -1.0;
     } else if (a == "--memory-limit") {
       const std::string& limit = value("--memory-limit");
       cl.memory_limit_gib =

@@ -33,6 +33,7 @@
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
+#include "dynamic_progress.hpp"
 #include "initial_state.hpp"
 #include "resume_checkpoint.hpp"
 #include "run_info.hpp"
@@ -50,14 +51,15 @@ class OutputObserver : public solvers::TransientObserver {
  public:
   OutputObserver(assembly::SecondOrderSystem& system, io::TransientWriter& writer,
                  const model::OutputOptions& output, const solvers::TimeIntegrator& integrator,
-                 std::string run_id)
+                 std::string run_id, DynamicProgress progress)
       : system_(system),
         view_(system),
         writer_(writer),
         output_(output),
         run_id_(std::move(run_id)),
         integrator_(integrator),
-        schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}) {}
+        schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}),
+        progress_(progress) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
@@ -128,6 +130,7 @@ class OutputObserver : public solvers::TransientObserver {
     } else if (due == WallClockSchedule::Action::flush) {
       writer_.flush();
     }
+    progress_.step(r.time, r.newton_iterations, r.rejected);
     hooks_.after_step();
   }
 
@@ -157,6 +160,7 @@ class OutputObserver : public solvers::TransientObserver {
   std::string run_id_;
   const solvers::TimeIntegrator& integrator_;
   WallClockSchedule schedule_;
+  DynamicProgress progress_;
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
@@ -331,7 +335,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
               " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
               std::to_string(2 * resumed->facts.time));
     VecHandle a = system.create_vector();
-    const std::vector<double> no_multipliers(3 * m.constraints.size(), 0.0);
+    const std::vector<double> no_multipliers(
+        model::kMultipliersPerConstraint * m.constraints.size(), 0.0);
     const assembly::StateView view(system);
     view.set_from_node_rows(q.get(), resumed->q, resumed->lambda);
     view.set_from_node_rows(v.get(), resumed->v, no_multipliers);
@@ -409,7 +414,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                                                    owned_constraints);
   }
   const std::string partial = io::partial_output_path(output);
-  OutputObserver observer(system, *writer, m.output, *integrator, run_id);
+  OutputObserver observer(
+      system, *writer, m.output, *integrator, run_id,
+      DynamicProgress(rank, integrator->time(), options.t_end, cl.progress_seconds));
   if (resumed) {
     observer.set_last_dt(resumed->facts.last_dt);
     observer.set_last_checkpoint_time(resumed->facts.time);
