@@ -34,9 +34,9 @@ Options:
                         --set sections.cw.EA=2e7 (validated like the file; repeatable)
   --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
                         OUT.h5 (same scene; analysis.duration may be raised)
-  --progress S          dynamics: a progress line (simulated time, steps, Newton
-                        iterations, rate, ETA) every S seconds of wall time (default 5;
-                        0: every step; off: none)
+  --progress S          a progress line every S seconds of wall time (default 5; 0: every
+                        step; off: none): simulated time, steps, Newton iterations, rate
+                        and ETA of dynamics; load path point and steps of statics
   --quiet               no progress lines (as --progress off)
   --memory-limit GIB    run and check: memory per host the run may use (default: the
                         host's physical memory); a scene whose estimated need exceeds it

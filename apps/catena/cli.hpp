@@ -33,7 +33,7 @@ struct CommandLine {
   // --memory-limit GIB: the memory per host a run may use (default: physical memory);
   // 0 (--memory-limit off): no memory check.
   std::optional<double> memory_limit_gib;
-  // --progress SECONDS: wall time between a dynamic run's progress lines (0: every step);
+  // --progress SECONDS: wall time between progress lines (0: every step);
   // --progress off or --quiet: none (negative).
   double progress_seconds = 5.0;
   std::string joined;              // the whole command line, for the output file

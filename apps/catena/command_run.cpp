@@ -15,6 +15,7 @@
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
 #include "output_preflight.hpp"
+#include "progress_lines.hpp"
 #include "run_info.hpp"
 #include "scene_loading.hpp"
 #include "shape_report.hpp"
@@ -109,6 +110,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
   solvers::StaticSolver solver(system, m.static_options);
+  solver.on_progress(static_progress_lines(rank, cl.progress_seconds));
   const solvers::StaticReport report = solver.solve(q.get());
   const double seconds = MPI_Wtime() - start;
 

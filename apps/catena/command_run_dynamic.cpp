@@ -33,8 +33,8 @@
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
-#include "dynamic_progress.hpp"
 #include "initial_state.hpp"
+#include "progress_lines.hpp"
 #include "resume_checkpoint.hpp"
 #include "run_info.hpp"
 #include "shape_report.hpp"
@@ -356,6 +356,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   } else {
     if (dyn.initial.from_static) {
       solvers::StaticSolver statics(system, m.static_options);
+      statics.on_progress(static_progress_lines(rank, cl.progress_seconds));
       const solvers::StaticReport report = statics.solve(q.get());
       if (rank == 0)
         std::printf(

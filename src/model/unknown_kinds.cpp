@@ -5,7 +5,7 @@
 namespace catena::model {
 namespace {
 
-// One row per UnknownKind, in the enum's order (checked in kind_info).
+// One row per UnknownKind, in the enum's order (table_is_consistent below).
 struct Row {
   UnknownKind kind;
   UnknownKindInfo info;

@@ -21,6 +21,7 @@ struct StaticSolver::Impl {
   VecHandle residual;
   MatHandle jacobian;
   CallbackGuard guard;
+  std::function<void(const StaticProgress&)> progress;  // none: no progress calls
   // The load path (elements::LoadPath) parameterised by τ: [0, 1] tensions, [1, 2] loads,
   // [2, 3] releases prestrain to its scene value (only when some cable needs it).
   elements::LoadPath path{0.0, 0.0, 0.0};
@@ -90,6 +91,10 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
 }
 
 StaticSolver::~StaticSolver() = default;
+
+void StaticSolver::on_progress(std::function<void(const StaticProgress&)> callback) {
+  impl_->progress = std::move(callback);
+}
 
 namespace {
 
@@ -220,8 +225,11 @@ StaticReport StaticSolver::solve(Vec q) {
       ++attempts;
       ++report.n_rejected_steps;
       step *= 0.5;
-      if (step < s.options.min_load_step) break;
     }
+    if (s.progress)
+      s.progress({describe_path(tau, tau_end), report.n_load_steps, report.n_rejected_steps,
+                  report.n_newton_iterations});
+    if (!accept && step < s.options.min_load_step) break;
   }
 
   // Residual at the returned state (the last converged point of the path).

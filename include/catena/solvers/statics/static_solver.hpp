@@ -10,6 +10,7 @@
 //
 // Options database prefix: -static_ (e.g. -static_snes_monitor, -static_ksp_type gmres,
 // -static_pc_type, -static_mat_mumps_icntl_14 50). Set last, so the command line wins.
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -27,6 +28,14 @@ struct StaticReport {
   double residual_norm = 0.0;     // 2-norm of f at the returned state, N
 };
 
+// Where a static solve is, after a load-step attempt (for progress output).
+struct StaticProgress {
+  std::string where;            // the load path's point reached, in words
+  int n_load_steps = 0;         // accepted so far
+  int n_rejected_steps = 0;     // so far
+  int n_newton_iterations = 0;  // so far, over all attempts
+};
+
 class StaticSolver {
  public:
   // Collective.
@@ -40,6 +49,9 @@ class StaticSolver {
   // residual norm and the node with the largest residual when load stepping gives up, or
   // when the stiffness matrix is singular (an under-supported structure).
   StaticReport solve(Vec q);
+
+  // Not collective. Called on every rank after each load-step attempt of solve().
+  void on_progress(std::function<void(const StaticProgress&)> callback);
 
  private:
   struct Impl;

@@ -1,14 +1,29 @@
-#include "dynamic_progress.hpp"
+#include "progress_lines.hpp"
 
 #include <mpi.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace catena::app {
-namespace {
 
-// "0.4 s", "37 s", "4 min 05 s", "2 h 13 min".
+ProgressPacer::ProgressPacer(int rank, double interval)
+    : active_(rank == 0 && interval >= 0.0),
+      interval_(interval),
+      start_(MPI_Wtime()),
+      last_(start_) {}
+
+bool ProgressPacer::due() {
+  if (!active_) return false;
+  const double now = MPI_Wtime();
+  if (now - last_ < interval_) return false;
+  last_ = now;
+  return true;
+}
+
+double ProgressPacer::elapsed() const { return MPI_Wtime() - start_; }
+
 std::string duration_text(double seconds) {
   char text[48];
   const long s = std::lround(seconds);
@@ -23,31 +38,16 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-}  // namespace
-
 DynamicProgress::DynamicProgress(int rank, double t_start, double t_end, double interval,
                                  std::FILE* out)
-    : active_(rank == 0 && interval >= 0.0),
-      t_start_(t_start),
-      t_end_(t_end),
-      interval_(interval),
-      out_(out),
-      wall_start_(MPI_Wtime()),
-      last_line_(wall_start_) {}
+    : pacer_(rank, interval), t_start_(t_start), t_end_(t_end), out_(out) {}
 
 void DynamicProgress::step(double t, int newton_iterations, int rejected) {
-  if (!active_) return;
   ++steps_;
   rejected_ += rejected;
   newton_iterations_ += newton_iterations;
-  const double now = MPI_Wtime();
-  if (now - last_line_ < interval_) return;
-  last_line_ = now;
-  print(t, now);
-}
-
-void DynamicProgress::print(double t, double now) {
-  const double wall = now - wall_start_;
+  if (!pacer_.due()) return;
+  const double wall = pacer_.elapsed();
   const double done = t - t_start_;
   const double percent = t_end_ > 0.0 ? 100.0 * t / t_end_ : 100.0;
   const double rate = wall > 0.0 ? static_cast<double>(steps_) / wall : 0.0;  // steps/s
@@ -60,6 +60,20 @@ void DynamicProgress::print(double t, double now) {
                static_cast<double>(newton_iterations_) / static_cast<double>(steps_),
                rate < 100.0 ? 1 : 0, rate, duration_text(wall).c_str(), eta.c_str());
   std::fflush(out_);
+}
+
+std::function<void(const solvers::StaticProgress&)> static_progress_lines(int rank, double interval,
+                                                                          std::FILE* out) {
+  auto pacer = std::make_shared<ProgressPacer>(rank, interval);
+  return [pacer, out](const solvers::StaticProgress& p) {
+    if (!pacer->due()) return;
+    std::fprintf(out,
+                 "progress: statics at %s, %d load steps (%d rejected), %d Newton iterations, "
+                 "wall %s\n",
+                 p.where.c_str(), p.n_load_steps, p.n_rejected_steps, p.n_newton_iterations,
+                 duration_text(pacer->elapsed()).c_str());
+    std::fflush(out);
+  };
 }
 
 }  // namespace catena::app
