@@ -17,7 +17,7 @@ Usage:
   catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]
   catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
                     [--json] [PETSc options]
-  catena --help
+  catena --help | --version
 
 Commands:
   run     solve the scene (static equilibrium) and write OUT.h5 (+ OUT.xmf for ParaView)
@@ -42,6 +42,7 @@ Options:
                         host's physical memory); a scene whose estimated need exceeds it
                         is refused (docs/scene.md, "Memory"); off: no check
   -h, --help            this text
+  --version             Catena's version and commit, and the libraries it runs on
 
 Options of stats:
   --json                print JSON instead of a table
@@ -58,9 +59,20 @@ Options of elasticity (also --set; pantographs, moving loads and dynamics are ig
   --force F             static upward force at each point, N (default 100; > 0)
   --json                print JSON instead of a table
 
-PETSc options (prefix -static_ for the static solver, -elasticity_ for the elasticity
-solves), e.g.:
-  -static_snes_monitor -static_ksp_view -log_view -static_mat_mumps_icntl_4 2
+PETSc options take the prefix of the solver they set (then snes_, ksp_, pc_,
+mat_mumps_icntl_N, ...):
+  -static_              static equilibrium (Newton along the load path)
+  -static_stability_    its stability check (LDL' of the tangent at each equilibrium)
+  -hht_                 HHT-alpha's Newton solve (dynamics, integrator.type: hht)
+  -irk_                 implicit Runge-Kutta stage Newton; -irk_block<k>_ its decoupled
+                        blocks, -irk_estimate_ the embedded error estimate's solve
+  -ts_                  integrator.type: petsc (e.g. -ts_type bdf)
+  -mass_                the consistent initial acceleration (mass matrix solve)
+  -elasticity_, -elasticity_linear_   catena elasticity: loaded solves, the tangent
+e.g.:
+  -static_snes_monitor -hht_snes_converged_reason -log_view -static_mat_mumps_icntl_4 2
+An option that no solver of the run read is reported when the command ends (a misspelling,
+or a solver this run does not create).
 
 Examples:
   catena check meshes/default.yaml
@@ -221,6 +233,10 @@ CommandLine parse_command_line(int argc, char** argv) {
     cl.command = "help";
     return cl;
   }
+  if (args[0] == "--version" || args[0] == "version") {
+    cl.command = "version";
+    return cl;
+  }
   cl.command = args[i++];
   if (cl.command == "stats") {
     parse_stats(args, i, cl);
@@ -264,9 +280,13 @@ CommandLine parse_command_line(int argc, char** argv) {
           limit == "off" ? 0.0
                          : parse_positive(limit, "--memory-limit", "GiB",
                                           "a memory per host in GiB, > 0, or off (no check)");
+    } else if (a == "--version") {
+      cl.command = "version";
+      return cl;
     } else if (!a.empty() && a[0] == '-') {
       // A PETSc option; skip its value if it has one: the next token, unless it starts
       // with '-' or names the scene file (a .yaml/.yml path).
+      cl.petsc_options.push_back(a);
       if (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-' &&
           !(cl.scene.empty() && is_scene_path(args[i + 1])))
         ++i;

@@ -25,7 +25,7 @@ struct ElasticityArguments {
 };
 
 struct CommandLine {
-  std::string command;                 // run | check | stats | elasticity | help
+  std::string command;                 // run | check | stats | elasticity | help | version
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
@@ -36,9 +36,10 @@ struct CommandLine {
   // --progress SECONDS: wall time between progress lines (0: every step);
   // --progress off or --quiet: none (negative).
   double progress_seconds = 5.0;
-  std::string joined;              // the whole command line, for the output file
-  StatsArguments stats;            // command "stats" only
-  ElasticityArguments elasticity;  // command "elasticity" only
+  std::vector<std::string> petsc_options;  // the PETSc options given ("-hht_snes_rtol")
+  std::string joined;                      // the whole command line, for the output file
+  StatsArguments stats;                    // command "stats" only
+  ElasticityArguments elasticity;          // command "elasticity" only
 };
 
 // Throws catena::InputError for malformed arguments.

@@ -23,6 +23,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "launcher_watch.hpp"
+#include "run_environment.hpp"
 
 int main(int argc, char** argv) {
   int status = 0;
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
       const catena::app::CommandLine cl = catena::app::parse_command_line(argc, argv);
       if (cl.command == "help") {
         if (rank == 0) std::fputs(catena::app::usage().c_str(), stdout);
+      } else if (cl.command == "version") {
+        if (rank == 0) std::fputs(catena::app::version_text().c_str(), stdout);
       } else if (cl.command == "check") {
         catena::app::command_check(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "stats") {
@@ -44,6 +47,7 @@ int main(int argc, char** argv) {
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }
+      catena::app::warn_unused_petsc_options(rank, cl.petsc_options);
     } catch (const catena::InputError& e) {
       if (rank == 0) std::fprintf(stderr, "catena: error: %s\n", e.what());
       status = 2;

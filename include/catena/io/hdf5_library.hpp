@@ -1,5 +1,7 @@
 #pragma once
 // How an application starts the HDF5 library.
+#include <string>
+
 namespace catena::io {
 
 // Not collective. Call once, first thing in main(), before MPI_Init (PetscInitialize).
@@ -15,5 +17,8 @@ namespace catena::io {
 // Also turns off HDF5's printing of its error stack to stderr: the io layer reports every
 // failure once, as an exception naming the call, the file and the cause.
 void start_hdf5_before_mpi();
+
+// Not collective. The HDF5 library's version, e.g. "1.10.8".
+std::string hdf5_version();
 
 }  // namespace catena::io
