@@ -20,6 +20,7 @@
 #include "catena/post/elasticity_summary.hpp"
 #include "commands.hpp"
 #include "elasticity_report.hpp"
+#include "log_stage.hpp"
 #include "scene_loading.hpp"
 #include "shape_report.hpp"
 
@@ -142,7 +143,10 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
   probe.path = path;
   for (const double xi : x) probe.positions.push_back(support_arc[j - 1] + xi * wire_per_track);
   probe.force = Vec3(0.0, 0.0, args.force);  // up: a catenary's z axis (docs/catenary.md)
-  const catenary::ElasticityReport report = catenary::static_elasticity(comm, m, probe);
+  const catenary::ElasticityReport report = [&] {
+    const LogStage stage("Elasticity");
+    return catenary::static_elasticity(comm, m, probe);
+  }();
 
   ElasticityCurve curve;
   curve.span = span;

@@ -14,6 +14,7 @@
 #include "catena/io/run_files.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
+#include "log_stage.hpp"
 #include "output_preflight.hpp"
 #include "progress_lines.hpp"
 #include "run_info.hpp"
@@ -111,12 +112,18 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   system.reference_state(q.get());
   solvers::StaticSolver solver(system, m.static_options);
   solver.on_progress(static_progress_lines(rank, cl.progress_seconds));
-  const solvers::StaticReport report = solver.solve(q.get());
+  const solvers::StaticReport report = [&] {
+    const LogStage stage("Statics");
+    return solver.solve(q.get());
+  }();
   const double seconds = MPI_Wtime() - start;
 
   const io::StaticResult result = collect_result(system, q.get(), report);
   print_summary(comm, m, result, report, system.dof_map().n_global(), seconds);
-  io::write_static_result(comm, m.output.file, m, result, run_info(cl, system));
+  {
+    const LogStage stage("Output");
+    io::write_static_result(comm, m.output.file, m, result, run_info(cl, system));
+  }
   if (rank == 0) std::printf("output: %s\n", m.output.file.c_str());
 }
 

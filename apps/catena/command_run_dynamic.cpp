@@ -34,6 +34,7 @@
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
 #include "initial_state.hpp"
+#include "log_stage.hpp"
 #include "progress_lines.hpp"
 #include "resume_checkpoint.hpp"
 #include "run_info.hpp"
@@ -64,6 +65,7 @@ class OutputObserver : public solvers::TransientObserver {
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
   void checkpoint() {
+    const LogStage stage("Output");
     writer_.flush();
     io::CheckpointFacts facts;
     facts.time = integrator_.time();
@@ -94,6 +96,7 @@ class OutputObserver : public solvers::TransientObserver {
   std::optional<double> last_checkpoint_time() const { return last_checkpoint_time_; }
 
   void sample(double t, Vec q, Vec v) override {
+    const LogStage stage("Output");
     std::vector<double> positions, slopes, velocities, unused;
     view_.owned_node_values(q, positions, slopes);
     view_.owned_node_values(v, velocities, unused);
@@ -119,7 +122,10 @@ class OutputObserver : public solvers::TransientObserver {
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
-    writer_.append_step(record);
+    {
+      const LogStage stage("Output");
+      writer_.append_step(record);
+    }
     last_dt_ = r.dt;
     driver_ = r.driver;
     // Both decisions are the same on every rank: the schedule's is rank 0's, broadcast; the
@@ -128,6 +134,7 @@ class OutputObserver : public solvers::TransientObserver {
     if (hooks_.checkpoint_due() || due == WallClockSchedule::Action::checkpoint) {
       checkpoint();  // flushes too
     } else if (due == WallClockSchedule::Action::flush) {
+      const LogStage stage("Output");
       writer_.flush();
     }
     progress_.step(r.time, r.newton_iterations, r.rejected);
@@ -357,7 +364,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     if (dyn.initial.from_static) {
       solvers::StaticSolver statics(system, m.static_options);
       statics.on_progress(static_progress_lines(rank, cl.progress_seconds));
-      const solvers::StaticReport report = statics.solve(q.get());
+      const solvers::StaticReport report = [&] {
+        const LogStage stage("Statics");
+        return statics.solve(q.get());
+      }();
       if (rank == 0)
         std::printf(
             "initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
@@ -426,6 +436,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   const StopSignal signals;
   solvers::TransientReport report;
   try {
+    const LogStage stage("Dynamics");
     report = solvers::run_transient(system, *integrator, options, observer);
     // A checkpoint at the stop (SIGTERM: to continue; the end: to extend the run).
     observer.checkpoint();
@@ -454,6 +465,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   }
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
+  const LogStage output_stage("Output");
   try {
     writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
   } catch (const OutputError& e) {

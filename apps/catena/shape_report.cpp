@@ -9,6 +9,7 @@
 
 #include "catena/catenary/shape_finding.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "log_stage.hpp"
 
 namespace catena::app {
 namespace {
@@ -110,7 +111,10 @@ void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out) {
   if (!m.catenary) return;
   const catenary::ShapeFindingOptions options;
   const double start = MPI_Wtime();
-  const catenary::ShapeFindingReport report = catenary::find_catenary_shape(comm, m, options);
+  const catenary::ShapeFindingReport report = [&] {
+    const LogStage stage("Shape finding");
+    return catenary::find_catenary_shape(comm, m, options);
+  }();
   if (mpi_rank(comm) == 0) print_report(out, m, report, MPI_Wtime() - start, options);
 }
 
