@@ -68,11 +68,18 @@ std::string output_path_problem(const std::string& path) {
 }
 
 void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_line) {
+  const std::string key = from_command_line ? "-o" : "output.file";
+  // The same on every rank: a name, not the file system.
+  if (fs::path(m.output.file).extension() == ".xmf")
+    throw InputError({m.source_file, 0, key},
+                     "the output file '" + m.output.file +
+                         "' ends in .xmf, the name of the XDMF description Catena writes "
+                         "beside the HDF5 results; expected an HDF5 name such as '" +
+                         fs::path(m.output.file).replace_extension(".h5").string() + "'");
   std::string problem;
   if (mpi_rank(comm) == 0) problem = output_path_problem(m.output.file);
   broadcast_string(comm, problem);
   if (problem.empty()) return;
-  const std::string key = from_command_line ? "-o" : "output.file";
   throw InputError({m.source_file, 0, key},
                    "cannot write the output file '" + m.output.file + "': " + problem +
                        "; expected a path in an existing, writable directory (the checkpoint "

@@ -17,7 +17,8 @@ namespace catena::app {
 std::string output_path_problem(const std::string& path);
 
 // Collective. Rank 0 checks m.output.file (set by the scene's output.file or by -o); every
-// rank throws the same InputError naming the key, the path and the reason.
+// rank throws the same InputError naming the key, the path and the reason. A name ending in
+// .xmf (the XDMF companion's) is refused for every analysis.
 void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_line);
 
 }  // namespace catena::app
