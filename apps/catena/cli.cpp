@@ -7,82 +7,6 @@
 
 namespace catena::app {
 
-std::string usage() {
-  return R"(catena — parallel solver for cables, beams and overhead contact lines
-
-Usage:
-  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
-               [--quiet] [PETSc options]
-  catena check SCENE.yaml [--set KEY=VALUE ...]
-  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]
-  catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
-                    [--json] [PETSc options]
-  catena --help | --version
-
-Commands:
-  run     solve the scene (static equilibrium) and write OUT.h5 (+ OUT.xmf for ParaView)
-  check   validate the scene and print what would be modelled, without solving
-  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
-          (serial: run it without mpirun)
-  elasticity  static elasticity of a catenary scene along one span (EN 50119): uplift of
-          the contact wire per newton of a static upward force at each point, with max,
-          min, mean and the uniformity coefficient (docs/catenary.md, "Elasticity")
-
-Options:
-  -o, --output FILE     output file (default: the scene's output.file, else catena.h5)
-  --set KEY=VALUE       override a scene value, e.g. --set lines[0].elements=400
-                        --set sections.cw.EA=2e7 (validated like the file; repeatable)
-  --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
-                        OUT.h5 (same scene; analysis.duration may be raised)
-  --progress S          a progress line every S seconds of wall time (default 5; 0: every
-                        step; off: none): simulated time, steps, Newton iterations, rate
-                        and ETA of dynamics; load path point and steps of statics
-  --quiet               no progress lines (as --progress off)
-  --memory-limit GIB    run and check: memory per host the run may use (default: the
-                        host's physical memory); a scene whose estimated need exceeds it
-                        is refused (docs/scene.md, "Memory"); off: no check
-  -h, --help            this text
-  --version             Catena's version and commit, and the libraries it runs on
-
-Options of stats:
-  --json                print JSON instead of a table
-  --section X0 X1       evaluation section along the path, m (default: the run's
-                        evaluation_start/evaluation_end; required if the run sets none)
-  --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
-                        at the cutoff; the sampling rate must be >= 10 x the cutoff)
-
-Options of elasticity (also --set; pantographs, moving loads and dynamics are ignored):
-  --span N              span, 1-based (default: the first of catenary.evaluation_spans,
-                        else the middle span, (spans + 1) / 2)
-  --step DX             spacing of the points along the span, m (default 1; > 0, at most
-                        the span length); both supports are points
-  --force F             static upward force at each point, N (default 100; > 0)
-  --json                print JSON instead of a table
-
-PETSc options take the prefix of the solver they set (then snes_, ksp_, pc_,
-mat_mumps_icntl_N, ...):
-  -static_              static equilibrium (Newton along the load path)
-  -static_stability_    its stability check (LDL' of the tangent at each equilibrium)
-  -hht_                 HHT-alpha's Newton solve (dynamics, integrator.type: hht)
-  -irk_                 implicit Runge-Kutta stage Newton; -irk_block<k>_ its decoupled
-                        blocks, -irk_estimate_ the embedded error estimate's solve
-  -ts_                  integrator.type: petsc (e.g. -ts_type bdf)
-  -mass_                the consistent initial acceleration (mass matrix solve)
-  -elasticity_, -elasticity_linear_   catena elasticity: loaded solves, the tangent
-e.g.:
-  -static_snes_monitor -hht_snes_converged_reason -log_view -static_mat_mumps_icntl_4 2
-An option that no solver of the run read is reported when the command ends (a misspelling,
-or a solver this run does not create).
-
-Examples:
-  catena check meshes/default.yaml
-  mpirun -n 2 catena run meshes/default.yaml -o default.h5
-  mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
-  catena stats en50318_250.h5 --section 240 360
-  mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5 --json
-)";
-}
-
 namespace {
 bool is_scene_path(const std::string& token) {
   auto ends_with = [&](const std::string& suffix) {
@@ -179,6 +103,7 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
       return args[++i];
     };
     if (a == "-h" || a == "--help") {
+      cl.help_topic = "stats";
       cl.command = "help";
       return;
     } else if (a == "--json") {
@@ -231,6 +156,13 @@ CommandLine parse_command_line(int argc, char** argv) {
   size_t i = 0;
   if (args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
     cl.command = "help";
+    if (args.size() > 1 && args[1] != "--help" && args[1] != "-h") {
+      cl.help_topic = args[1];
+      if (cl.help_topic != "run" && cl.help_topic != "check" && cl.help_topic != "stats" &&
+          cl.help_topic != "elasticity")
+        throw InputError({"", 0, "help"},
+                         "no command '" + args[1] + "'; accepted: run, check, stats, elasticity");
+    }
     return cl;
   }
   if (args[0] == "--version" || args[0] == "version") {
@@ -253,6 +185,7 @@ CommandLine parse_command_line(int argc, char** argv) {
       return args[++i];
     };
     if (a == "-h" || a == "--help") {
+      cl.help_topic = cl.command;
       cl.command = "help";
       return cl;
     } else if (cl.command == "elasticity" && parse_elasticity_option(args, i, cl.elasticity)) {

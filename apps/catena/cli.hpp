@@ -26,6 +26,7 @@ struct ElasticityArguments {
 
 struct CommandLine {
   std::string command;                 // run | check | stats | elasticity | help | version
+  std::string help_topic;              // help: the command asked about ("" = all)
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
@@ -45,6 +46,8 @@ struct CommandLine {
 // Throws catena::InputError for malformed arguments.
 CommandLine parse_command_line(int argc, char** argv);
 
-std::string usage();
+// Not collective. The help text: of every command when `command` is empty, else of that
+// one (run, check, stats, elasticity).
+std::string usage(const std::string& command = "");
 
 }  // namespace catena::app

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     try {
       const catena::app::CommandLine cl = catena::app::parse_command_line(argc, argv);
       if (cl.command == "help") {
-        if (rank == 0) std::fputs(catena::app::usage().c_str(), stdout);
+        if (rank == 0) std::fputs(catena::app::usage(cl.help_topic).c_str(), stdout);
       } else if (cl.command == "version") {
         if (rank == 0) std::fputs(catena::app::version_text().c_str(), stdout);
       } else if (cl.command == "check") {

@@ -1,0 +1,144 @@
+// The text of `catena --help` and of `catena COMMAND --help` (cli.hpp, usage).
+#include <string>
+
+#include "cli.hpp"
+
+namespace catena::app {
+namespace {
+
+constexpr const char* kTitle =
+    "catena — parallel solver for cables, beams and overhead contact lines\n\n";
+
+constexpr const char* kSetOption =
+    R"(  --set KEY=VALUE       override a scene value, e.g. --set lines[0].elements=400
+                        --set sections.cw.EA=2e7 (validated like the file; repeatable)
+)";
+
+constexpr const char* kMemoryOption =
+    R"(  --memory-limit GIB    memory per host the run may use (default: the host's physical
+                        memory); a scene whose estimated need exceeds it is refused
+                        (docs/scene.md, "Memory"); off: no check
+)";
+
+struct CommandHelp {
+  const char* name;
+  const char* usage;    // its line(s) under "Usage:"
+  const char* what;     // its line(s) under "Commands:"
+  std::string options;  // "Options of NAME:" and the options
+  bool petsc = false;   // takes PETSc options
+};
+
+const CommandHelp* commands() {
+  static const CommandHelp all[] = {
+      {"run",
+       R"(  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
+               [--quiet] [--memory-limit GIB] [PETSc options]
+)",
+       R"(  run     solve the scene (static equilibrium or dynamics) and write OUT.h5 (+ OUT.xmf
+          for ParaView)
+)",
+       std::string(R"(Options of run:
+  -o, --output FILE     output file (default: the scene's output.file, else catena.h5)
+)") + kSetOption +
+           R"(  --restart             dynamics: continue from the checkpoint OUT.h5.chk, appending to
+                        OUT.h5 (same scene; analysis.duration may be raised)
+  --progress S          a progress line every S seconds of wall time (default 5; 0: every
+                        step; off: none): simulated time, steps, Newton iterations, rate
+                        and ETA of dynamics; load path point and steps of statics
+  --quiet               no progress lines (as --progress off)
+)" + kMemoryOption,
+       true},
+      {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB]\n",
+       "  check   validate the scene and print what would be modelled, without solving\n",
+       std::string("Options of check:\n") + kSetOption + kMemoryOption, false},
+      {"stats", "  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]\n",
+       R"(  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
+          (serial: run it without mpirun)
+)",
+       R"(Options of stats:
+  --json                print JSON instead of a table
+  --section X0 X1       evaluation section along the path, m (default: the run's
+                        evaluation_start/evaluation_end; required if the run sets none)
+  --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
+                        at the cutoff; the sampling rate must be >= 10 x the cutoff)
+)",
+       false},
+      {"elasticity",
+       R"(  catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
+                    [--json] [PETSc options]
+)",
+       R"(  elasticity  static elasticity of a catenary scene along one span (EN 50119): uplift of
+          the contact wire per newton of a static upward force at each point, and the
+          linear (small-force) elasticity, with max, min, mean and the uniformity
+          coefficient (docs/catenary.md, "Elasticity")
+)",
+       std::string(
+           "Options of elasticity (pantographs, moving loads and dynamics are ignored):\n") +
+           kSetOption +
+           R"(  --span N              span, 1-based (default: the first of catenary.evaluation_spans,
+                        else the middle span, (spans + 1) / 2)
+  --step DX             spacing of the points along the span, m (default 1; > 0, at most
+                        the span length); both supports are points
+  --force F             static upward force at each point, N (default 100; > 0)
+  --json                print JSON instead of a table
+)",
+       true},
+      {nullptr, nullptr, nullptr, "", false},
+  };
+  return all;
+}
+
+constexpr const char* kPetsc =
+    R"(PETSc options take the prefix of the solver they set (then snes_, ksp_, pc_,
+mat_mumps_icntl_N, ...):
+  -static_              static equilibrium (Newton along the load path)
+  -static_stability_    its stability check (LDL' of the tangent at each equilibrium)
+  -hht_                 HHT-alpha's Newton solve (dynamics, integrator.type: hht)
+  -irk_                 implicit Runge-Kutta stage Newton; -irk_block<k>_ its decoupled
+                        blocks, -irk_estimate_ the embedded error estimate's solve
+  -ts_                  integrator.type: petsc (e.g. -ts_type bdf)
+  -mass_                the consistent initial acceleration (mass matrix solve)
+  -elasticity_, -elasticity_linear_   catena elasticity: loaded solves, the tangent
+e.g.:
+  -static_snes_monitor -hht_snes_converged_reason -log_view -static_mat_mumps_icntl_4 2
+An option that no solver of the run read is reported when the command ends (a misspelling,
+or a solver this run does not create).
+)";
+
+constexpr const char* kGeneral = R"(Options of every command:
+  -h, --help            this text (catena COMMAND --help: that command's)
+  --version             Catena's version and commit, and the libraries it runs on
+)";
+
+constexpr const char* kExamples = R"(Examples:
+  catena check meshes/default.yaml
+  mpirun -n 2 catena run meshes/default.yaml -o default.h5
+  mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
+  catena stats en50318_250.h5 --section 240 360
+  mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5 --json
+)";
+
+}  // namespace
+
+std::string usage(const std::string& command) {
+  std::string text = kTitle;
+  text += "Usage:\n";
+  bool petsc = false;
+  for (const CommandHelp* c = commands(); c->name; ++c)
+    if (command.empty() || command == c->name) text += c->usage;
+  if (command.empty()) text += "  catena --help | --version\n";
+  text += command.empty() ? "\nCommands:\n" : "\n";
+  for (const CommandHelp* c = commands(); c->name; ++c)
+    if (command.empty() || command == c->name) text += c->what;
+  for (const CommandHelp* c = commands(); c->name; ++c)
+    if (command.empty() || command == c->name) {
+      text += "\n" + c->options;
+      petsc = petsc || c->petsc;
+    }
+  text += "\n" + std::string(kGeneral);
+  if (petsc) text += "\n" + std::string(kPetsc);
+  if (command.empty()) text += "\n" + std::string(kExamples);
+  return text;
+}
+
+}  // namespace catena::app
