@@ -12,6 +12,7 @@
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/io/output_lock.hpp"
 #include "catena/io/run_files.hpp"
+#include "catena/model/model_summary.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
 #include "log_stage.hpp"
@@ -91,6 +92,11 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                 git_version(), cl.scene.c_str(), m.name.c_str(), m.nodes.size(), m.elements.size(),
                 mpi_size(comm));
     std::fflush(stdout);
+    // What `catena check` warns of (a pantograph leaving its path, an evaluation section
+    // not traversed) is worth saying before a run spends its time.
+    for (const std::string& warning : model::scene_warnings(m))
+      std::fprintf(stderr, "catena: warning: %s\n", warning.c_str());
+    std::fflush(stderr);
   }
   // Before any solving: a run must not end by finding that it cannot write its results.
   check_output_path(comm, m, cl.output.has_value());

@@ -102,6 +102,14 @@ int suggested_rank_count(const Model& model) {
   return std::max(1, static_cast<int>(ranks));
 }
 
+std::vector<std::string> scene_warnings(const Model& model) {
+  detail::SummaryTable unused;
+  detail::SummaryNotes notes;
+  if (model.catenary) detail::describe_catenary(model, unused, notes);
+  detail::describe_moving(model, unused, notes);
+  return notes.warnings;
+}
+
 std::string describe(const Model& model, int n_ranks_running) {
   detail::SummaryTable t;
   detail::SummaryNotes notes;

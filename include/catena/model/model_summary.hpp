@@ -2,6 +2,7 @@
 // The human summary `catena check` prints: what the scene holds, how many DOFs it makes
 // and how many MPI ranks it deserves.
 #include <string>
+#include <vector>
 
 #include "catena/model/model.hpp"
 
@@ -26,5 +27,9 @@ int suggested_rank_count(const Model& model);
 // analysis ends, an evaluation section not traversed within the duration). `n_ranks_running` is the
 // size of the communicator the check runs on, shown beside the suggestion (pass 1 if unknown).
 std::string describe(const Model& model, int n_ranks_running);
+
+// Not collective. The "warning: " lines of describe (without the prefix), for `catena run`
+// to repeat what `catena check` would have said.
+std::vector<std::string> scene_warnings(const Model& model);
 
 }  // namespace catena::model
