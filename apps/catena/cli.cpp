@@ -8,6 +8,11 @@
 namespace catena::app {
 
 namespace {
+// run, check, stats or elasticity.
+bool is_command(const std::string& name) {
+  return name == "run" || name == "check" || name == "stats" || name == "elasticity";
+}
+
 bool is_scene_path(const std::string& token) {
   auto ends_with = [&](const std::string& suffix) {
     return token.size() >= suffix.size() &&
@@ -158,8 +163,7 @@ CommandLine parse_command_line(int argc, char** argv) {
     cl.command = "help";
     if (args.size() > 1 && args[1] != "--help" && args[1] != "-h") {
       cl.help_topic = args[1];
-      if (cl.help_topic != "run" && cl.help_topic != "check" && cl.help_topic != "stats" &&
-          cl.help_topic != "elasticity")
+      if (!is_command(cl.help_topic))
         throw InputError({"", 0, "help"},
                          "no command '" + args[1] + "'; accepted: run, check, stats, elasticity");
     }
@@ -174,7 +178,7 @@ CommandLine parse_command_line(int argc, char** argv) {
     parse_stats(args, i, cl);
     return cl;
   }
-  if (cl.command != "run" && cl.command != "check" && cl.command != "elasticity")
+  if (!is_command(cl.command))
     throw InputError({"", 0, "command"}, "unknown command '" + cl.command +
                                              "'; accepted: run, check, stats, elasticity, --help");
   for (; i < args.size(); ++i) {

@@ -198,7 +198,7 @@ void SecondOrderSystem::reference_state(Vec q) const {
       if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[kBlock * n + k];
     }
   for (int c = 0; c < dofs_.n_constraints(); ++c)
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < DofMap::kMultipliers; ++k)
       if (const PetscInt l = dofs_.multiplier_local(c, k); l >= 0) a[l] = 0.0;
   CATENA_PETSC(VecRestoreArray(q, &a));
 }

@@ -165,7 +165,7 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
   const PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArrayRead(x, &a));
   for (int n : sys.dofs_.owned_nodes())
-    for (int k = 0; k < model::kMaxBlockUnknowns; ++k) {
+    for (int k = 0; k < static_cast<int>(kBlock); ++k) {
       const PetscInt g = k < sys.dofs_.node_dofs(n) ? sys.dofs_.global_dof(n, k) : -1;
       rows.push_back(g >= 0 ? a[g - sys.dofs_.first_owned()] : 0.0);
     }
@@ -205,7 +205,8 @@ void StateView::owned_constraint_forces(Vec q, std::vector<int>& constraints,
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c) {
     if (sys.dofs_.multiplier_local(c, 0) < 0) continue;
     constraints.push_back(c);
-    for (int k = 0; k < 3; ++k) forces.push_back(-a[sys.dofs_.multiplier_local(c, k)]);
+    for (int k = 0; k < DofMap::kMultipliers; ++k)
+      forces.push_back(-a[sys.dofs_.multiplier_local(c, k)]);
   }
   CATENA_PETSC(VecRestoreArrayRead(q, &a));
 }

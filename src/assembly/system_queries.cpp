@@ -38,7 +38,7 @@ void SecondOrderSystem::algebraic_mask(Vec mask) const {
   CATENA_PETSC(VecSet(mask, 0.0));
   for (int c = 0; c < dofs_.n_constraints(); ++c)
     if (dofs_.multiplier_local(c, 0) >= 0)
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < DofMap::kMultipliers; ++k)
         CATENA_PETSC(VecSetValue(mask, dofs_.multiplier_dof(c, k), 1.0, INSERT_VALUES));
   CATENA_PETSC(VecAssemblyBegin(mask));
   CATENA_PETSC(VecAssemblyEnd(mask));
