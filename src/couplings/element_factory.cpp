@@ -48,8 +48,8 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, model::CableProps>) {
           const elements::CableSection s{
-              p.EA,        p.EI,           p.mass_per_length,     p.damping_time,
-              p.prestrain, p.tension_only, p.prestrain_with_loads};
+              p.EA,        p.EI,           p.mass_per_length,      p.damping_time,
+              p.prestrain, p.tension_only, p.prestrain_with_loads, p.curvature};
           return with_rayleigh(std::make_unique<elements::AncfCable>(length, s, model.gravity,
                                                                      desc.distributed_load),
                                p.rayleigh, model, desc.nodes);
@@ -68,8 +68,8 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
                                          node.section_z};
           };
           const elements::BeamSection s{
-              p.EA,     p.GA_y,   p.GA_z,        p.GJ, p.EI_y, p.EI_z, p.mass_per_length,
-              p.rho_Iy, p.rho_Iz, p.damping_time};
+              p.EA,     p.GA_y,   p.GA_z,         p.GJ,       p.EI_y, p.EI_z, p.mass_per_length,
+              p.rho_Iy, p.rho_Iz, p.damping_time, p.curvature};
           return with_rayleigh(std::make_unique<elements::AncfBeam>(
                                    node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
                                    elements::BeamLoads{model.gravity, desc.distributed_load}),

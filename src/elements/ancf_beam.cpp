@@ -100,9 +100,10 @@ struct AxialGroup {
   }
 };
 struct BendingGroup {
+  bool per_deformed_length;
   template <class S>
   std::array<S, 2> operator()(const std::array<S, 12>& x) const {
-    return bs::bending_strains(x);
+    return bs::bending_strains(x, per_deformed_length);
   }
 };
 // κ_x = φ/L with the element twist angle φ: energy ½ GJ κ_x² L.
@@ -203,7 +204,8 @@ void AncfBeam::for_each_point(Visitor&& visit) const {
     point(axial_map(p.xi, L), p.w * L, std::array{sec.EA}, AxialGroup{});
   for (int g = 0; g < kBendingPoints; ++g) {
     const Rule01 p = gauss01(kBendingPoints, g);
-    point(bending_map(p.xi, L), p.w * L, std::array{sec.EI_y, sec.EI_z}, BendingGroup{});
+    point(bending_map(p.xi, L), p.w * L, std::array{sec.EI_y, sec.EI_z},
+          BendingGroup{sec.curvature == CurvatureMeasure::deformed_length});
   }
   point(twist_map(), L, std::array{sec.GJ}, TwistGroup{1.0 / L});
   for (int n = 0; n < kNodes; ++n)

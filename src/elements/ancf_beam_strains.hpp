@@ -40,20 +40,22 @@ std::array<S, 1> axial_strain(const std::array<S, 3>& u) {
 }
 
 // Bending, arguments [u = r_c', w = r_c'', d_y, d_z] (12). Returns {κ_y, κ_z}:
-//   k = u × w / |u|³ (curvature vector, ⊥ t̂ = u/|u|),
+//   k = u × w / |u|² (per reference length: the rate of turn of the tangent, dθ/ds₀) or
+//   k = u × w / |u|³ (per deformed length: the curve's curvature), ⊥ t̂ = u/|u|
+//   (core/curvature_measure.hpp),
 //   κ_y = k·ê_y, κ_z = k·ê_z, with the section frame ê_y = a⊥/|a⊥|, ê_z = t̂ × ê_y built
 //   from a = d_y + d_z × t̂ (both terms ≈ ê_y; symmetric in the two directors), a⊥ its
 //   part ⊥ t̂. Since k ⊥ t̂: κ_y = k·a/|a⊥|, κ_z = k·(t̂ × a)/|a⊥|, κ_y² + κ_z² = |k|²,
 //   so an isotropic section (EI_y = EI_z) sees the centreline curvature only.
 // Bending ABOUT y curves the centreline in the x–z plane: k ∥ d_y, so κ_y pairs with EI_y.
 template <class S>
-std::array<S, 2> bending_strains(const std::array<S, 12>& x) {
+std::array<S, 2> bending_strains(const std::array<S, 12>& x, bool per_deformed_length) {
   using std::sqrt;
   const V3<S> u = block(x, 0), w = block(x, 3), d_y = block(x, 6), d_z = block(x, 9);
   const S uu = dot(u, u);
   const S inv_norm_u = 1.0 / sqrt(uu);
   const V3<S> t = scale(u, inv_norm_u);
-  const V3<S> k = scale(cross(u, w), inv_norm_u / uu);
+  const V3<S> k = scale(cross(u, w), per_deformed_length ? inv_norm_u / uu : 1.0 / uu);
   const V3<S> a = add(d_y, cross(d_z, t));
   const S a_t = dot(a, t);
   const S inv_a_perp = 1.0 / sqrt(dot(a, a) - a_t * a_t);

@@ -17,12 +17,28 @@ constexpr double kAxialPoints[3] = {0.0, 0.5, 1.0};
 constexpr double kAxialWeights[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
 constexpr int kBendingPoints = 3;
 
-// Energy density of bending, κ² = p/g² − c²/g³, and its derivatives in (g, p, c).
-struct CurvatureSquared {
+// Bending energy density per unit of the stiffness factor (see evaluate), as a function of
+// g = u·u, p = w·w, c = u·w, with its derivatives. Both laws are linear in p with no p·c
+// term, so F_pp = F_pc = 0.
+struct BendingDensity {
   double F, Fg, Fp, Fc, Fgg, Fgp, Fgc, Fcc;
 };
 
-CurvatureSquared curvature_squared(double g, double p, double c) {
+// Per reference length: κ₀²/a² = |u×w|²/g² = p/g − c²/g².
+BendingDensity reference_length_density(double g, double p, double c) {
+  const double ig = 1.0 / g, ig2 = ig * ig, ig3 = ig2 * ig, ig4 = ig3 * ig;
+  return {p * ig - c * c * ig2,
+          -p * ig2 + 2.0 * c * c * ig3,
+          ig,
+          -2.0 * c * ig2,
+          2.0 * p * ig3 - 6.0 * c * c * ig4,
+          -ig2,
+          4.0 * c * ig3,
+          -2.0 * ig2};
+}
+
+// Per deformed length: κ² = |u×w|²/g³ = p/g² − c²/g³.
+BendingDensity deformed_length_density(double g, double p, double c) {
   const double ig = 1.0 / g, ig2 = ig * ig, ig3 = ig2 * ig, ig4 = ig3 * ig, ig5 = ig4 * ig;
   return {p * ig2 - c * c * ig3,
           -2.0 * p * ig3 + 3.0 * c * c * ig4,
@@ -103,7 +119,10 @@ AncfCable::AncfCable(double length, const CableSection& section, const Vec3& gra
 void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const {
   const double L = length_;
   const double a = 1.0 + section_prestrain(section_, s.path);
-  const double EA = section_.EA, kb = section_.EI / a, tau = section_.damping_time;
+  const double EA = section_.EA, tau = section_.damping_time;
+  // Bending energy per mesh length: ½ kb F(g, p, c) (ancf_cable.hpp).
+  const bool per_reference_length = section_.curvature == CurvatureMeasure::reference_length;
+  const double kb = per_reference_length ? section_.EI * a : section_.EI / a;
   const bool damped = tau > 0.0 && !s.v.empty();
   const Blocks e = gather(s.q);
   Blocks ev;
@@ -210,7 +229,7 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
       for (int j = 0; j < 4; ++j) K[i][j] += (cb * b[i] + cv * v[i]) * b[j].transpose();
   }
 
-  // Bending: ½ (EI/a) κ², κ² = p/g² − c²/g³.
+  // Bending: ½ kb F(g, p, c).
   const auto xg = gauss_points(kBendingPoints);
   const auto wg = gauss_weights(kBendingPoints);
   for (int k = 0; k < kBendingPoints; ++k) {
@@ -221,7 +240,8 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
       w += h.dds[i] * e[i];
     }
     const double g = u.squaredNorm(), p = w.squaredNorm(), c = u.dot(w);
-    const CurvatureSquared F = curvature_squared(g, p, c);
+    const BendingDensity F =
+        per_reference_length ? reference_length_density(g, p, c) : deformed_length_density(g, p, c);
     PointTangent pt;
     pt.fu = 0.5 * kb * (2.0 * F.Fg * u + F.Fc * w);
     pt.fw = 0.5 * kb * (2.0 * F.Fp * w + F.Fc * u);

@@ -1,6 +1,8 @@
 #include "section_reader.hpp"
 
 #include <algorithm>
+#include <span>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -44,6 +46,11 @@ class SectionKeys {
   void spring_damping(std::string_view key, Vec3& value) const {
     value = read_spring_damping(section_.child(key));
   }
+  template <class Enum>
+  void choice_or(std::string_view key, Enum& value, Enum fallback,
+                 std::span<const std::string_view> names) const {
+    value = static_cast<Enum>(read_choice(section_.child(key), static_cast<int>(fallback), names));
+  }
 
  private:
   static RealRange real_range(Range range, std::string_view unit) {
@@ -54,6 +61,23 @@ class SectionKeys {
         return RealRange::non_negative(std::string(unit));
     }
     return RealRange::positive(std::string(unit));  // not reached: every Range is above
+  }
+
+  // Index of the field's text in names (fallback when absent); anything else is refused
+  // with the accepted names.
+  static int read_choice(const Field& field, int fallback,
+                         std::span<const std::string_view> names) {
+    if (!field.present()) return fallback;
+    const std::string text = field.text();
+    std::vector<std::string> accepted;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == text) return static_cast<int>(i);
+      accepted.emplace_back(names[i]);
+    }
+    std::string list;
+    for (const std::string& a : accepted) list += (list.empty() ? "" : ", ") + a;
+    field.fail("unknown value '" + text + "';" + did_you_mean(text, accepted) +
+               " accepted: " + list);
   }
 
   const Field& section_;

@@ -125,7 +125,10 @@ TEST(AncfBeam, JacobiansMatchFiniteDifferencesAtRandomStates) {
   std::mt19937 rng(2024);
   std::uniform_real_distribution<double> lambda(0.1, 1.0);
   double worst_K = 0.0, worst_C = 0.0;
-  for (const AncfBeam& beam : {straight_beam(), curved_beam()}) {
+  BeamSection deformed_law = test_section();
+  deformed_law.curvature = catena::CurvatureMeasure::deformed_length;
+  for (const AncfBeam& beam :
+       {straight_beam(), curved_beam(), straight_beam(deformed_law), curved_beam(deformed_law)}) {
     for (int trial = 0; trial < 6; ++trial) {
       const auto q = perturbed(to_vector(beam.reference_state()), 0.08, rng);
       const auto v = perturbed(std::vector<double>(kN, 0.0), 1.0, rng);

@@ -9,6 +9,7 @@
 #include "catena/elements/ancf_cable.hpp"
 #include "element_checks.hpp"
 
+using catena::CurvatureMeasure;
 using catena::Vec3;
 using catena::elements::AncfCable;
 using catena::elements::CableSection;
@@ -47,15 +48,19 @@ void expect_jacobians_match(const AncfCable& cable, const std::vector<double>& q
 }  // namespace
 
 TEST(AncfCable, JacobiansMatchFiniteDifferencesAtRandomStates) {
-  std::mt19937 rng(42);
-  const AncfCable cable(2.0, kSection, kGravity, Vec3(0, 1.0, -3.0));
-  for (int trial = 0; trial < 8; ++trial) {
-    const auto q = perturbed(straight({0, 0, 0}, {2, 0, 0}), 0.2, rng);
-    const auto v = perturbed(std::vector<double>(12, 0.0), 1.0, rng);
-    const double lambda = std::uniform_real_distribution<double>(0.2, 1.0)(rng);
-    const auto check = catena::test::check_element_jacobians(cable, q, v, lambda);
-    EXPECT_LT(check.stiffness, 1e-6) << "trial " << trial;
-    EXPECT_LT(check.damping, 1e-6) << "trial " << trial;
+  for (const auto law : {CurvatureMeasure::reference_length, CurvatureMeasure::deformed_length}) {
+    std::mt19937 rng(42);
+    CableSection s = kSection;
+    s.curvature = law;
+    const AncfCable cable(2.0, s, kGravity, Vec3(0, 1.0, -3.0));
+    for (int trial = 0; trial < 8; ++trial) {
+      const auto q = perturbed(straight({0, 0, 0}, {2, 0, 0}), 0.2, rng);
+      const auto v = perturbed(std::vector<double>(12, 0.0), 1.0, rng);
+      const double lambda = std::uniform_real_distribution<double>(0.2, 1.0)(rng);
+      const auto check = catena::test::check_element_jacobians(cable, q, v, lambda);
+      EXPECT_LT(check.stiffness, 1e-6) << "trial " << trial << ", law " << static_cast<int>(law);
+      EXPECT_LT(check.damping, 1e-6) << "trial " << trial << ", law " << static_cast<int>(law);
+    }
   }
 }
 
@@ -147,6 +152,29 @@ TEST(AncfCable, ConstantCurvatureBendingEnergyMatchesArc) {
   const Vec3 QB(f[9], f[10], f[11]);
   const double moment = tb.cross(QB)[2];
   EXPECT_NEAR(moment, s.EI / rho, 1e-3 * s.EI / rho);
+}
+
+// The same arc stretched uniformly by λ (positions and slopes scaled): its tangent turns
+// by 1/ρ per unit reference length whatever the stretch, its curvature is 1/(λρ). The end
+// moment conjugate to that turn, M = λ (t̂ × Q_B)·ẑ, is EI/ρ under the reference-length
+// law (stretching leaves bending alone) and EI/(λ²ρ) under the deformed-length law, whose
+// energy ½EI κ² per reference length falls as the line stretches.
+TEST(AncfCable, StretchChangesTheEndMomentOnlyUnderTheDeformedLengthLaw) {
+  const double rho = 50.0, phi = 0.02, L = rho * phi, stretch = 1.01;
+  const Vec3 rb(rho * std::sin(phi), rho * (1 - std::cos(phi)), 0);
+  const Vec3 tb(std::cos(phi), std::sin(phi), 0);
+  std::vector<double> q = {0, 0, 0, 1, 0, 0, rb[0], rb[1], rb[2], tb[0], tb[1], tb[2]};
+  for (double& x : q) x *= stretch;
+  for (const auto law : {CurvatureMeasure::reference_length, CurvatureMeasure::deformed_length}) {
+    CableSection s{0.0, 195.0, 1.0, 0.0, 0.0};
+    s.curvature = law;
+    const AncfCable cable(L, s, Vec3::Zero(), Vec3::Zero());
+    const auto f = catena::test::element_force(cable, q, {}, 1.0);
+    const double moment = stretch * tb.cross(Vec3(f[9], f[10], f[11]))[2];
+    const double expected =
+        law == CurvatureMeasure::reference_length ? s.EI / rho : s.EI / (stretch * stretch * rho);
+    EXPECT_NEAR(moment, expected, 1e-3 * s.EI / rho) << "law " << static_cast<int>(law);
+  }
 }
 
 // A tension-only (dropper) cable shortened uniformly: the force is the slack residue

@@ -57,10 +57,10 @@ struct TypeKeys {
 };
 
 const std::vector<TypeKeys> documented_keys{
-    {"cable", "type, EA, EI, mass_per_length, damping_time, rayleigh"},
+    {"cable", "type, EA, EI, mass_per_length, damping_time, rayleigh, curvature"},
     {"beam",
      "type, EA, GA_y, GA_z, GJ, EI_y, EI_z, mass_per_length, rho_Iy, rho_Iz, damping_time, "
-     "rayleigh, y_axis"},
+     "rayleigh, y_axis, curvature"},
     {"bar", "type, EA, mass_per_length, damping, tension_only, unstretched_length"},
     {"spring", "type, stiffness, damping"},
 };
@@ -143,6 +143,10 @@ TEST(SectionKeys, ChecksOfDirectionAndSpringStiffness) {
                 .find("'sections.s.mass_per_length': value -1 is out of range; expected a "
                       "finite number >= 0 [kg/m]"),
             std::string::npos);
+  EXPECT_NE(section_error("{type: cable, EA: 1, EI: 1, mass_per_length: 1, curvature: deformed}")
+                .find("'sections.s.curvature': unknown value 'deformed'; did you mean "
+                      "'deformed_length'? accepted: reference_length, deformed_length"),
+            std::string::npos);
   EXPECT_NE(section_error("{type: cable, EA: 1, EI: 0, mass_per_length: 1}")
                 .find("'sections.s.EI': value 0 is out of range; expected a finite number > 0 "
                       "[N*m^2]"),
@@ -187,12 +191,14 @@ TEST(SectionKeys, OptionalKeysTakeTheirDocumentedDefaults) {
   const auto& cable = std::get<CableProps>(m.elements[0].props);
   EXPECT_EQ(cable.damping_time, 0.0);
   EXPECT_FALSE(cable.rayleigh.active());
+  EXPECT_EQ(cable.curvature, catena::CurvatureMeasure::reference_length);
   const auto& beam = std::get<BeamProps>(m.elements[1].props);
   EXPECT_EQ(beam.rho_Iy, 0.0);
   EXPECT_EQ(beam.rho_Iz, 0.0);
   EXPECT_EQ(beam.damping_time, 0.0);
   EXPECT_FALSE(beam.rayleigh.active());
   EXPECT_EQ(beam.y_axis, Vec3::UnitZ());
+  EXPECT_EQ(beam.curvature, catena::CurvatureMeasure::reference_length);
   const auto& bar = std::get<BarProps>(m.elements[2].props);
   EXPECT_EQ(bar.mass_per_length, 0.0);
   EXPECT_EQ(bar.damping, 0.0);
@@ -206,10 +212,10 @@ TEST(SectionKeys, OptionalKeysTakeTheirDocumentedDefaults) {
 TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
   const Model m = four_elements(
       "  c: {type: cable, EA: 1.8e7, EI: 195, mass_per_length: 1.35, damping_time: 0.02, "
-      "rayleigh: {mass: 0.06, stiffness: 7.6e-5}}\n"
+      "rayleigh: {mass: 0.06, stiffness: 7.6e-5}, curvature: deformed_length}\n"
       "  b: {type: beam, EA: 1e9, GA_y: 2e8, GA_z: 3e8, GJ: 4e5, EI_y: 5e6, EI_z: 6e6, "
       "mass_per_length: 10, rho_Iy: 0.01, rho_Iz: 0.02, damping_time: 0.003, "
-      "rayleigh: {mass: 0.5}, y_axis: [0, 3, 4]}\n"
+      "rayleigh: {mass: 0.5}, y_axis: [0, 3, 4], curvature: deformed_length}\n"
       "  r: {type: bar, EA: 2e5, mass_per_length: 0.1, damping: 5, tension_only: true, "
       "unstretched_length: 0.99}\n"
       "  s: {type: spring, stiffness: [1, 2, 3], damping: 4}\n");
@@ -220,6 +226,7 @@ TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
   EXPECT_EQ(cable.damping_time, 0.02);
   EXPECT_EQ(cable.rayleigh.mass, 0.06);
   EXPECT_EQ(cable.rayleigh.stiffness, 7.6e-5);
+  EXPECT_EQ(cable.curvature, catena::CurvatureMeasure::deformed_length);
   const auto& beam = std::get<BeamProps>(m.elements[1].props);
   EXPECT_EQ(beam.EA, 1e9);
   EXPECT_EQ(beam.GA_y, 2e8);
@@ -233,6 +240,7 @@ TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
   EXPECT_EQ(beam.damping_time, 0.003);
   EXPECT_EQ(beam.rayleigh.mass, 0.5);
   EXPECT_NEAR((beam.y_axis - Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);  // normalised
+  EXPECT_EQ(beam.curvature, catena::CurvatureMeasure::deformed_length);
   const auto& bar = std::get<BarProps>(m.elements[2].props);
   EXPECT_EQ(bar.EA, 2e5);
   EXPECT_EQ(bar.mass_per_length, 0.1);

@@ -16,8 +16,10 @@
 // Strain measures (each minus its value in the reference configuration, which is stress
 // free whatever its curvature), with t̂ = r_c'/|r_c'|:
 //   axial      ε = |r_c'| − 1                                   Lobatto 3 (x = 0, L/2, L)
-//   bending    k = r_c' × r_c'' / |r_c'|³, κ_y = k·ê_y, κ_z = k·ê_z     Gauss, 3 points
-//              (ê_y, ê_z: orthonormal section frame ⊥ t̂ built from the directors)
+//   bending    k = r_c' × r_c'' / |r_c'|², κ_y = k·ê_y, κ_z = k·ê_z     Gauss, 3 points
+//              (ê_y, ê_z: orthonormal section frame ⊥ t̂ built from the directors;
+//              BeamSection::curvature = deformed_length divides by |r_c'|³ instead:
+//              core/curvature_measure.hpp)
 //   twist      κ_x = φ/L, φ = atan2(S, C) the nodal frames' relative angle about t̂:
 //              S = ½ (d_y,B·d_z,A − d_z,B·d_y,A) (= L·½(d_y'·d_z − d_z'·d_y)),
 //              C = ½ (d_y,A·d_y,B + d_z,A·d_z,B); constant, exact for uniform twist
@@ -49,6 +51,7 @@
 #include <array>
 #include <span>
 
+#include "catena/core/curvature_measure.hpp"
 #include "catena/core/vec3.hpp"
 #include "catena/elements/element.hpp"
 
@@ -73,6 +76,7 @@ struct BeamSection {
   double mass_per_length = 0.0;       // kg/m, ρA
   double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, ρ∫z² dA and ρ∫y² dA
   double damping_time = 0.0;          // s, Kelvin–Voigt τ on all strains
+  CurvatureMeasure curvature = CurvatureMeasure::reference_length;  // the bending law
 };
 
 // Dead loads per unit reference length, scaled by LocalState::path.loads.

@@ -10,10 +10,13 @@
 // LocalState and path_prestrain;
 // the unstretched element length is L/a), u = r', w = r'':
 //   axial (Biot strain, exact for the elastic catenary):  ε = a|u| − 1,  ½ (EA/a) ε²
-//   bending, exact curvature of the centre line:          κ² = |u×w|²/|u|⁶ ,  ½ (EI/a) κ²
-// with |u×w|² = (u·u)(w·w) − (u·w)², so κ² = p/g² − c²/g³ (g = u·u, p = w·w, c = u·w): a
-// smooth rational function whose gradient and Hessian in (u, w) are closed form. The
-// element vectors follow from u = Σ S'_i e_i, w = Σ S''_i e_i.
+//   bending (CableSection::curvature, core/curvature_measure.hpp), ½ EI κ² per unit
+//   unstretched length, with the arc lengths ds₀ = dx/a (unstretched), ds = |u| dx:
+//     per reference length (default): κ₀ = a |u×w|/|u|²,  energy ½ (EI a) (p/g − c²/g²)
+//     per deformed length:            κ = |u×w|/|u|³,     energy ½ (EI/a) (p/g² − c²/g³)
+// with |u×w|² = (u·u)(w·w) − (u·w)² = gp − c² (g = u·u, p = w·w, c = u·w): smooth rational
+// functions whose gradient and Hessian in (u, w) are closed form. The element vectors
+// follow from u = Σ S'_i e_i, w = Σ S''_i e_i.
 // Kelvin–Voigt axial damping: N = EA (ε + τ ε̇), objective (ε̇ = 0 under rigid motion).
 // Quadrature: the axial strain (and its rate) is sampled at the Lobatto 3 points
 // x = 0, L/2, L (Simpson weights), which avoids membrane locking in bending-dominated
@@ -23,6 +26,7 @@
 // gravity [m/s²], distributed load [N/m of mesh length].
 #include <array>
 
+#include "catena/core/curvature_measure.hpp"
 #include "catena/core/vec3.hpp"
 #include "catena/elements/element.hpp"
 
@@ -42,6 +46,7 @@ struct CableSection {
   // Along the static load path, ε_p is put on with the loads (ε_p·loads), not before them
   // (see LoadPath): a dropper's prestrain is its shape-found length, not a tension.
   bool prestrain_with_loads = false;
+  CurvatureMeasure curvature = CurvatureMeasure::reference_length;  // the bending law
 };
 
 class AncfCable final : public Element {

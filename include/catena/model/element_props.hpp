@@ -13,6 +13,7 @@
 #include <string_view>
 #include <variant>
 
+#include "catena/core/curvature_measure.hpp"
 #include "catena/core/vec3.hpp"
 #include "catena/model/scene_keys.hpp"
 #include "catena/model/unknown_kinds.hpp"
@@ -43,6 +44,8 @@ struct CableProps {
   // finding rather than a tension, put on with the loads along the static load path.
   bool tension_only = false;
   bool prestrain_with_loads = false;
+  // The bending law: which curvature the bending energy squares (core/curvature_measure.hpp).
+  CurvatureMeasure curvature = CurvatureMeasure::reference_length;
 
   // Scene keys (docs/scene.md "type: cable"); prestrain and the two flags are not section
   // keys: lines, elements and the catenary builder set them.
@@ -53,6 +56,7 @@ struct CableProps {
     k.real("mass_per_length", mass_per_length, Range::positive, "kg/m");
     k.real_or("damping_time", damping_time, 0.0, Range::non_negative, "s");
     k.rayleigh("rayleigh", rayleigh);
+    k.choice_or("curvature", curvature, CurvatureMeasure::reference_length, kCurvatureMeasureNames);
   }
 };
 
@@ -68,7 +72,8 @@ struct BeamProps {
   double rho_Iy = 0.0, rho_Iz = 0.0;  // kg·m, section rotary inertia per length
   double damping_time = 0.0;          // s, Kelvin–Voigt on all strains
   Vec3 y_axis = Vec3::UnitZ();        // reference direction of the section's y axis
-  Rayleigh rayleigh;                  // proportional damping α M + β K_ref (last: aggregates)
+  CurvatureMeasure curvature = CurvatureMeasure::reference_length;  // the bending law
+  Rayleigh rayleigh;  // proportional damping α M + β K_ref (last: aggregates)
 
   // Scene keys (docs/scene.md "type: beam").
   template <class Keys>
@@ -86,6 +91,7 @@ struct BeamProps {
     k.rayleigh("rayleigh", rayleigh);
     // Only the direction matters; it is checked against each element's axis later.
     k.direction_or("y_axis", y_axis, Vec3::UnitZ());
+    k.choice_or("curvature", curvature, CurvatureMeasure::reference_length, kCurvatureMeasureNames);
   }
 };
 

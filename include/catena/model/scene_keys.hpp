@@ -19,7 +19,10 @@
 //                                                         each >= 0, not all zero; required
 //   k.spring_damping(key, Vec3& value)                    a scalar or [cx, cy, cz] in N·s/m,
 //                                                         each >= 0; absent: zero
+//   k.choice_or(key, Enum& value, fallback, names)        one of names (names[i] is the
+//                                                         enum value i); absent: fallback
 // Units are written as in messages ("N*m^2", "kg/m"); "" is dimensionless.
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +53,10 @@ class KeyNames {
   void direction_or(std::string_view key, Vec3&, const Vec3&) { add(key); }
   void spring_stiffness(std::string_view key, Vec3&) { add(key); }
   void spring_damping(std::string_view key, Vec3&) { add(key); }
+  template <class Enum>
+  void choice_or(std::string_view key, Enum&, Enum, std::span<const std::string_view>) {
+    add(key);
+  }
 
  private:
   void add(std::string_view key) { names_.emplace_back(key); }
