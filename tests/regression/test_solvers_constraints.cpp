@@ -319,9 +319,11 @@ TEST(ConstraintStatics, MultiplierEqualsTheEliminatedSupportReaction) {
 
 // Observed orders on the driven pendulum, pair n = 256, 512 steps over 0.25 s against a
 // Radau IIA (s = 5, 2048 steps) reference: positions at the method's order p; the pivot
-// force λ at p too (Radau IIA: its last stage; the other tableaus: from the acceleration
-// equations at the step end), except Radau IIA with one stage (implicit Euler), whose
-// stage multiplier has order s − 1 = 0 in index-3 form (Hairer & Wanner II, VII.4).
+// force λ at p too (the tableaus but Radau IIA: from the acceleration equations at the
+// step end), and for Radau IIA (its last stage) at least s − 1, the index-3 order
+// (Hairer & Wanner II, VII.4): at this pair s = 2 and 3 still show 2.6 and 4.9, from 512
+// to 1024 steps 1.2 and 2.6 (docs/integrators.md). Implicit Euler's (s = 1) λ does not
+// converge (order 0).
 TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
   catena::test::ensure_petsc();
   const model::Model m = pendulum(Pivot::driven);
@@ -346,14 +348,17 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
         "%-16s positions %.2e -> %.2e (order %.2f), pivot force %.2e -> %.2e N "
         "(order %.2f)\n",
         label(method).c_str(), eq[0], eq[1], pq, el[0], el[1], pl);
-    const bool implicit_euler = method.type == "radau_iia" && method.stages == 1;
-    if (implicit_euler) {
-      // Order 1 in q; on this problem its damping leaves it preasymptotic (≈ 2.3).
+    const bool radau = method.type == "radau_iia";
+    if (radau && method.stages == 1) {
+      // Order 1 in q; on this problem its damping leaves it preasymptotic (≈ 2.6).
       EXPECT_GT(pq, 0.7) << label(method);
       EXPECT_NEAR(pl, 0.0, 0.3) << label(method);
     } else {
       EXPECT_NEAR(pq, p, 0.3) << label(method);
-      EXPECT_NEAR(pl, p, 0.3) << label(method);
+      if (radau)
+        EXPECT_GT(pl, method.stages - 1 - 0.3) << label(method);
+      else
+        EXPECT_NEAR(pl, p, 0.3) << label(method);
     }
   }
 }
