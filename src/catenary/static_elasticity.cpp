@@ -115,25 +115,20 @@ class TangentSolve {
     CATENA_PETSC(MatDuplicate(tangent, MAT_COPY_VALUES, matrix_.out()));
     CATENA_PETSC(KSPSetOperators(ksp_.get(), matrix_.get(), matrix_.get()));
     CATENA_PETSC(KSPSetUp(ksp_.get()));
-    const solvers::MumpsStatus mumps = solvers::mumps_status(ksp_.get());
-    if (mumps.infog1 < 0 || mumps.null_pivots > 0)
+    if (const solvers::DirectSolveStatus status = solvers::direct_solve_status(ksp_.get());
+        status.failed())
       throw NumericalError(
-          "static elasticity: the tangent at the static equilibrium cannot be "
-          "factored (MUMPS INFOG(1) = " +
-          std::to_string(mumps.infog1) + ", " + std::to_string(mumps.null_pivots) +
-          " null pivots): the structure is not held statically");
+          "static elasticity: the tangent at the static equilibrium cannot be factored (" +
+          status.describe() + "): the structure is not held statically");
   }
 
   // Collective. Pᵀ K₀⁻¹ P.
   double energy_norm(Vec P, Vec work) {
     CATENA_PETSC(KSPSolve(ksp_.get(), P, work));
-    KSPConvergedReason reason;
-    CATENA_PETSC(KSPGetConvergedReason(ksp_.get(), &reason));
-    const solvers::MumpsStatus mumps = solvers::mumps_status(ksp_.get());
-    if (reason < 0 || mumps.infog1 < 0)
-      throw NumericalError("static elasticity: the tangent solve failed (KSP reason " +
-                           std::to_string(reason) +
-                           ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) + ")");
+    if (const solvers::DirectSolveStatus status = solvers::direct_solve_status(ksp_.get());
+        status.failed())
+      throw NumericalError("static elasticity: the tangent solve failed (" + status.describe() +
+                           ")");
     PetscScalar value = 0.0;
     CATENA_PETSC(VecDot(P, work, &value));
     return value;

@@ -35,6 +35,22 @@ MumpsStatus mumps_status(KSP ksp) {
   return status;
 }
 
+std::string DirectSolveStatus::describe() const {
+  std::string text = "KSP reason " + std::string(KSPConvergedReasons[reason]);
+  if (mumps.is_mumps)
+    text += ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
+            ", INFOG(2) = " + std::to_string(mumps.infog2) + ", " +
+            std::to_string(mumps.null_pivots) + " null pivots";
+  return text;
+}
+
+DirectSolveStatus direct_solve_status(KSP ksp) {
+  DirectSolveStatus status;
+  CATENA_PETSC(KSPGetConvergedReason(ksp, &status.reason));
+  status.mumps = mumps_status(ksp);
+  return status;
+}
+
 namespace {
 // Sets -<prefix><option> to `value` unless the user gave it.
 void set_default_option(const std::string& prefix, const char* option, const char* value) {

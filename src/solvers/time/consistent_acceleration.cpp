@@ -22,13 +22,11 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
       algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
   CATENA_PETSC(KSPSetUp(ksp_.get()));
-  const MumpsStatus mumps = mumps_status(ksp_.get());
-  if (mumps.null_pivots > 0 || mumps.infog1 < 0)
+  if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
     throw NumericalError(
         std::string(algebraic_.active() ? "the constrained mass matrix [M G'; G 0]"
                                         : "the mass matrix") +
-        " is singular (" + std::to_string(mumps.null_pivots) +
-        " null pivots, MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
+        " is singular (" + status.describe() +
         "): every free DOF needs mass; massless nodes (e.g. joined only by massless bars "
         "or springs) need a point mass" +
         (algebraic_.active() ? "; constraints must not repeat each other or a support" : ""));
@@ -44,12 +42,8 @@ void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
     algebraic_.take_algebraic(rhs_.get(), target_.get());
   }
   CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), a));
-  KSPConvergedReason reason;
-  CATENA_PETSC(KSPGetConvergedReason(ksp_.get(), &reason));
-  const MumpsStatus mumps = mumps_status(ksp_.get());
-  if (reason < 0 || mumps.infog1 < 0)
-    throw NumericalError("the acceleration solve failed (KSP reason " + std::to_string(reason) +
-                         ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) + ")");
+  if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
+    throw NumericalError("the acceleration solve failed (" + status.describe() + ")");
   algebraic_.take_algebraic(q, a);
   algebraic_.zero_algebraic(a);
 }

@@ -17,6 +17,22 @@ struct MumpsStatus {
 // Logically collective (same values on every rank). Call only after the KSP has factored.
 MumpsStatus mumps_status(KSP ksp);
 
+// The outcome of a direct solver's (KSPPREONLY with LU or Cholesky) factorisation or solve:
+// the KSP's reason (still "iterating" after a KSPSetUp alone) and MUMPS's status. A
+// failure is a negative KSP reason, a negative INFOG(1) or any null pivot (ICNTL(24) = 1
+// lets MUMPS go on past them, and the solution is then arbitrary along the null space).
+struct DirectSolveStatus {
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  MumpsStatus mumps;
+  bool failed() const { return reason < 0 || mumps.infog1 < 0 || mumps.null_pivots > 0; }
+  // "KSP reason R, MUMPS INFOG(1) = a, INFOG(2) = b, n null pivots" (MUMPS parts only when
+  // MUMPS is the solver).
+  std::string describe() const;
+};
+
+// Logically collective. Call after KSPSetUp or KSPSolve of a direct solver.
+DirectSolveStatus direct_solve_status(KSP ksp);
+
 // Not collective. Turns on MUMPS null-pivot detection (ICNTL(24) = 1) for the solver with
 // options prefix `prefix`, unless the user set it on the command line.
 void enable_mumps_null_pivot_detection(const std::string& prefix);

@@ -90,16 +90,11 @@ struct DecoupledStageSolver::Impl {
 
   // The block's MUMPS status after a factorisation or solve: empty if fine.
   static std::string block_failure(size_t b, const Block& block, const char* when) {
-    const MumpsStatus mumps = mumps_status(block.ksp.get());
-    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-    CATENA_PETSC(KSPGetConvergedReason(block.ksp.get(), &reason));
-    const bool ksp_failed = reason < 0;
-    if (mumps.infog1 >= 0 && mumps.null_pivots == 0 && !ksp_failed) return {};
+    const DirectSolveStatus status = direct_solve_status(block.ksp.get());
+    if (!status.failed()) return {};
     std::ostringstream os;
     os << "decoupled stage block " << b << " (" << (block.where.size == 1 ? "real" : "complex")
-       << " eigenvalue) failed in its " << when << " (MUMPS INFOG(1) = " << mumps.infog1
-       << ", INFOG(2) = " << mumps.infog2 << ", null pivots " << mumps.null_pivots
-       << ", KSP reason " << static_cast<int>(reason) << ")";
+       << " eigenvalue) failed in its " << when << " (" << status.describe() << ")";
     return os.str();
   }
 

@@ -300,11 +300,7 @@ struct IrkIntegrator::Impl {
     CATENA_PETSC(VecAXPY(rhs.get(), -g, scratch.get()));
     CATENA_PETSC(KSPSolve(filter, rhs.get(), xv.get()));
     ++estimate_solves;
-    const MumpsStatus mumps = mumps_status(filter);
-    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-    CATENA_PETSC(KSPGetConvergedReason(filter, &reason));
-    if (mumps.infog1 < 0 || mumps.null_pivots > 0 || reason < 0)
-      return 1e10;  // reject: h will shrink
+    if (direct_solve_status(filter).failed()) return 1e10;  // reject: h will shrink
     CATENA_PETSC(VecWAXPY(xu.get(), g, xv.get(), ru.get()));
     return weighted_error_norm(tol, xu.get(), state.q(), state.pending_q());
   }

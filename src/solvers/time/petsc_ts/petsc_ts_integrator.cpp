@@ -10,6 +10,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/newton/mumps_status.hpp"
 #include "catena/solvers/time/petsc_ts/first_order_form.hpp"
 #include "catena/solvers/time/step_state.hpp"
 #include "petsc_ts_methods.hpp"
@@ -274,10 +275,9 @@ struct PetscTsIntegrator::Impl {
     evaluate_force(t, q, v, fw.get());
     CATENA_PETSC(VecScale(fw.get(), -1.0));
     CATENA_PETSC(KSPSolve(mass_ksp.get(), fw.get(), a));
-    KSPConvergedReason reason;
-    CATENA_PETSC(KSPGetConvergedReason(mass_ksp.get(), &reason));
-    if (reason < 0)
-      throw NumericalError("PetscTsIntegrator: the mass matrix could not be factored");
+    if (const DirectSolveStatus status = direct_solve_status(mass_ksp.get()); status.failed())
+      throw NumericalError("PetscTsIntegrator: the mass matrix could not be factored (" +
+                           status.describe() + ")");
   }
 
   // The global DOF with the largest |entry| of the last Newton residual (−1 if none).
