@@ -14,9 +14,13 @@ void apply_initial_conditions(const assembly::SecondOrderSystem& system, Vec q, 
   };
   for (const model::InitialNodeOffset& o : ic.offsets) {
     const model::UnknownKindInfo& kind = model::kind_info(dofs.node_kind(o.node));
+    // A linked slope (a clamp holding its direction) takes the offset's projection on its
+    // tangent: the sum of coefficient × offset over its slots.
     for (int d = 0; d < 3; ++d) {
       add(q, dofs.global_dof(o.node, kind.position + d), o.displacement[d]);
-      if (kind.gradients >= 0) add(q, dofs.global_dof(o.node, kind.gradients + d), o.slope[d]);
+      if (kind.gradients >= 0)
+        add(q, dofs.global_dof(o.node, kind.gradients + d),
+            dofs.coefficient(o.node, kind.gradients + d) * o.slope[d]);
     }
   }
   CATENA_PETSC(VecAssemblyBegin(q));

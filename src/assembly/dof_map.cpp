@@ -21,6 +21,19 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
 
   std::vector<unsigned> fixed_mask(n_nodes, 0u);
   for (const auto& s : model.supports) fixed_mask[s.node] |= s.fixed_mask;
+  // Slopes held in direction: the three slots of r_x share one unknown s, r_x = s·t.
+  coefficient_.assign(node_offset_.back(), 1.0);
+  linked_.assign(node_offset_.back(), 0);
+  for (const auto& s : model.supports) {
+    const int first = model::kind_info(node_kinds_[s.node]).gradients;
+    if (!s.slope_direction || first < 0) continue;
+    for (int d = 0; d < 3; ++d) {
+      const int slot = node_offset_[s.node] + first + d;
+      coefficient_[slot] = model.nodes[s.node].tangent[d];
+      linked_[slot] = d == 0 ? 1 : 2;  // 1: the unknown's own slot, 2: shares the slot before
+    }
+    any_linked_ = true;
+  }
 
   // Global numbering: ranks in order, owned nodes ascending, DOFs in layout order.
   global_.assign(node_offset_.back(), -1);
@@ -35,12 +48,16 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
   for (int r = 0; r < partition.n_parts; ++r) {
     if (r == rank) first_owned_ = next;
     for (int n : nodes_of_rank[r])
-      for (int k = 0; k < counts[n]; ++k)
-        if (!(fixed_mask[n] >> k & 1u)) {
-          global_[node_offset_[n] + k] = next++;
+      for (int k = 0; k < counts[n]; ++k) {
+        const int slot = node_offset_[n] + k;
+        if (linked_[slot] == 2) {
+          global_[slot] = global_[slot - 1];
+        } else if (!(fixed_mask[n] >> k & 1u)) {
+          global_[slot] = next++;
           global_node_.push_back(n);
           global_constraint_.push_back(-1);
         }
+      }
     for (int c = 0; c < n_constraints; ++c)
       if (constraint_owner_[c] == r)
         for (int k = 0; k < kMultipliers; ++k) {
@@ -67,6 +84,7 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
     for (int k = 0; k < counts[n]; ++k)
       if (global_[node_offset_[n] + k] >= 0) ghosts_.push_back(global_[node_offset_[n] + k]);
   std::sort(ghosts_.begin(), ghosts_.end());
+  ghosts_.erase(std::unique(ghosts_.begin(), ghosts_.end()), ghosts_.end());  // linked slots
   for (int n : touched)
     for (int k = 0; k < counts[n]; ++k) {
       const PetscInt g = global_[node_offset_[n] + k];

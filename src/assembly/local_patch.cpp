@@ -209,8 +209,9 @@ void SecondOrderSystem::patch_force(const LocalPatch& patch, const double* q, co
     const ActiveDofs dofs = active(k, patch.t, b);
     b.f.resize(std::max(b.f.size(), dofs.n));
     evaluate(k, dofs, q, v, {}, patch.t, b.f.data(), {}, b);
+    const double* f = scale_force(dofs, b.f.data(), b.scaled);
     for (size_t i = 0; i < dofs.n; ++i)
-      if (row[i] >= 0) f_rows[row[i]] += b.f[i];
+      if (row[i] >= 0) f_rows[row[i]] += f[i];
     row += dofs.n;
   }
 }
@@ -231,7 +232,7 @@ void SecondOrderSystem::patch_mass_product(const LocalPatch& patch, const double
     b.block.resize(std::max(b.block.size(), nd * nd));
     const couplings::MatrixRequest mass{{0.0, 0.0, 1.0}, b.block.data()};
     couplings_[k]->evaluate({}, nullptr, {&mass, 1}, b.scratch);
-    const double* M = b.block.data();
+    const double* M = scale_block(dofs, b.block.data(), b.scaled);
     d_el.resize(nd);
     for (size_t i = 0; i < nd; ++i) {
       const PetscInt u = row[i] >= 0 ? patch.unknown_of_row[row[i]] : -1;
@@ -263,7 +264,7 @@ std::vector<PatchEntry> SecondOrderSystem::patch_matrix(const LocalPatch& patch,
     unknown.resize(nd);
     for (size_t i = 0; i < nd; ++i) unknown[i] = row[i] >= 0 ? patch.unknown_of_row[row[i]] : -1;
     row += nd;
-    const double* J = b.block.data();
+    const double* J = scale_block(dofs, b.block.data(), b.scaled);
     // A sparse coupling whose block vanishes (a contact out of contact) adds no entries.
     if (!couplings_[k]->dense() && std::all_of(J, J + nd * nd, [](double x) { return x == 0.0; }))
       continue;

@@ -89,9 +89,10 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   offset_.push_back(0);
   for (const auto& c : couplings_) {
+    bool linked = false;
     for (const couplings::DofKey& key : c->dofs()) {
       PetscInt local = -1, global = -1;
-      double fixed = 0.0;
+      double fixed = 0.0, coefficient = 1.0;
       if (key.kind == couplings::DofKey::Kind::multiplier) {
         local = dofs_.multiplier_local(key.index, key.component);
         global = dofs_.multiplier_dof(key.index, key.component);
@@ -102,12 +103,16 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
                                 static_cast<size_t>(key.component)];
         local = dofs_.local_dof(key.index, key.component);
         global = dofs_.global_dof(key.index, key.component);
+        coefficient = dofs_.coefficient(key.index, key.component);
+        linked = linked || dofs_.linked(key.index, key.component);
       }
       CATENA_ASSERT(global < 0 || local >= 0, "a coupling's free DOF is on this rank");
       local_index_.push_back(local);
       global_index_.push_back(global);
       fixed_value_.push_back(fixed);
+      coefficient_.push_back(coefficient);
     }
+    has_linked_.push_back(linked ? 1 : 0);
     offset_.push_back(local_index_.size());
     acts_on_all_.push_back(c->acts_on_all() ? 1 : 0);
     if (c->patch_role() == couplings::PatchRole::at_patch_time)
@@ -125,20 +130,43 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
 
 SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, Buffers& b) const {
   const size_t begin = offset_[i];
+  const bool linked = has_linked_[i] != 0;
   if (acts_on_all_[i])
     return {local_index_.data() + begin, global_index_.data() + begin, fixed_value_.data() + begin,
-            offset_[i + 1] - begin};
+            linked ? coefficient_.data() + begin : nullptr, offset_[i + 1] - begin};
   couplings_[i]->active_dofs(t, b.positions);
   b.local.clear();
   b.global.clear();
   b.fixed.clear();
+  b.coefficient.clear();
   for (int pos : b.positions) {
     const size_t k = begin + static_cast<size_t>(pos);
     b.local.push_back(local_index_[k]);
     b.global.push_back(global_index_[k]);
     b.fixed.push_back(fixed_value_[k]);
+    b.coefficient.push_back(coefficient_[k]);
   }
-  return {b.local.data(), b.global.data(), b.fixed.data(), b.positions.size()};
+  return {b.local.data(), b.global.data(), b.fixed.data(), linked ? b.coefficient.data() : nullptr,
+          b.positions.size()};
+}
+
+const double* SecondOrderSystem::scale_force(const ActiveDofs& dofs, const double* f,
+                                             std::vector<double>& out) {
+  if (!dofs.coefficient) return f;
+  out.resize(dofs.n);
+  for (size_t k = 0; k < dofs.n; ++k) out[k] = dofs.coefficient[k] * f[k];
+  return out.data();
+}
+
+const double* SecondOrderSystem::scale_block(const ActiveDofs& dofs, const double* block,
+                                             std::vector<double>& out) {
+  if (!dofs.coefficient) return block;
+  const size_t n = dofs.n;
+  out.resize(n * n);
+  for (size_t r = 0; r < n; ++r)
+    for (size_t c = 0; c < n; ++c)
+      out[r * n + c] = dofs.coefficient[r] * dofs.coefficient[c] * block[r * n + c];
+  return out.data();
 }
 
 couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs, const double* q_local,
@@ -152,8 +180,9 @@ couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs, const
   }
   for (size_t k = 0; k < n; ++k) {
     const PetscInt l = dofs.local[k];
-    b.q[k] = l >= 0 ? q_local[l] : dofs.fixed[k];
-    if (v_local) b.v[k] = l >= 0 ? v_local[l] : 0.0;
+    const double c = dofs.coefficient ? dofs.coefficient[k] : 1.0;
+    b.q[k] = l >= 0 ? c * q_local[l] : dofs.fixed[k];
+    if (v_local) b.v[k] = l >= 0 ? c * v_local[l] : 0.0;
   }
   couplings::CouplingState s{{b.q.data(), n}, {}, path, t};
   if (v_local) s.v = {b.v.data(), n};
@@ -167,9 +196,11 @@ void SecondOrderSystem::evaluate(size_t i, const ActiveDofs& dofs, const double*
   couplings_[i]->evaluate(gather(dofs, q_local, v_local, path, t, b), f, m, b.scratch);
 }
 
-void SecondOrderSystem::insert_block(size_t i, const ActiveDofs& dofs, const double* block,
+void SecondOrderSystem::insert_block(size_t i, const ActiveDofs& dofs, const double* nodal_block,
                                      Mat A) const {
   const auto n = static_cast<PetscInt>(dofs.n);
+  // Linked slots share a global index: PETSc adds the repeated entries (ADD_VALUES).
+  const double* block = scale_block(dofs, nodal_block, work_.scaled);
   if (couplings_[i]->dense()) {
     CATENA_PETSC(MatSetValues(A, n, dofs.global, n, dofs.global, block, ADD_VALUES));
     return;
@@ -192,11 +223,15 @@ VecHandle SecondOrderSystem::create_vector() const {
 void SecondOrderSystem::reference_state(Vec q) const {
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(q, &a));
-  for (int n : dofs_.owned_nodes())
-    for (int k = 0; k < dofs_.node_dofs(n); ++k) {
-      const PetscInt g = dofs_.global_dof(n, k);
-      if (g >= 0) a[g - dofs_.first_owned()] = node_reference_[kBlock * n + k];
-    }
+  for (int n : dofs_.owned_nodes()) {
+    for (int k = 0; k < dofs_.node_dofs(n); ++k)
+      if (const PetscInt g = dofs_.global_dof(n, k); g >= 0) a[g - dofs_.first_owned()] = 0.0;
+    // Σ c_k·value_k: the value itself, or on a linked slope its projection on the tangent
+    // (the unknown s = 1 at the reference).
+    for (int k = 0; k < dofs_.node_dofs(n); ++k)
+      if (const PetscInt g = dofs_.global_dof(n, k); g >= 0)
+        a[g - dofs_.first_owned()] += dofs_.coefficient(n, k) * node_reference_[kBlock * n + k];
+  }
   for (int c = 0; c < dofs_.n_constraints(); ++c)
     for (int k = 0; k < DofMap::kMultipliers; ++k)
       if (const PetscInt l = dofs_.multiplier_local(c, k); l >= 0) a[l] = 0.0;
@@ -217,8 +252,9 @@ void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
     CATENA_PETSC(VecSet(out.local(), 0.0));
     double* dst = out.data();
     visit_forces(p, [&](size_t i, const ActiveDofs& dofs, std::span<const double> f_el) {
+      const double* f_rows = scale_force(dofs, f_el.data(), work_.scaled);
       for (size_t k = 0; k < f_el.size(); ++k)
-        if (dofs.local[k] >= 0) dst[dofs.local[k]] += f_el[k];
+        if (dofs.local[k] >= 0) dst[dofs.local[k]] += f_rows[k];
       if (element_norm && couplings_[i]->in_force_scale())
         for (double x : f_el) squares += x * x;
     });

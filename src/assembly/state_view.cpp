@@ -52,7 +52,8 @@ void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
   for (int n : sys.dofs_.owned_nodes()) {
     auto value = [&](int k) {
       const PetscInt l = sys.dofs_.local_dof(n, k);
-      return l >= 0 ? q.data()[l] : sys.node_reference_[kBlock * n + k];
+      return l >= 0 ? sys.dofs_.coefficient(n, k) * q.data()[l]
+                    : sys.node_reference_[kBlock * n + k];
     };
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
     for (int d = 0; d < 3; ++d)
@@ -87,9 +88,11 @@ Reactions StateView::reactions(const EvalPoint& p) const {
         const std::vector<couplings::DofKey>& keys = e->dofs();
         for (size_t k = 0; k < f_el.size(); ++k) {
           const int node = keys[k].index, comp = keys[k].component;
+          // A linked slope's force is a reaction too: its part along the tangent, the
+          // stretch's equation, sums to zero over the node's couplings.
           if (e->origin() == ElementOrigin::elastic_support)
             partial[kBlock * slot(node) + comp] -= f_el[k];
-          else if (dofs.global[k] < 0)
+          else if (dofs.global[k] < 0 || sys.dofs_.linked(node, comp))
             partial[kBlock * slot(node) + comp] += f_el[k];
         }
       });
@@ -111,7 +114,8 @@ Reactions StateView::reactions(const EvalPoint& p) const {
       Vec3 grad, Q;
       for (int d = 0; d < 3; ++d) {
         const PetscInt l = sys.dofs_.local_dof(node, k + d);
-        grad[d] = l >= 0 ? q.data()[l] : sys.node_reference_[kBlock * node + k + d];
+        grad[d] = l >= 0 ? sys.dofs_.coefficient(node, k + d) * q.data()[l]
+                         : sys.node_reference_[kBlock * node + k + d];
         Q[d] = R[k + d];
       }
       moment += grad.cross(Q);
@@ -164,10 +168,11 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
   multipliers.clear();
   const PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArrayRead(x, &a));
+  // Nodal values (a linked slot's coefficient × its unknown); 0 where fixed.
   for (int n : sys.dofs_.owned_nodes())
     for (int k = 0; k < static_cast<int>(kBlock); ++k) {
       const PetscInt g = k < sys.dofs_.node_dofs(n) ? sys.dofs_.global_dof(n, k) : -1;
-      rows.push_back(g >= 0 ? a[g - sys.dofs_.first_owned()] : 0.0);
+      rows.push_back(g >= 0 ? sys.dofs_.coefficient(n, k) * a[g - sys.dofs_.first_owned()] : 0.0);
     }
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
     for (int k = 0; k < DofMap::kMultipliers; ++k)
@@ -183,11 +188,16 @@ void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
                 "a row per node, a multiplier block per constraint");
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(x, &a));
-  for (int n : sys.dofs_.owned_nodes())
-    for (int k = 0; k < sys.dofs_.node_dofs(n); ++k) {
-      const PetscInt g = sys.dofs_.global_dof(n, k);
-      if (g >= 0) a[g - sys.dofs_.first_owned()] = rows[kBlock * static_cast<size_t>(n) + k];
-    }
+  // Each unknown is Σ c_k·row_k over its slots: the row itself, or a linked slope's
+  // projection on the tangent.
+  for (int n : sys.dofs_.owned_nodes()) {
+    for (int k = 0; k < sys.dofs_.node_dofs(n); ++k)
+      if (const PetscInt g = sys.dofs_.global_dof(n, k); g >= 0) a[g - sys.dofs_.first_owned()] = 0;
+    for (int k = 0; k < sys.dofs_.node_dofs(n); ++k)
+      if (const PetscInt g = sys.dofs_.global_dof(n, k); g >= 0)
+        a[g - sys.dofs_.first_owned()] +=
+            sys.dofs_.coefficient(n, k) * rows[kBlock * static_cast<size_t>(n) + k];
+  }
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
     for (int k = 0; k < DofMap::kMultipliers; ++k)
       if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0)

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -25,7 +26,11 @@ namespace catena::io {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr const char* kFormat = "catena-checkpoint-2";
+// 3: clamps hold a slope's direction only (model::Support::slope_direction), its rows the
+// nodal values of a stretch unknown. 2: clamps fixed the whole slope, whose rows were 0.
+// 1: no solver state (/resume).
+constexpr const char* kFormat = "catena-checkpoint-3";
+constexpr const char* kFormatWholeSlopeClamps = "catena-checkpoint-2";
 constexpr const char* kFormatWithoutResume = "catena-checkpoint-1";
 
 // The checkpoint's objects (checkpoint.hpp), written and read here only.
@@ -48,7 +53,12 @@ std::string member_path(const char* group, const std::string& name) {
 }
 
 bool known_format(const std::string& format) {
-  return format == kFormat || format == kFormatWithoutResume;
+  return format == kFormat || format == kFormatWholeSlopeClamps || format == kFormatWithoutResume;
+}
+
+bool has_direction_clamps(const model::Model& model) {
+  return std::any_of(model.supports.begin(), model.supports.end(),
+                     [](const model::Support& s) { return s.slope_direction; });
 }
 
 std::int64_t count_of(const model::Model& m, const char* what) {
@@ -171,6 +181,10 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   const std::string format = r.text("format");
   if (!known_format(format)) fail("not a Catena checkpoint (format " + format + ")");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
+  if (format != kFormat && has_direction_clamps(model))
+    fail("written by an older Catena, whose clamps fixed the whole slope (format " + format +
+         "); a clamp now holds the slope's direction and leaves its stretch free, so the "
+         "state cannot be carried over; run afresh (without --restart)");
   if (!r.has_attribute("scene_identity"))
     fail(
         "written by an older Catena, which did not record which run it belongs to; run "

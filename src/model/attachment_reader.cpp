@@ -35,7 +35,8 @@ std::string node_kind_note(const UnknownKindInfo& info) {
 std::string accepted_fix() {
   std::string list;
   for (const std::string& c : component_names()) list += (list.empty() ? "" : ", ") + c;
-  return "pinned (x, y, z), clamped (every DOF of the node) or a list of components from "
+  return "pinned (x, y, z), clamped (every DOF of the node but the slope's length) or a list "
+         "of components from "
          "[" +
          list + "]";
 }
@@ -63,15 +64,21 @@ unsigned read_component_list(const Field& fix, const UnknownKindInfo& node, std:
   return mask;
 }
 
-unsigned read_fixed_mask(const Field& fix, UnknownKind kind, std::int64_t node_id) {
+// The support `fix` gives the node (without its node index).
+Support read_fix(const Field& fix, UnknownKind kind, std::int64_t node_id) {
   const UnknownKindInfo& node = kind_info(kind);
   if (!fix.present()) fix.fail("missing required key; expected " + accepted_fix());
-  if (fix.is_list()) return read_component_list(fix, node, node_id);
+  if (fix.is_list()) return {0, read_component_list(fix, node, node_id), false};
   if (!fix.is_scalar()) fix.fail("expected " + accepted_fix() + ", got " + fix.value_text());
   static const std::vector<std::string> fixes{"pinned", "clamped"};
   const std::string text = fix.text();
-  if (text == "pinned") return (bit(3) - 1u) << static_cast<unsigned>(node.position);
-  if (text == "clamped") return bit(node.size) - 1u;
+  if (text == "pinned") return {0, (bit(3) - 1u) << static_cast<unsigned>(node.position), false};
+  if (text == "clamped") {
+    const unsigned all = bit(node.size) - 1u;
+    if (node.gradients < 0) return {0, all, false};
+    // Every DOF but the slope r_x, whose direction alone is held (model.hpp, Support).
+    return {0, all & ~((bit(3) - 1u) << static_cast<unsigned>(node.gradients)), true};
+  }
   fix.fail("unknown fix '" + text + "';" + did_you_mean(text, fixes) + " expected " +
            accepted_fix());
 }
@@ -94,8 +101,9 @@ void read_supports(const Field& supports, const std::vector<UnknownKind>& node_k
                       first->second.path() + ", line " +
                       std::to_string(first->second.location().line) +
                       "); list all its fixed components in one support");
-    build.model.supports.push_back(
-        Support{node, read_fixed_mask(entry.child("fix"), node_kinds[node], id)});
+    Support support = read_fix(entry.child("fix"), node_kinds[node], id);
+    support.node = node;
+    build.model.supports.push_back(support);
   }
 }
 

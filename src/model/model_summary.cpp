@@ -89,7 +89,9 @@ DofCounts count_dofs(const Model& model) {
     ++c.nodes_of_kind[kind];
     c.total += kind_info(kind).size;
   }
-  for (const Support& s : model.supports) c.fixed += std::popcount(s.fixed_mask);
+  // A clamp holding a slope's direction removes two of its three components.
+  for (const Support& s : model.supports)
+    c.fixed += std::popcount(s.fixed_mask) + (s.slope_direction ? 2 : 0);
   return c;
 }
 

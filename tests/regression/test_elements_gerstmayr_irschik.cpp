@@ -6,7 +6,7 @@
 //
 // The axial strain here is 1e-3, so the two bending laws (core/curvature_measure.hpp)
 // give visibly different tips. The truth for each is its continuum, the extensible
-// shear-rigid elastica, solved here by shooting (continuum_tip below):
+// shear-rigid elastica, solved by shooting (tests/support/extensible_elastica.hpp):
 //   per reference length  0.5085373043, 1.2072398545 m
 //   per deformed length   0.5089230365, 1.2084002173 m
 // The published value is the deformed-length law's, to 2.1e-6 m (the rest is its own
@@ -35,6 +35,7 @@
 #include "catena/elements/ancf_beam.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "dense_statics.hpp"
+#include "extensible_elastica.hpp"
 
 using catena::CurvatureMeasure;
 using catena::Vec3;
@@ -53,57 +54,10 @@ struct Tip {
 
 double distance(const Tip& a, const Tip& b) { return std::hypot(a.ux - b.ux, a.uy - b.uy); }
 
-// ---- The continuum: extensible, shear-rigid elastica under a dead tip load P e_y --------
-// Along the reference arc length s ∈ [0, L], θ the tangent angle, m the bending moment
-// (conjugate of θ' = dθ/ds), λ the stretch: the section force is P e_y throughout, so
-//   N = P sin θ (tangential),  m' = −λ P cos θ,  x' = λ cos θ,  y' = λ sin θ,
-// with θ(0) = 0, x(0) = y(0) = 0, m(L) = 0, and the law per unit reference length
-//   reference length:  W = ½EA (λ−1)² + ½EI θ'²      ⇒ θ' = m/EI,  λ = 1 + N/EA
-//   deformed length:   W = ½EA (λ−1)² + ½EI θ'²/λ²   ⇒ θ' = m λ²/EI, and ∂W/∂λ = N gives
-//                      λ = (EA + N)/(EA − m²/EI).
-// Classical RK4 in s (4000 steps: truncation far below 1e-10 m), bisection on m(0).
-struct State {
-  double theta, m, x, y;
-};
-
-State derivative(const State& z, CurvatureMeasure law) {
-  const double N = kLoad * std::sin(z.theta);
-  double lambda = 1.0 + N / kEA, dtheta = z.m / kEI;
-  if (law == CurvatureMeasure::deformed_length) {
-    lambda = (kEA + N) / (kEA - z.m * z.m / kEI);
-    dtheta = z.m * lambda * lambda / kEI;
-  }
-  const double c = std::cos(z.theta), s = std::sin(z.theta);
-  return {dtheta, -lambda * kLoad * c, lambda * c, lambda * s};
-}
-
-State integrate(double m0, CurvatureMeasure law) {
-  const int n = 4000;
-  const double h = kLength / n;
-  State z{0.0, m0, 0.0, 0.0};
-  const auto axpy = [](const State& a, double t, const State& d) {
-    return State{a.theta + t * d.theta, a.m + t * d.m, a.x + t * d.x, a.y + t * d.y};
-  };
-  for (int i = 0; i < n; ++i) {
-    const State k1 = derivative(z, law), k2 = derivative(axpy(z, 0.5 * h, k1), law),
-                k3 = derivative(axpy(z, 0.5 * h, k2), law), k4 = derivative(axpy(z, h, k3), law);
-    z = {z.theta + h / 6 * (k1.theta + 2 * k2.theta + 2 * k3.theta + k4.theta),
-         z.m + h / 6 * (k1.m + 2 * k2.m + 2 * k3.m + k4.m),
-         z.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
-         z.y + h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y)};
-  }
-  return z;
-}
-
+// The continuum of each law: extensible_elastica.hpp.
 Tip continuum_tip(CurvatureMeasure law) {
-  // m(L) grows with m(0); the root moment lies between 0.5 and 1.5 P L.
-  double lo = 0.5 * kLoad * kLength, hi = 1.5 * kLoad * kLength;
-  for (int it = 0; it < 100; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (integrate(mid, law).m > 0.0 ? hi : lo) = mid;
-  }
-  const State end = integrate(0.5 * (lo + hi), law);
-  return {kLength - end.x, end.y};
+  const ct::CantileverTip tip = ct::elastica_tip({kLength, kEA, kEI, kLoad}, law);
+  return {tip.ux, tip.uy};
 }
 
 // ---- The finite elements ---------------------------------------------------------

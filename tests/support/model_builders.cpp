@@ -46,6 +46,8 @@ void set_reference_frames(model::Model& m) {
 void pin(model::Model& m, int node) { m.supports.push_back({node, 0x7u}); }
 void clamp(model::Model& m, int node) { m.supports.push_back({node, 0xFFFu}); }
 
+void clamp_direction(model::Model& m, int node) { m.supports.push_back({node, 0xFC7u, true}); }
+
 model::Model cable_pendulum(int n_elements, bool driven_pivot) {
   model::Model m;
   m.gravity = Vec3(0, 0, -9.81);

@@ -24,6 +24,9 @@ void pin(model::Model& m, int node);  // fix x, y, z
 // A = 0.05 m, f = 2 Hz (zero velocity and acceleration at the start).
 model::Model cable_pendulum(int n_elements, bool driven_pivot);
 void clamp(model::Model& m, int node);  // fix all 12 nodal DOFs (trimmed to the node's)
+// Clamp as `fix: clamped` does: the position, a beam's section frame and the slope's
+// direction (model::Support::slope_direction), the slope's length free.
+void clamp_direction(model::Model& m, int node);
 
 // Scene text: a 30 m contact wire at 20 kN (60 cables, pinned ends) with an EN 50318
 // pantograph pressing 120 N at 60 m/s from `start` metres (a dynamic analysis of 1 s).

@@ -105,7 +105,9 @@ TEST(ShippedMeshes, CantileverIsClampedBeamWithTipLoad) {
   EXPECT_EQ(m.elements.size(), 20u);
   EXPECT_TRUE(std::holds_alternative<BeamProps>(m.elements[0].props));
   ASSERT_EQ(m.supports.size(), 1u);
-  EXPECT_EQ(m.supports[0].fixed_mask, 0xFFFu);  // all 12 DOFs of a beam node
+  // Position and section frame; the slope's direction (not its length) is held.
+  EXPECT_EQ(m.supports[0].fixed_mask, 0xFC7u);
+  EXPECT_TRUE(m.supports[0].slope_direction);
   ASSERT_EQ(m.nodal_loads.size(), 1u);
   EXPECT_DOUBLE_EQ(m.nodes[m.nodal_loads[0].node].position.x(), 2.0);
 }
@@ -325,10 +327,17 @@ TEST(Supports, MasksFollowTheNodalLayout) {
   ASSERT_EQ(m.supports.size(), 4u);
   EXPECT_EQ(m.supports[0].fixed_mask, 0b111u);    // pinned
   EXPECT_EQ(m.supports[2].fixed_mask, 0b10111u);  // [x, y, z, rx_y]
-  EXPECT_EQ(m.supports[3].fixed_mask, 0xFFFu);    // clamped beam node
+  EXPECT_FALSE(m.supports[2].slope_direction);    // a list fixes exactly its components
+  EXPECT_EQ(m.supports[3].fixed_mask, 0xFC7u);    // clamped beam node: r, r_y, r_z ...
+  EXPECT_TRUE(m.supports[3].slope_direction);     // ... and r_x's direction
   EXPECT_EQ(m.supports[3].node, index_of_node(m, 30));
   const Model wire = parse_scene(wire_scene, "wire.yaml", {"supports[0].fix=clamped"});
-  EXPECT_EQ(wire.supports[0].fixed_mask, 0b111111u);  // clamped cable node: r and r_x
+  EXPECT_EQ(wire.supports[0].fixed_mask, 0b111u);  // clamped cable node: r ...
+  EXPECT_TRUE(wire.supports[0].slope_direction);   // ... and r_x's direction
+  const Model whole =
+      parse_scene(wire_scene, "wire.yaml", {"supports[0].fix=[x, y, z, rx_x, rx_y, rx_z]"});
+  EXPECT_EQ(whole.supports[0].fixed_mask, 0b111111u);  // the whole slope, by listing it
+  EXPECT_FALSE(whole.supports[0].slope_direction);
 }
 
 TEST(Options, ReadFromTheScene) {

@@ -12,6 +12,13 @@
 // constraint belongs to the rank owning its node A, and its multipliers are numbered after
 // that rank's nodal DOFs (so every rank's block stays contiguous).
 //
+// A support that holds a slope's direction only (model::Support::slope_direction) links
+// the slope's three slots to one unknown s: r_x = s·t, t the node's reference tangent.
+// Each slot k of a node has a coefficient c_k (t's component on linked slots, 1 on the
+// others), so that the nodal value is c_k times its unknown: couplings gather c_k·q and
+// scatter c_k·f and c_i c_j·K (SecondOrderSystem), and values written into a vector add
+// up to the projection Σ c_k·value_k on the shared unknown.
+//
 // Local (ghosted) indices address PETSc's ghosted local form: [owned dofs | ghost dofs],
 // ghosts being the free DOFs of the non-owned nodes this rank's couplings act on.
 #include <petscsys.h>
@@ -40,6 +47,12 @@ class DofMap {
   PetscInt global_dof(int node, int k) const { return global_[node_offset_[node] + k]; }
   // Index into the ghosted local form, −1 if fixed or not present on this rank.
   PetscInt local_dof(int node, int k) const { return local_[node_offset_[node] + k]; }
+  // Nodal value of DOF k = coefficient × its unknown (1 unless the slot is linked).
+  double coefficient(int node, int k) const { return coefficient_[node_offset_[node] + k]; }
+  // True if slot k shares its unknown with the node's other slope slots.
+  bool linked(int node, int k) const { return linked_[node_offset_[node] + k] != 0; }
+  // True if some node has linked slots (callers skip the coefficients otherwise).
+  bool any_linked() const { return any_linked_; }
 
   PetscInt n_global() const { return n_global_; }
   PetscInt n_owned() const { return n_owned_; }
@@ -72,6 +85,9 @@ class DofMap {
   std::vector<int> node_offset_;                // n_nodes + 1
   std::vector<PetscInt> global_;                // per nodal DOF
   std::vector<PetscInt> local_;                 // per nodal DOF
+  std::vector<double> coefficient_;             // per nodal DOF (1 unless linked)
+  std::vector<char> linked_;  // per nodal DOF: 0, 1 (a shared unknown's first slot), 2 (others)
+  bool any_linked_ = false;
   std::vector<PetscInt> ghosts_;
   std::vector<int> owned_nodes_;
   std::vector<int> global_node_;        // per global DOF: its node

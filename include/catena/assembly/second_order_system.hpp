@@ -132,17 +132,22 @@ class SecondOrderSystem {
   struct Buffers {
     std::vector<int> positions;
     std::vector<PetscInt> local, global;
-    std::vector<double> fixed;
-    std::vector<double> q, v, f, block, block2;
+    std::vector<double> fixed, coefficient;
+    std::vector<double> q, v, f, block, block2, scaled;
     couplings::Scratch scratch;
     std::vector<std::pair<int, int>> entries;
   };
   // The active DOFs of coupling i at time t: ghosted local indices (−1: fixed or absent),
-  // global indices (−1: fixed or absent) and the values used where fixed.
+  // global indices (−1: fixed or absent), the values used where fixed, and the slots'
+  // coefficients (dof_map.hpp: nodal value = coefficient × unknown) or null when all are 1.
+  // Couplings see nodal values: gather multiplies by the coefficients, and whatever adds a
+  // coupling's force or matrix into unknowns' rows multiplies by them (scale_force,
+  // scale_block).
   struct ActiveDofs {
     const PetscInt* local = nullptr;
     const PetscInt* global = nullptr;
     const double* fixed = nullptr;
+    const double* coefficient = nullptr;
     size_t n = 0;
   };
   ActiveDofs active(size_t i, double t, Buffers& b) const;
@@ -159,6 +164,12 @@ class SecondOrderSystem {
   // Adds coupling i's block (dofs.n², row-major) into A: whole if dense, else its nonzeros
   // (the rest of its pattern is in A already).
   void insert_block(size_t i, const ActiveDofs& dofs, const double* block, Mat A) const;
+  // The force (n) or block (n², row-major) in the unknowns' rows: f_k·c_k, B_ij·c_i·c_j, into
+  // out (resized); the input itself when the coefficients are all 1.
+  static const double* scale_force(const ActiveDofs& dofs, const double* f,
+                                   std::vector<double>& out);
+  static const double* scale_block(const ActiveDofs& dofs, const double* block,
+                                   std::vector<double>& out);
   void scatter_to_local(Vec global, Vec local_ghosted) const;
   // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el)
   // (defined in visit_forces.hpp: inlined into the residual loop, which runs per coupling).
@@ -181,6 +192,8 @@ class SecondOrderSystem {
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
+  std::vector<double> coefficient_;     // per DOF: DofMap::coefficient (1 but linked slots)
+  std::vector<char> has_linked_;        // per coupling: any of its slots linked
   // kMaxBlockUnknowns per node: its reference coordinates in its kind's layout.
   std::vector<double> node_reference_;
   // Scratch of the evaluation loop (mutable: output queries evaluate through a const system).

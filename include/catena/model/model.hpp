@@ -35,11 +35,15 @@ struct ElementDesc {
 };
 
 // Fixed DOFs of a node, eliminated from the system. Bits index the nodal layout
-// [x, y, z, r_x(3), r_y(3), r_z(3)]; "pinned" fixes 0..2, "clamped" fixes 0..5 (cable) or
-// 0..11 (beam). Fixed values are those of the reference configuration.
+// [x, y, z, r_x(3), r_y(3), r_z(3)]; fixed values are those of the reference
+// configuration. "pinned" fixes 0..2. "clamped" fixes the position (0..2), a beam's
+// section frame (6..11) and the direction of the slope r_x: r_x = s·t with t the node's
+// reference tangent and s (the stretch there) free, one unknown instead of three
+// (slope_direction; assembly/dof_map.hpp). A component list fixes exactly its components.
 struct Support {
   int node = 0;
-  unsigned fixed_mask = 0;  // bit k fixes nodal DOF k
+  unsigned fixed_mask = 0;       // bit k fixes nodal DOF k
+  bool slope_direction = false;  // r_x = s·tangent, s free (the slope's bits are not set)
 };
 
 // Linear spring (and dashpot) from a node's position to ground.
