@@ -31,6 +31,8 @@ std::string SecondOrderSystem::describe_dof(PetscInt global) const {
   const std::string name = comp >= 0 ? std::string(kind.components[comp]) : "?";
   if (c >= 0)
     return "constraint " + std::to_string(c + 1) + " (multiplier " + name + ", node " + id + ")";
+  if (comp >= 0 && dofs_.linked(node, comp))
+    return "node " + id + " (stretch of the clamped slope)";
   return "node " + id + " (" + name + ")";
 }
 

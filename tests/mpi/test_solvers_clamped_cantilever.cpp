@@ -133,6 +133,7 @@ TEST(ClampedCantilever, TangentMatchesFiniteDifferences) {
   EXPECT_EQ(system.dof_map().global_dof(0, 4), stretch);
   EXPECT_EQ(system.dof_map().global_dof(0, 5), stretch);
   EXPECT_NEAR(x[static_cast<size_t>(stretch)], 1.0, 1e-2);
+  EXPECT_EQ(system.describe_dof(stretch), "node 1 (stretch of the clamped slope)");
   auto residual = [&](const std::vector<double>& xv, std::vector<double>& out) {
     PetscScalar* a = nullptr;
     CATENA_PETSC(VecGetArray(q.get(), &a));
