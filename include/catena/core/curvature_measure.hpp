@@ -9,7 +9,7 @@
 //                     section force.
 //   deformed_length   κ = |r'×r''|/|r'|³ (the curve's curvature, per deformed length),
 //                     M = EI κ. The bending energy then falls as the line stretches, so
-//                     bending drives stretching: EA ε = N + EI κ² (1 + ε).
+//                     bending drives stretching: EA ε = N + EI κ²/(1 + ε).
 #include <array>
 #include <string_view>
 
