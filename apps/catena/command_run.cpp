@@ -36,6 +36,11 @@ io::StaticResult collect_result(assembly::SecondOrderSystem& system, Vec q,
   for (const auto& s : sections) {
     r.axial_force.push_back(s.axial_force);
     r.axial_strain.push_back(s.axial_strain);
+    for (int d = 0; d < 3; ++d) {
+      r.shear_force.push_back(s.shear_force[d]);
+      r.bending_moment.push_back(s.bending_moment[d]);
+    }
+    r.torsion.push_back(s.torsion);
   }
   const assembly::Reactions reactions = view.reactions({q, nullptr, {}});
   r.support_nodes = reactions.nodes;

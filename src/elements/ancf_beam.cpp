@@ -312,7 +312,48 @@ SectionResult AncfBeam::section_result(const LocalState& s) const {
     eps_dot = (u[0] * u_dot[0] + u[1] * u_dot[1] + u[2] * u_dot[2]) /
               std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
   }
-  return {section_.EA * (eps + section_.damping_time * eps_dot), eps};
+  SectionResult r;
+  r.axial_force = section_.EA * (eps + section_.damping_time * eps_dot);
+  r.axial_strain = eps;
+  // Bending couple at ξ: EI_y (κ_y − κ_y,ref) ê_y + EI_z (κ_z − κ_z,ref) ê_z, divided by
+  // the stretch under the deformed-length law (the couple conjugate to the turn per
+  // reference length, as for the cable). Elastic part only.
+  const BendingGroup bending{section_.curvature == CurvatureMeasure::deformed_length};
+  Vec3 tangent = Vec3::UnitX();
+  double stretch = 1.0, stretch_coupling = 0.0;
+  const auto moment_at = [&](double xi) {
+    const PointMap<12> m = bending_map(xi, length_);
+    const std::array<double, 12> x = m.gather(s.q.data());
+    const std::array<double, 2> k = bending(x), k_ref = bending(m.gather(q_ref_.data()));
+    const bs::V3<double> uv = bs::block(x, 0);
+    const bs::BendingFrame<double> f = bs::bending_frame(uv, bs::block(x, 6), bs::block(x, 9));
+    const Vec3 t(f.t[0], f.t[1], f.t[2]), a(f.a[0], f.a[1], f.a[2]);
+    const Vec3 e_y = f.inv_a_perp * (a - a.dot(t) * t), e_z = t.cross(e_y);
+    tangent = t;
+    stretch = std::sqrt(bs::dot(uv, uv));
+    // Deformed-length law: κ_i ∝ 1/λ at a fixed turn, so ∂W/∂λ adds −Σ EI_i (κ_i − κ_i,ref)
+    // κ_i/λ to EA ε; the tangential force is EA ε less it (as the cable's).
+    stretch_coupling =
+        (section_.EI_y * (k[0] - k_ref[0]) * k[0] + section_.EI_z * (k[1] - k_ref[1]) * k[1]) /
+        stretch;
+    const double scale = bending.per_deformed_length ? 1.0 / stretch : 1.0;
+    return Vec3(scale * (section_.EI_y * (k[0] - k_ref[0]) * e_y +
+                         section_.EI_z * (k[1] - k_ref[1]) * e_z));
+  };
+  // Shear from the moment's balance, n⊥ = t × dM/ds / λ, by central differences about the
+  // mid-point (as the cable's); evaluated first so that tangent and stretch are the
+  // mid-point's.
+  constexpr double h = 0.25;
+  const Vec3 dM = (moment_at(0.5 + h) - moment_at(0.5 - h)) / (2.0 * h * length_);
+  r.bending_moment = moment_at(0.5);
+  r.shear_force = tangent.cross(dM) / stretch;
+  if (bending.per_deformed_length) r.axial_force -= stretch_coupling;
+  // Torsion GJ (κ_x − κ_x,ref), constant along the element.
+  const PointMap<12> twist = twist_map();
+  const TwistGroup group{1.0 / length_};
+  r.torsion =
+      section_.GJ * (group(twist.gather(s.q.data()))[0] - group(twist.gather(q_ref_.data()))[0]);
+  return r;
 }
 
 double AncfBeam::strain_energy(std::span<const double> q) const {

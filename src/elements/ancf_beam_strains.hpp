@@ -49,17 +49,28 @@ std::array<S, 1> axial_strain(const std::array<S, 3>& u) {
 //   so an isotropic section (EI_y = EI_z) sees the centreline curvature only.
 // Bending ABOUT y curves the centreline in the x–z plane: k ∥ d_y, so κ_y pairs with EI_y.
 template <class S>
+struct BendingFrame {
+  V3<S> t, a;    // unit tangent; a = d_y + d_z × t
+  S inv_a_perp;  // 1/|a⊥|, a⊥ = a − (a·t) t
+};
+
+template <class S>
+BendingFrame<S> bending_frame(const V3<S>& u, const V3<S>& d_y, const V3<S>& d_z) {
+  using std::sqrt;
+  const V3<S> t = scale(u, 1.0 / sqrt(dot(u, u)));
+  const V3<S> a = add(d_y, cross(d_z, t));
+  const S a_t = dot(a, t);
+  return {t, a, 1.0 / sqrt(dot(a, a) - a_t * a_t)};
+}
+
+template <class S>
 std::array<S, 2> bending_strains(const std::array<S, 12>& x, bool per_deformed_length) {
   using std::sqrt;
   const V3<S> u = block(x, 0), w = block(x, 3), d_y = block(x, 6), d_z = block(x, 9);
   const S uu = dot(u, u);
-  const S inv_norm_u = 1.0 / sqrt(uu);
-  const V3<S> t = scale(u, inv_norm_u);
-  const V3<S> k = scale(cross(u, w), per_deformed_length ? inv_norm_u / uu : 1.0 / uu);
-  const V3<S> a = add(d_y, cross(d_z, t));
-  const S a_t = dot(a, t);
-  const S inv_a_perp = 1.0 / sqrt(dot(a, a) - a_t * a_t);
-  return {dot(k, a) * inv_a_perp, dot(k, cross(t, a)) * inv_a_perp};
+  const V3<S> k = scale(cross(u, w), per_deformed_length ? 1.0 / (uu * sqrt(uu)) : 1.0 / uu);
+  const BendingFrame<S> f = bending_frame(u, d_y, d_z);
+  return {dot(k, f.a) * f.inv_a_perp, dot(k, cross(f.t, f.a)) * f.inv_a_perp};
 }
 
 // Twist angle of the element, arguments [d_y,A, d_z,A, d_y,B, d_z,B] (12):

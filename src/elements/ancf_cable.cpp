@@ -302,18 +302,59 @@ double AncfCable::section_prestrain(const CableSection& section, const LoadPath&
 }
 
 SectionResult AncfCable::section_result(const LocalState& s) const {
-  // A linear section reports its mid-point force EA ε_mid (at rest). A tension-only one
-  // reports the force its switch acts on, EA G(ε̄), and the mean strain ε̄: a dropper's one
-  // tension per element, the slack residue kSlackStiffness·EA·ε̄ < 0 when it is slack.
+  // Axial: a linear section reports its mid-point force EA ε_mid (at rest). A
+  // tension-only one reports the force its switch acts on, EA G(ε̄), and the mean strain
+  // ε̄: a dropper's one tension per element, the slack residue kSlackStiffness·EA·ε̄ < 0
+  // when it is slack. Under the deformed-length law the tangential section force is
+  // EA ε − EI κ²/λ (docs/formulation.md, "Bending law").
   const Blocks e = gather(s.q);
-  const double a = 1.0 + section_prestrain(section_, s.path);
+  const double L = length_, a = 1.0 + section_prestrain(section_, s.path);
   double eps[3], eps_mean = 0.0;
   for (int k = 0; k < 3; ++k) {
-    eps[k] = a * slope_at(hermite_at(kAxialPoints[k] * length_, length_), e).norm() - 1.0;
+    eps[k] = a * slope_at(hermite_at(kAxialPoints[k] * L, L), e).norm() - 1.0;
     eps_mean += kAxialWeights[k] * eps[k];
   }
-  if (section_.tension_only) return {section_.EA * AxialLaw(true).at(eps_mean).G, eps_mean};
-  return {section_.EA * eps[1], eps[1]};
+  SectionResult r;
+  if (section_.tension_only) {
+    r.axial_force = section_.EA * AxialLaw(true).at(eps_mean).G;
+    r.axial_strain = eps_mean;
+  } else {
+    r.axial_force = section_.EA * eps[1];
+    r.axial_strain = eps[1];
+  }
+  // Bending: the couple conjugate to the tangent's turn per unstretched length, κ₀ =
+  // a (u × w)/|u|² as a vector (binormal): M = EI κ₀, or EI κ₀/λ² under the
+  // deformed-length law (energy ½EI κ₀²/λ², λ = a|u| the stretch).
+  const bool deformed = section_.curvature == CurvatureMeasure::deformed_length;
+  const auto moment_at = [&](double xi, Vec3* tangent, double* stretch) {
+    const HermiteAt h = hermite_at(xi * L, L);
+    Vec3 u = Vec3::Zero(), w = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) {
+      u += h.ds[i] * e[i];
+      w += h.dds[i] * e[i];
+    }
+    const double lambda = a * u.norm();
+    if (tangent) *tangent = u.normalized();
+    if (stretch) *stretch = lambda;
+    const Vec3 kappa0 = a * u.cross(w) / u.squaredNorm();
+    return Vec3(section_.EI * kappa0 / (deformed ? lambda * lambda : 1.0));
+  };
+  Vec3 t;
+  double lambda = 1.0;
+  r.bending_moment = moment_at(0.5, &t, &lambda);
+  if (deformed && !section_.tension_only) {
+    const double kappa = r.bending_moment.norm() * lambda / section_.EI;  // |u×w|/|u|³
+    r.axial_force -= section_.EI * kappa * kappa / lambda;
+  }
+  // Shear from the moment's balance, dM/ds₀ + λ t × n = 0: n⊥ = t × dM/ds₀ / λ, with
+  // dM/ds₀ = a dM/dx by central differences about the mid-point (exact for the linear
+  // moment of a cubic element's small deflection).
+  constexpr double h = 0.25;
+  const Vec3 dM = a *
+                  (moment_at(0.5 + h, nullptr, nullptr) - moment_at(0.5 - h, nullptr, nullptr)) /
+                  (2.0 * h * L);
+  r.shear_force = t.cross(dM) / lambda;
+  return r;
 }
 
 }  // namespace catena::elements

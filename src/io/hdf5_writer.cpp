@@ -278,6 +278,13 @@ void write_solution(const WriteContext& context, const StaticResult& result,
                               [&] { return rows.elements.to_block(result.axial_force, 1); });
   write_dataset_phase<double>(context, {layout::axial_strain, n_elements, 1, "1"}, element_block,
                               [&] { return rows.elements.to_block(result.axial_strain, 1); });
+  write_dataset_phase<double>(context, {layout::shear_force, n_elements, 3, "N"}, element_block,
+                              [&] { return rows.elements.to_block(result.shear_force, 3); });
+  write_dataset_phase<double>(context, {layout::bending_moment, n_elements, 3, "N m"},
+                              element_block,
+                              [&] { return rows.elements.to_block(result.bending_moment, 3); });
+  write_dataset_phase<double>(context, {layout::torsion, n_elements, 1, "N m"}, element_block,
+                              [&] { return rows.elements.to_block(result.torsion, 1); });
 
   write_dataset_phase<std::int64_t>(
       context, {layout::support_nodes, n_supports, 1}, support_block, [&] {

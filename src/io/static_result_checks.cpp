@@ -37,6 +37,11 @@ void check_result_matches_model(const model::Model& model, const StaticResult& r
                     "owned_elements");
   check_value_count(result.axial_strain.size(), n_owned_elements, 1, "axial_strain",
                     "owned_elements");
+  check_value_count(result.shear_force.size(), n_owned_elements, 3, "shear_force",
+                    "owned_elements");
+  check_value_count(result.bending_moment.size(), n_owned_elements, 3, "bending_moment",
+                    "owned_elements");
+  check_value_count(result.torsion.size(), n_owned_elements, 1, "torsion", "owned_elements");
   check_value_count(result.reaction_force.size(), n_supports, 3, "reaction_force", "support_nodes");
   check_value_count(result.reaction_moment.size(), n_supports, 3, "reaction_moment",
                     "support_nodes");

@@ -74,6 +74,7 @@ std::string static_result_xdmf(const XdmfStaticGrid& grid) {
   const std::string nodes = std::to_string(grid.n_nodes);
   const std::string elements = std::to_string(grid.n_elements);
   const std::string node_vectors = nodes + " 3";
+  const std::string element_vectors = elements + " 3";
   const std::string connectivity = elements + " " + std::to_string(layout::nodes_per_element);
 
   std::ostringstream xml;
@@ -107,6 +108,9 @@ std::string static_result_xdmf(const XdmfStaticGrid& grid) {
   attribute("node_ids", "Scalar", "Node", layout::node_ids, nodes, int64);
   attribute("axial_force", "Scalar", "Cell", layout::axial_force, elements, float64);
   attribute("axial_strain", "Scalar", "Cell", layout::axial_strain, elements, float64);
+  attribute("shear_force", "Vector", "Cell", layout::shear_force, element_vectors, float64);
+  attribute("bending_moment", "Vector", "Cell", layout::bending_moment, element_vectors, float64);
+  attribute("torsion", "Scalar", "Cell", layout::torsion, elements, float64);
   // Stored as int8 but announced as int32: the readers let HDF5 convert on reading, and
   // ParaView shows an 8-bit "Char" array as characters rather than as numbers to colour by.
   attribute("element_kind", "Scalar", "Cell", layout::element_kind, elements, int32);

@@ -65,6 +65,9 @@ catena::Vec3 solved_position(int node) {
 catena::Vec3 solved_slope(int node) { return {1.0, 0.0, 0.1 * node - 0.45}; }
 double axial_force(int element) { return 1000.0 + 10.0 * element; }
 double axial_strain(int element) { return 1e-4 * (element + 1); }
+catena::Vec3 shear_force(int element) { return {element + 0.5, -2.0 * element, 3.0}; }
+catena::Vec3 bending_moment(int element) { return {-1.0, element + 0.25, 7.0 * element}; }
+double torsion(int element) { return 0.1 * element - 1.0; }
 catena::Vec3 reaction_force(int node) { return {node + 0.5, -2.0 * node, 100.0 + node}; }
 catena::Vec3 reaction_moment(int node) { return {0.25 * node, 0.0, -1.0 * node}; }
 
@@ -148,6 +151,9 @@ StaticResult my_share_of_solution(int rank, int n_ranks) {
     result.owned_elements.push_back(element);
     result.axial_force.push_back(axial_force(element));
     result.axial_strain.push_back(axial_strain(element));
+    append(result.shear_force, shear_force(element));
+    append(result.bending_moment, bending_moment(element));
+    result.torsion.push_back(torsion(element));
   }
   result.load_factor = 1.0;
   result.n_load_steps = 3;
@@ -321,6 +327,22 @@ void check_solution(hid_t file) {
   }
   EXPECT_EQ(forces.unit, "N");
   EXPECT_EQ(strains.unit, "1");
+  const auto shear = read_doubles(file, "/static/shear_force");
+  const auto moment = read_doubles(file, "/static/bending_moment");
+  const auto twist = read_doubles(file, "/static/torsion");
+  ASSERT_EQ(shear.dims, (std::vector<hsize_t>{n_elements, 3}));
+  ASSERT_EQ(moment.dims, (std::vector<hsize_t>{n_elements, 3}));
+  ASSERT_EQ(twist.dims, (std::vector<hsize_t>{n_elements}));
+  for (int e = 0; e < n_elements; ++e) {
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_DOUBLE_EQ(shear.values[std::size_t(3 * e + d)], shear_force(e)[d]);
+      EXPECT_DOUBLE_EQ(moment.values[std::size_t(3 * e + d)], bending_moment(e)[d]);
+    }
+    EXPECT_DOUBLE_EQ(twist.values[std::size_t(e)], torsion(e));
+  }
+  EXPECT_EQ(shear.unit, "N");
+  EXPECT_EQ(moment.unit, "N m");
+  EXPECT_EQ(twist.unit, "N m");
 
   const auto supports = read_int64s(file, "/static/support_nodes");
   ASSERT_EQ(supports.dims, (std::vector<hsize_t>{support_node_list.size()}));

@@ -243,6 +243,9 @@ TEST_F(WriteFailureTest, FailingStaticWriteOnOneRankKeepsThePreviousResult) {
   result.owned_elements = my_rows(int(model_.elements.size()));
   result.axial_force = values_per_row(result.owned_elements, 1, 10.0);
   result.axial_strain = values_per_row(result.owned_elements, 1, 1e-4);
+  result.shear_force = values_per_row(result.owned_elements, 3, 1.0);
+  result.bending_moment = values_per_row(result.owned_elements, 3, 2.0);
+  result.torsion = values_per_row(result.owned_elements, 1, 0.5);
   catena::io::RunInfo info;
   info.n_ranks = comm_size();
   inject(1, "/static/slopes");

@@ -18,6 +18,7 @@ using catena::elements::AncfBeam;
 using catena::elements::BeamLoads;
 using catena::elements::BeamNodeRef;
 using catena::elements::BeamSection;
+using catena::elements::SectionResult;
 
 namespace {
 
@@ -350,6 +351,10 @@ TEST(AncfBeam, PatchUniformTwist) {
     EXPECT_NEAR(torque, s.GJ * phi / L, 1e-12 * s.GJ) << phi;
     EXPECT_NEAR(torque_a, -torque, 1e-12 * s.GJ) << phi;
     EXPECT_NEAR(beam.strain_energy(qs), 0.5 * s.GJ * phi * phi / L, 1e-12 * s.GJ) << phi;
+    // The section output: the torsion, no bending couple, no section force.
+    const SectionResult sr = beam.section_result({qs, {}, {}});
+    EXPECT_NEAR(sr.torsion, s.GJ * phi / L, 1e-12 * s.GJ) << phi;
+    EXPECT_LT(sr.bending_moment.norm() + sr.shear_force.norm(), 1e-9 * s.GJ) << phi;
     // Pure torque: no force on the centreline, none stretching or shearing the frame.
     for (int b : {kRA, kRxA, kRB, kRxB}) EXPECT_LT(block(e.f, b).norm(), 1e-12 * s.GJ) << b;
     for (int b : {kRyA, kRzA, kRyB, kRzB}) EXPECT_LT(std::abs(block(e.f, b).dot(t)), 1e-12 * s.GJ);

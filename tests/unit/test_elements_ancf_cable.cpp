@@ -152,6 +152,11 @@ TEST(AncfCable, ConstantCurvatureBendingEnergyMatchesArc) {
   const Vec3 QB(f[9], f[10], f[11]);
   const double moment = tb.cross(QB)[2];
   EXPECT_NEAR(moment, s.EI / rho, 1e-3 * s.EI / rho);
+  // The section output: the couple EI/ρ about the binormal, no shear (constant moment).
+  const auto section = cable.section_result({q, {}, {}});
+  EXPECT_NEAR(section.bending_moment.z(), s.EI / rho, 1e-3 * s.EI / rho);
+  EXPECT_LT(std::hypot(section.bending_moment.x(), section.bending_moment.y()), 1e-9);
+  EXPECT_LT(section.shear_force.norm(), 1e-3 * s.EI / (rho * L));
 }
 
 // The same arc stretched uniformly by λ (positions and slopes scaled): its tangent turns

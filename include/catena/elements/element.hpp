@@ -12,6 +12,8 @@
 // the first dofs_per_node() of them (3: a point, 6: cable node, 12: beam node).
 #include <span>
 
+#include "catena/core/vec3.hpp"
+
 namespace catena::elements {
 
 // What the caller wants evaluated.
@@ -54,10 +56,16 @@ struct LocalOutput {
   double* C = nullptr;
 };
 
-// Section resultants reported for output at the element mid-point.
+// Section resultants reported for output at the element mid-point: the force and couple
+// the part of the line beyond the section (towards the element's second node) applies to
+// the part before it, in the global frame. Two-node elements without bending carry the
+// axial force only.
 struct SectionResult {
-  double axial_force = 0.0;   // N, tension positive
-  double axial_strain = 0.0;  // −, against the unstretched length
+  double axial_force = 0.0;            // N, the section force along the tangent, tension > 0
+  double axial_strain = 0.0;           // −, against the unstretched length
+  Vec3 shear_force = Vec3::Zero();     // N, the section force ⊥ the tangent
+  Vec3 bending_moment = Vec3::Zero();  // N·m, the couple ⊥ the tangent
+  double torsion = 0.0;                // N·m, the couple about the tangent (beams)
 };
 
 class Element {

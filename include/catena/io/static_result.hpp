@@ -15,6 +15,11 @@ struct StaticResult {
   std::vector<int> owned_elements;   // element indices (into Model::elements), ascending
   std::vector<double> axial_force;   // 1 per owned element, N (tension positive), mid-point
   std::vector<double> axial_strain;  // 1 per owned element, −
+  // Section resultants at the mid-point (elements::SectionResult): 3, 3 and 1 per owned
+  // element, global frame; zero for elements without bending.
+  std::vector<double> shear_force;     // N
+  std::vector<double> bending_moment;  // N·m
+  std::vector<double> torsion;         // N·m
 
   std::vector<int> support_nodes;       // owned nodes with fixed DOFs or elastic supports
   std::vector<double> reaction_force;   // 3 per support node, N (force of support on node)
