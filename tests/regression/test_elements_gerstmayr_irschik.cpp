@@ -45,8 +45,8 @@ namespace ct = catena::test;
 
 namespace {
 
-constexpr double kLength = 2.0, kEA = 2.07e9, kEI = 2.07e11 * 1e-4 / 12.0;
-const double kLoad = 3.0 * kEI / (kLength * kLength);
+constexpr double kLength = ct::kGerstmayrIrschik.length, kEA = ct::kGerstmayrIrschik.EA,
+                 kEI = ct::kGerstmayrIrschik.EI, kLoad = ct::kGerstmayrIrschik.load;
 constexpr double kPublishedUx = 0.5089228704, kPublishedUy = 1.2083981311;
 
 struct Tip {

@@ -24,6 +24,7 @@
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
+#include "system_fd_jacobian.hpp"
 
 namespace solvers = catena::solvers;
 namespace model = catena::model;
@@ -225,43 +226,17 @@ TEST(ConstraintJacobian, MatchesFiniteDifferences) {
   driven.frequency = 3.0;
   m.constraints.push_back(driven);
   catena::assembly::SecondOrderSystem system(PETSC_COMM_SELF, m);
-  catena::VecHandle q = system.create_vector(), f = system.create_vector();
-  system.reference_state(q.get());
-  PetscInt n = 0;
-  CATENA_PETSC(VecGetSize(q.get(), &n));
-  std::vector<double> x(static_cast<size_t>(n));
-  {
-    // A deformed state with nonzero multipliers (forces of several newtons).
-    const PetscScalar* a = nullptr;
-    CATENA_PETSC(VecGetArrayRead(q.get(), &a));
-    for (PetscInt i = 0; i < n; ++i) {
-      const bool multiplier = system.dof_map().constraint_of_global(i) >= 0;
-      x[static_cast<size_t>(i)] =
-          a[i] + (multiplier ? 5.0 * std::cos(1.0 + i) : 1e-3 * std::sin(1.0 + i));
-    }
-    CATENA_PETSC(VecRestoreArrayRead(q.get(), &a));
+  // A deformed state with nonzero multipliers (forces of several newtons).
+  std::vector<double> x = catena::test::reference_unknowns(system);
+  const auto n = static_cast<PetscInt>(x.size());
+  for (PetscInt i = 0; i < n; ++i) {
+    const bool multiplier = system.dof_map().constraint_of_global(i) >= 0;
+    x[static_cast<size_t>(i)] += multiplier ? 5.0 * std::cos(1.0 + i) : 1e-3 * std::sin(1.0 + i);
   }
   const double t = 0.07;
-  auto residual = [&](const std::vector<double>& xv, std::vector<double>& out) {
-    PetscScalar* a = nullptr;
-    CATENA_PETSC(VecGetArray(q.get(), &a));
-    for (PetscInt i = 0; i < n; ++i) a[i] = xv[static_cast<size_t>(i)];
-    CATENA_PETSC(VecRestoreArray(q.get(), &a));
-    system.force({q.get(), nullptr, {}, t}, f.get());
-    const PetscScalar* r = nullptr;
-    CATENA_PETSC(VecGetArrayRead(f.get(), &r));
-    out.assign(r, r + n);
-    CATENA_PETSC(VecRestoreArrayRead(f.get(), &r));
-  };
-  const auto fd = catena::test::central_difference_jacobian(residual, x, static_cast<int>(n));
-  std::vector<double> dummy;
-  residual(x, dummy);  // q = x
-  catena::MatHandle J = system.create_matrix();
-  system.jacobian({q.get(), nullptr, {}, t}, catena::assembly::kStaticJacobian, J.get());
-  std::vector<double> analytic(static_cast<size_t>(n * n));
-  std::vector<PetscInt> all(static_cast<size_t>(n));
-  for (PetscInt i = 0; i < n; ++i) all[static_cast<size_t>(i)] = i;
-  CATENA_PETSC(MatGetValues(J.get(), n, all.data(), n, all.data(), analytic.data()));
+  const catena::test::SystemJacobians j = catena::test::system_jacobians(system, x, t);
+  const std::vector<double>& analytic = j.analytic;
+  const std::vector<double>& fd = j.finite_difference;
   EXPECT_LT(catena::test::relative_max_difference(analytic, fd), 1e-6);
   // The multiplier rows and columns are exactly ±1 (G is constant).
   const auto& dofs = system.dof_map();

@@ -26,4 +26,11 @@ struct CantileverTip {
 
 CantileverTip elastica_tip(const Cantilever& c, CurvatureMeasure law);
 
+// Gerstmayr & Irschik's large-deflection cantilever (J. Sound Vib. 318 (2008) 461–487):
+// L = 2 m, square steel section b = h = 0.1 m, E = 2.07e11 Pa (EA = 2.07e9 N, EI =
+// 1.725e6 N·m²), dead tip load P = 3 EI/L².
+inline constexpr double kGerstmayrIrschikEI = 2.07e11 * 1e-4 / 12.0;
+inline constexpr Cantilever kGerstmayrIrschik{2.0, 2.07e9, kGerstmayrIrschikEI,
+                                              3.0 * kGerstmayrIrschikEI / 4.0};
+
 }  // namespace catena::test
