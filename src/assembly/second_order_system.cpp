@@ -1,5 +1,6 @@
 #include "catena/assembly/second_order_system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <span>
@@ -87,6 +88,9 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
                     &node_reference_[kBlock * n]);
 
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
+  std::vector<char> supported(model.nodes.size(), 0);  // fixed DOFs or an elastic support
+  for (const auto& s : model.supports) supported[static_cast<size_t>(s.node)] = 1;
+  for (const auto& s : model.elastic_supports) supported[static_cast<size_t>(s.node)] = 1;
   offset_.push_back(0);
   for (const auto& c : couplings_) {
     bool linked = false;
@@ -117,6 +121,10 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     acts_on_all_.push_back(c->acts_on_all() ? 1 : 0);
     if (c->patch_role() == couplings::PatchRole::at_patch_time)
       timed_.push_back(acts_on_all_.size() - 1);
+    if (std::any_of(c->dofs().begin(), c->dofs().end(), [&](const couplings::DofKey& key) {
+          return key.kind != couplings::DofKey::Kind::multiplier && supported[key.index];
+        }))
+      at_supports_.push_back(acts_on_all_.size() - 1);
   }
 
   bool damps = false;

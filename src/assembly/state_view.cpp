@@ -82,7 +82,8 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   // pulls its node back.
   std::vector<double> partial(kBlock * supported.size(), 0.0), total(partial.size(), 0.0);
   sys.visit_forces(
-      p, [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
+      p,
+      [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
         const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
         if (!e) return;
         const std::vector<couplings::DofKey>& keys = e->dofs();
@@ -95,7 +96,8 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           else if (dofs.global[k] < 0 || sys.dofs_.linked(node, comp))
             partial[kBlock * slot(node) + comp] += f_el[k];
         }
-      });
+      },
+      &sys.at_supports_);  // only the couplings at supported nodes contribute
   MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM,
                 sys.comm_);
 

@@ -10,13 +10,16 @@
 namespace catena::assembly {
 
 template <class Fn>
-void SecondOrderSystem::visit_forces(const EvalPoint& p, Fn&& fn) const {
+void SecondOrderSystem::visit_forces(const EvalPoint& p, Fn&& fn,
+                                     const std::vector<size_t>* only) const {
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
   const detail::LocalArrayRead q(q_work_.get());
   std::unique_ptr<detail::LocalArrayRead> v;
   if (p.v) v = std::make_unique<detail::LocalArrayRead>(v_work_.get());
-  for (size_t i = 0; i < couplings_.size(); ++i) {
+  const size_t n = only ? only->size() : couplings_.size();
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = only ? (*only)[k] : k;
     const ActiveDofs dofs = active(i, p.t, work_);
     if (dofs.n == 0) continue;
     if (work_.f.size() < dofs.n) work_.f.resize(dofs.n);

@@ -171,10 +171,11 @@ class SecondOrderSystem {
   static const double* scale_block(const ActiveDofs& dofs, const double* block,
                                    std::vector<double>& out);
   void scatter_to_local(Vec global, Vec local_ghosted) const;
-  // Collective. Evaluates every coupling's force at p and calls fn(i, dofs, f_el)
-  // (defined in visit_forces.hpp: inlined into the residual loop, which runs per coupling).
+  // Collective. Evaluates every coupling's force at p (or only the couplings listed in
+  // `only`) and calls fn(i, dofs, f_el) (defined in visit_forces.hpp: inlined into the
+  // residual loop, which runs per coupling).
   template <class Fn>
-  void visit_forces(const EvalPoint& p, Fn&& fn) const;
+  void visit_forces(const EvalPoint& p, Fn&& fn, const std::vector<size_t>* only = nullptr) const;
   // Collective. Each combination c[r] over every coupling at p into matrices[r] (zeroed
   // first, assembled on return; null matrices are skipped).
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
@@ -189,6 +190,7 @@ class SecondOrderSystem {
   std::vector<size_t> offset_;
   std::vector<char> acts_on_all_;       // per coupling: Coupling::acts_on_all(), cached
   std::vector<size_t> timed_;           // the couplings with PatchRole::at_patch_time
+  std::vector<size_t> at_supports_;     // the couplings acting on a supported node
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed
