@@ -113,7 +113,9 @@ class OutputObserver : public solvers::TransientObserver {
       contacts.force.push_back(c.force);
       contacts.position.push_back(c.position);
     }
-    writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts);
+    const assembly::Reactions reactions = view_.reactions({q, v, {}, t});
+    writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
+                          {reactions.force, reactions.moment});
   }
 
   void step(const solvers::StepRecord& r) override {

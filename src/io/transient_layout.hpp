@@ -40,6 +40,9 @@ inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
 inline constexpr Dataset constraint_nodes{"/mesh/constraint_nodes", nullptr};
 // (n_registration,) int64: node indices of the contact wire's registration points.
 inline constexpr Dataset registration_nodes{"/mesh/registration_nodes", nullptr};
+// (n_supports,) int64: node indices of the supported nodes (fixed DOFs or an elastic
+// support), ascending: the rows of the reaction datasets. Only with supports.
+inline constexpr Dataset support_nodes{"/mesh/support_nodes", nullptr};
 
 // ---- Samples, one row per output time (output.interval apart). ----
 inline constexpr Dataset time{"/time", "s"};  // (n_samples,) float64
@@ -51,6 +54,10 @@ inline constexpr Dataset slopes{"/samples/slopes", "1"};
 inline constexpr Dataset axial_force{"/samples/axial_force", "N"};
 // (n_samples, n_constraints, 3) float64: the force on node A. Only with constraints.
 inline constexpr Dataset constraint_forces{"/samples/constraint_forces", "N"};
+// (n_samples, n_supports, 3) float64: the force and the couple each support applies to
+// its node (rows: /mesh/support_nodes). Only with supports.
+inline constexpr Dataset reaction_force{"/samples/reaction_force", "N"};
+inline constexpr Dataset reaction_moment{"/samples/reaction_moment", "N m"};
 // (n_samples, n_pantographs) float64, column j = the pantograph whose `index` is j. Only
 // with pantographs.
 inline constexpr Dataset contact_force{"/samples/contact_force", "N"};

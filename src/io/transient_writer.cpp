@@ -174,8 +174,12 @@ struct TransientWriter::Impl {
   ParallelHdf5File file;
   RowRedistribution nodes, elements, constraints;
   bool has_constraints = false;
+  std::vector<int> supported;  // the supported nodes, ascending (layout::support_nodes)
+  RowRedistribution supports;
+  bool has_supports = false;
   hsize_t n_contacts = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
+  Series reaction_force, reaction_moment;
   Series contact_force, contact_position, step_contact_force;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
   std::vector<StepRecord> pending_steps;
@@ -194,8 +198,33 @@ struct TransientWriter::Impl {
         constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
                     "owned_constraints"),
         has_constraints(!m.constraints.empty()),
+        supported(supported_nodes(m)),
+        supports(c, static_cast<std::int64_t>(supported.size()), support_rows(supported, own_nodes),
+                 "owned support nodes"),
+        has_supports(!supported.empty()),
         n_contacts(static_cast<hsize_t>(m.contacts.size())) {
     MPI_Comm_rank(c, &rank);
+  }
+
+  // Nodes with fixed DOFs or an elastic support, ascending (as StateView::reactions).
+  static std::vector<int> supported_nodes(const model::Model& m) {
+    std::vector<int> nodes;
+    for (const auto& s : m.supports) nodes.push_back(s.node);
+    for (const auto& s : m.elastic_supports) nodes.push_back(s.node);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+  }
+  // This rank's rows of `supported`: its owned nodes among them.
+  static std::vector<int> support_rows(const std::vector<int>& supported,
+                                       const std::vector<int>& own_nodes) {
+    std::vector<int> rows;
+    for (const int node : own_nodes)
+      if (const auto it = std::lower_bound(supported.begin(), supported.end(), node);
+          it != supported.end() && *it == node)
+        rows.push_back(static_cast<int>(it - supported.begin()));
+    std::sort(rows.begin(), rows.end());
+    return rows;
   }
 
   // Collective. Runs a step that writes; an agreed failure (catena::OutputError, thrown on
@@ -233,6 +262,18 @@ struct TransientWriter::Impl {
       constraint_forces =
           series(layout::constraint_forces, {static_cast<hsize_t>(model.constraints.size()), 3},
                  real, samples);
+    if (has_supports) {
+      if (resume)
+        run_collective_phase(comm, [&] {
+          if (H5Lexists(file.id(), layout::reaction_force.path, H5P_DEFAULT) <= 0)
+            throw InputError({path, 0, layout::reaction_force.path},
+                             "missing: written by an older Catena, without the supports' "
+                             "reactions over time; run afresh (without --restart)");
+        });
+      const auto n_supported = static_cast<hsize_t>(supported.size());
+      reaction_force = series(layout::reaction_force, {n_supported, 3}, real, samples);
+      reaction_moment = series(layout::reaction_moment, {n_supported, 3}, real, samples);
+    }
     if (n_contacts > 0) {
       contact_force = series(layout::contact_force, {n_contacts}, real, samples);
       contact_position = series(layout::contact_position, {n_contacts}, real, samples);
@@ -251,20 +292,10 @@ struct TransientWriter::Impl {
   }
 
   std::vector<Series*> all_series() {
-    return {&time,
-            &positions,
-            &velocities,
-            &slopes,
-            &axial,
-            &constraint_forces,
-            &contact_force,
-            &contact_position,
-            &step_contact_force,
-            &step_time,
-            &step_dt,
-            &step_iterations,
-            &step_error,
-            &step_rejected};
+    return {&time,          &positions,         &velocities,         &slopes,
+            &axial,         &constraint_forces, &reaction_force,     &reaction_moment,
+            &contact_force, &contact_position,  &step_contact_force, &step_time,
+            &step_dt,       &step_iterations,   &step_error,         &step_rejected};
   }
 
   // Collective. Closes every dataset, then the file.
@@ -330,6 +361,12 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     }
     write_mesh(layout::constraint_nodes, static_cast<std::int64_t>(model.constraints.size()), 2, cb,
                ends);
+  }
+  if (s.has_supports) {
+    const RowBlock& sb = s.supports.block();
+    const auto first = s.supported.begin() + sb.begin;
+    write_mesh(layout::support_nodes, static_cast<std::int64_t>(s.supported.size()), 1, sb,
+               std::vector<std::int64_t>(first, first + sb.count));
   }
 
   if (s.n_contacts > 0) {
@@ -409,7 +446,7 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
                                     const std::vector<double>& slopes,
                                     const std::vector<double>& axial_force,
                                     const std::vector<double>& constraint_forces,
-                                    const ContactSample& contacts) {
+                                    const ContactSample& contacts, const SupportSample& supports) {
   Impl& s = *impl_;
   s.write([&] {
     const hid_t x = s.file.collective_transfer();
@@ -426,6 +463,12 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
     if (s.has_constraints) {
       const std::vector<double> c = s.constraints.to_block(constraint_forces, 3);
       s.constraint_forces.append(x, 1, s.constraints.block(), c.data());
+    }
+    if (s.has_supports) {
+      const std::vector<double> f = s.supports.to_block(supports.force, 3);
+      s.reaction_force.append(x, 1, s.supports.block(), f.data());
+      const std::vector<double> m = s.supports.to_block(supports.moment, 3);
+      s.reaction_moment.append(x, 1, s.supports.block(), m.data());
     }
     if (s.n_contacts > 0) {
       // Replicated values: rank 0 writes the row.

@@ -8,6 +8,8 @@
 #include <hdf5.h>
 #include <mpi.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -269,6 +271,76 @@ TEST_F(TransientWriterTest, ContinuesAFileOfItsFormat) {
   const fs::path path = directory_ / "run.h5";
   write_run(path, model_);
   EXPECT_EQ(error_of_resuming(path), "");
+}
+
+// With supports, the reactions of every supported node (fixed DOFs or an elastic support)
+// are rows of /samples/reaction_force and /samples/reaction_moment, in the order of
+// /mesh/support_nodes, whichever rank owns them; a file written without them is not
+// continued by a run that has supports.
+TEST_F(TransientWriterTest, WritesTheSupportsReactionsAndRefusesToContinueAFileWithout) {
+  catena::model::Model supported = model_;
+  catena::test::pin(supported, 0);
+  catena::test::pin(supported, n_nodes - 1);
+  supported.elastic_supports.push_back({3, catena::Vec3(0, 0, 1e4), catena::Vec3::Zero()});
+  const std::vector<int> support_nodes{0, 3, n_nodes - 1};
+  const auto reaction = [](int node, int sample, double scale) {
+    return catena::Vec3(scale * node, -scale * sample, scale * (node + sample + 1));
+  };
+  const fs::path path = directory_ / "supported.h5";
+  {
+    catena::io::RunInfo info;
+    info.n_ranks = comm_size();
+    catena::io::TransientWriter writer(MPI_COMM_WORLD, path.string(), supported, info,
+                                       my_rows(n_nodes), my_rows(n_elements));
+    for (int k = 0; k < n_samples; ++k) {
+      std::vector<double> zeros, axial(my_rows(n_elements).size(), 0.0);
+      catena::io::SupportSample reactions;
+      for (const int node : my_rows(n_nodes)) {
+        zeros.insert(zeros.end(), {0.0, 0.0, 0.0});
+        if (std::find(support_nodes.begin(), support_nodes.end(), node) == support_nodes.end())
+          continue;
+        for (int d = 0; d < 3; ++d) {
+          reactions.force.push_back(reaction(node, k, 1.0)[d]);
+          reactions.moment.push_back(reaction(node, k, 0.5)[d]);
+        }
+      }
+      const catena::io::ContactSample contacts{{contact_force(k)}, {start}};
+      writer.append_sample(k * interval, zeros, zeros, zeros, axial, {}, contacts, reactions);
+    }
+    writer.close("complete", {});
+  }
+  if (comm_rank() == 0) {
+    const OpenId file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+    ASSERT_GE(file.get(), 0);
+    const auto read = [&](const char* name, hid_t type, void* out) {
+      const OpenId dataset(H5Dopen2(file.get(), name, H5P_DEFAULT));
+      ASSERT_GE(dataset.get(), 0) << name;
+      ASSERT_GE(H5Dread(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out), 0) << name;
+    };
+    std::vector<std::int64_t> nodes(support_nodes.size());
+    read("/mesh/support_nodes", H5T_NATIVE_INT64, nodes.data());
+    EXPECT_EQ(nodes, std::vector<std::int64_t>(support_nodes.begin(), support_nodes.end()));
+    std::vector<double> force(n_samples * support_nodes.size() * 3), moment(force.size());
+    read("/samples/reaction_force", H5T_NATIVE_DOUBLE, force.data());
+    read("/samples/reaction_moment", H5T_NATIVE_DOUBLE, moment.data());
+    for (int k = 0; k < n_samples; ++k)
+      for (std::size_t j = 0; j < support_nodes.size(); ++j)
+        for (int d = 0; d < 3; ++d) {
+          const std::size_t at = (k * support_nodes.size() + j) * 3 + d;
+          EXPECT_EQ(force[at], reaction(support_nodes[j], k, 1.0)[d]);
+          EXPECT_EQ(moment[at], reaction(support_nodes[j], k, 0.5)[d]);
+        }
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  // The file without supports (write_run), continued by a run with them.
+  const fs::path without = directory_ / "run.h5";
+  write_run(without, model_);
+  expect_parts(error_of([&] {
+                 catena::io::TransientWriter(MPI_COMM_WORLD, without.string(), supported,
+                                             my_rows(n_nodes), my_rows(n_elements), {},
+                                             catena::io::ResumePoint{3, 3});
+               }),
+               {without.string(), "without the supports' reactions", "run afresh"});
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 // nodes), /time, /samples/{positions, velocities, slopes} (n_samples × n_nodes × 3),
 // /samples/axial_force (n_samples × n_elements), with constraints /mesh/constraint_nodes
 // (n_constraints × 2 node indices, −1: none) and /samples/constraint_forces
-// (n_samples × n_constraints × 3: the force on node A), /steps/* (one row per accepted
+// (n_samples × n_constraints × 3: the force on node A), with supports /mesh/support_nodes
+// and /samples/reaction_force, /samples/reaction_moment (n_samples × n_supports × 3),
+// /steps/* (one row per accepted
 // step), with pantographs /samples/contact_force and /samples/contact_position
 // (n_samples × n_pantographs), /steps/contact_force (n_steps × n_pantographs), a group
 // /pantographs/<name> each (attributes index, speed), /mesh/registration_nodes and root
@@ -44,6 +46,13 @@ struct StepRecord {
   std::vector<double> contact_force;  // N, one per model::MovingContact, at the step end
 };
 
+// Reactions at a sample: 3 values each per owned supported node, ascending (the order of
+// assembly::StateView::reactions).
+struct SupportSample {
+  std::vector<double> force;   // N
+  std::vector<double> moment;  // N·m
+};
+
 // Contact state of every pantograph at a sample (identical on every rank).
 struct ContactSample {
   std::vector<double> force;     // N
@@ -81,12 +90,12 @@ class TransientWriter {
   TransientWriter& operator=(const TransientWriter&) = delete;
 
   // Collective. One sample: this rank's owned rows (3 values per node, 1 per element, 3
-  // per constraint).
+  // per constraint, 3 + 3 per supported node among its owned nodes).
   void append_sample(double t, const std::vector<double>& positions,
                      const std::vector<double>& velocities, const std::vector<double>& slopes,
                      const std::vector<double>& axial_force,
                      const std::vector<double>& constraint_forces = {},
-                     const ContactSample& contacts = {});
+                     const ContactSample& contacts = {}, const SupportSample& supports = {});
   // Not collective (identical on every rank): buffered until flush().
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.
