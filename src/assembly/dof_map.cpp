@@ -32,7 +32,6 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
       coefficient_[slot] = model.nodes[s.node].tangent[d];
       linked_[slot] = d == 0 ? 1 : 2;  // 1: the unknown's own slot, 2: shares the slot before
     }
-    any_linked_ = true;
   }
 
   // Global numbering: ranks in order, owned nodes ascending, DOFs in layout order.

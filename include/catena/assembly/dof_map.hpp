@@ -51,8 +51,6 @@ class DofMap {
   double coefficient(int node, int k) const { return coefficient_[node_offset_[node] + k]; }
   // True if slot k shares its unknown with the node's other slope slots.
   bool linked(int node, int k) const { return linked_[node_offset_[node] + k] != 0; }
-  // True if some node has linked slots (callers skip the coefficients otherwise).
-  bool any_linked() const { return any_linked_; }
 
   PetscInt n_global() const { return n_global_; }
   PetscInt n_owned() const { return n_owned_; }
@@ -87,7 +85,6 @@ class DofMap {
   std::vector<PetscInt> local_;                 // per nodal DOF
   std::vector<double> coefficient_;             // per nodal DOF (1 unless linked)
   std::vector<char> linked_;  // per nodal DOF: 0, 1 (a shared unknown's first slot), 2 (others)
-  bool any_linked_ = false;
   std::vector<PetscInt> ghosts_;
   std::vector<int> owned_nodes_;
   std::vector<int> global_node_;        // per global DOF: its node
