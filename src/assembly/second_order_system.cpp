@@ -188,10 +188,15 @@ couplings::CouplingState SecondOrderSystem::gather(const ActiveDofs& dofs, const
   }
   for (size_t k = 0; k < n; ++k) {
     const PetscInt l = dofs.local[k];
-    const double c = dofs.coefficient ? dofs.coefficient[k] : 1.0;
-    b.q[k] = l >= 0 ? c * q_local[l] : dofs.fixed[k];
-    if (v_local) b.v[k] = l >= 0 ? c * v_local[l] : 0.0;
+    b.q[k] = l >= 0 ? q_local[l] : dofs.fixed[k];
+    if (v_local) b.v[k] = l >= 0 ? v_local[l] : 0.0;
   }
+  if (dofs.coefficient)  // a clamp's linked slope: nodal value = coefficient × unknown
+    for (size_t k = 0; k < n; ++k)
+      if (dofs.local[k] >= 0) {
+        b.q[k] *= dofs.coefficient[k];
+        if (v_local) b.v[k] *= dofs.coefficient[k];
+      }
   couplings::CouplingState s{{b.q.data(), n}, {}, path, t};
   if (v_local) s.v = {b.v.data(), n};
   return s;
