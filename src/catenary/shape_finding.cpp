@@ -44,9 +44,10 @@ void set_cable_dropper_length(model::Model& m, const model::CatenaryDropper& d, 
 }
 
 void apply(const Unknowns& u, model::Model& m) {
-  const CatenaryLayout& layout = *m.catenary;
+  CatenaryLayout& layout = *m.catenary;
   for (std::size_t i = 0; i < layout.droppers.size(); ++i) {
-    const model::CatenaryDropper& d = layout.droppers[i];
+    model::CatenaryDropper& d = layout.droppers[i];
+    d.unstretched_length = u.lengths[i];
     auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
     if (auto* bar = std::get_if<BarProps>(&props)) {
       bar->unstretched_length = u.lengths[i];

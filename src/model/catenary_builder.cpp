@@ -293,6 +293,7 @@ class CatenaryAssembler {
         dropper.mesh_length = (model_.nodes[static_cast<std::size_t>(upper)].position -
                                model_.nodes[static_cast<std::size_t>(lower)].position)
                                   .norm();
+        dropper.unstretched_length = dropper.mesh_length;
         if (cable_droppers())
           add_cable_dropper(upper, lower, dropper);
         else
@@ -301,13 +302,13 @@ class CatenaryAssembler {
         dropper.upper_node = upper;
         dropper.stitch = stitch;
         dropper.span = static_cast<int>(span);
-        dropper.design_z = design_height(d_.presag, s, d_.span_lengths[span]);
+        dropper.design_z = dd.design_z[span][k];
         dropper.stiffness = dd.stiffness;
         layout.droppers.push_back(dropper);
-        if (dd.clamp_mass > 0.0) {
-          model_.point_masses.push_back(PointMass{lower, dd.clamp_mass});
-          model_.point_masses.push_back(PointMass{upper, dd.clamp_mass});
-        }
+        if (dd.clamp_mass_contact > 0.0)
+          model_.point_masses.push_back(PointMass{lower, dd.clamp_mass_contact});
+        if (dd.clamp_mass_upper > 0.0)
+          model_.point_masses.push_back(PointMass{upper, dd.clamp_mass_upper});
       }
     }
   }
@@ -493,9 +494,17 @@ int elements_in_gap(double gap, double h) {
   return std::max(1, static_cast<int>(std::ceil(gap / h * (1.0 - 1e-12))));
 }
 
-double design_height(double presag, double s, double span_length) {
-  const double xi = s / span_length;
-  return -4.0 * presag * xi * (1.0 - xi);
+std::vector<double> presag_heights(double presag, PresagBetween between,
+                                   const std::vector<double>& positions, double span_length) {
+  const bool supports = between == PresagBetween::supports;
+  const double a = supports ? 0.0 : positions.front();
+  const double b = supports ? span_length : positions.back();
+  std::vector<double> z;
+  for (const double s : positions) {
+    const double xi = (s - a) / (b - a);
+    z.push_back(-4.0 * presag * xi * (1.0 - xi));
+  }
+  return z;
 }
 
 void build_catenary(const CatenaryDesign& design, const Field& entry, SceneBuild& build) {

@@ -55,12 +55,16 @@ struct DropperDesign {
   int cable_elements = 0;                      // per dropper, cable model only
   double EI = 0.0;                             // N·m², cable model only
   std::vector<std::vector<double>> positions;  // m from the span's start, per span
-  double EA = 0.0;                             // N; 0 when `stiffness` is given
+  // m, per span: the contact wire's design height at each dropper (z up, 0 at the
+  // registrations): the pre-sag parabola or the scene's design sags.
+  std::vector<std::vector<double>> design_z;
+  double EA = 0.0;               // N; 0 when `stiffness` is given
   double stiffness = 0.0;        // N/m (EA = stiffness × unstretched length); 0 when EA is
   double mass_per_length = 0.0;  // kg/m
   double damping = 0.0;          // N·s/m, along the dropper
   bool tension_only = true;
-  double clamp_mass = 0.0;  // kg, at each end
+  double clamp_mass_contact = 0.0;  // kg, the clamp on the contact wire
+  double clamp_mass_upper = 0.0;    // kg, the clamp on the messenger or stitch wire
 };
 
 struct SteadyArmDesign {
@@ -83,7 +87,6 @@ struct CatenaryDesign {
   int dimension = 3;                 // 2 or 3
   std::vector<double> span_lengths;  // m
   double system_height = 0.0;        // m
-  double presag = 0.0;               // m, contact-wire sag at mid-span (design)
   double stagger = 0.0;              // m, 3D only
   double element_length = 0.0;       // m, upper bound of the wires' element length
   WireDesign contact_wire;
@@ -109,9 +112,16 @@ inline constexpr double kJointStiffnessFactor = 100.0;
 // dropper shortened to half its mesh length).
 inline constexpr double kDropperHingeStiffnessFactor = 1.0e4;
 
-// Not collective. The contact wire's design height at distance s from the start of a span
-// of length L: the pre-sag parabola −4·presag·(s/L)·(1 − s/L), 0 at the supports.
-double design_height(double presag, double s, double span_length);
+// Where the pre-sag parabola is zero (`catenary.presag_between`): at the supports, or at
+// each span's first and last droppers (as in designs that hang the first and last droppers
+// at the registration height).
+enum class PresagBetween { supports, end_droppers };
+
+// Not collective. The contact wire's design heights at one span's dropper positions
+// (increasing, m from the span's start; two or more for end_droppers): the pre-sag parabola
+// −4·presag·ξ·(1 − ξ), ξ the position's fraction of the way from one zero to the other.
+std::vector<double> presag_heights(double presag, PresagBetween between,
+                                   const std::vector<double>& positions, double span_length);
 
 // Not collective. The number of elements between two stations `gap` apart: the fewest no
 // longer than h.

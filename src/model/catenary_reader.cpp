@@ -21,10 +21,10 @@ constexpr std::int64_t kDefaultRunOutSpans = 2;
 
 const std::vector<std::string>& catenary_keys() {
   static const std::vector<std::string> keys{
-      "dimension", "spans",       "span_length",        "span_lengths",     "system_height",
-      "presag",    "stagger",     "element_length",     "contact_wire",     "messenger",
-      "droppers",  "steady_arms", "messenger_supports", "evaluation_spans", "run_out_spans",
-      "stitch"};
+      "dimension",     "spans",          "span_length", "span_lengths",       "system_height",
+      "presag",        "presag_between", "stagger",     "element_length",     "contact_wire",
+      "messenger",     "droppers",       "steady_arms", "messenger_supports", "evaluation_spans",
+      "run_out_spans", "stitch"};
   return keys;
 }
 
@@ -174,27 +174,105 @@ std::vector<double> read_positions(const Field& list, double span_length, std::s
   return positions;
 }
 
-// `positions`: one list for every span, or a list of lists (one per span).
+// A per-span list key (`positions`, `design_sags`): one list for every span, or a list of
+// lists (one per span); read_span(list, span) reads span `span`'s list.
+template <class ReadSpan>
+std::vector<std::vector<double>> read_per_span(const Field& field, std::size_t n_spans,
+                                               ReadSpan&& read_span) {
+  const std::vector<Field> items = field.items();
+  const bool per_span = !items.empty() && items.front().is_list();
+  std::vector<std::vector<double>> out;
+  if (!per_span) {
+    for (std::size_t span = 0; span < n_spans; ++span) out.push_back(read_span(field, span));
+    return out;
+  }
+  if (items.size() != n_spans)
+    field.fail("a list per span needs " + std::to_string(n_spans) + " lists (one per span), got " +
+               std::to_string(items.size()));
+  for (std::size_t span = 0; span < n_spans; ++span) out.push_back(read_span(items[span], span));
+  return out;
+}
+
 std::vector<std::vector<double>> read_dropper_positions(const Field& positions,
                                                         const std::vector<double>& spans) {
   if (!positions.present())
     positions.fail(
         "missing required key; expected the droppers' distances from the span's "
         "start support (m): a list, or one list per span");
-  const std::vector<Field> items = positions.items();
-  const bool per_span = !items.empty() && items.front().is_list();
-  std::vector<std::vector<double>> out;
-  if (!per_span) {
-    for (std::size_t span = 0; span < spans.size(); ++span)
-      out.push_back(read_positions(positions, spans[span], span));
-    return out;
+  return read_per_span(positions, spans.size(), [&](const Field& list, std::size_t span) {
+    return read_positions(list, spans[span], span);
+  });
+}
+
+// `droppers.design_sags`: the contact wire's design sag below its registrations at every
+// dropper (m, down positive), as many per span as the span has droppers; returned as
+// design heights (−sag).
+std::vector<std::vector<double>> read_design_sags(const Field& sags,
+                                                  const std::vector<std::vector<double>>& positions,
+                                                  double system_height) {
+  const RealRange range = RealRange::between(-system_height, false, system_height, false, "m");
+  return read_per_span(sags, positions.size(), [&](const Field& list, std::size_t span) {
+    const std::vector<Field> items = list.items();
+    if (items.size() != positions[span].size())
+      list.fail("span " + std::to_string(span + 1) + " has " +
+                std::to_string(positions[span].size()) + " droppers but " +
+                std::to_string(items.size()) +
+                " design sags; give one sag (m) per dropper position");
+    std::vector<double> heights;
+    for (const Field& item : items) heights.push_back(-item.real(range));
+    return heights;
+  });
+}
+
+// The design heights at the droppers: `droppers.design_sags`, or the pre-sag parabola
+// (`presag`, zero at the supports or, with `presag_between: end_droppers`, at each span's
+// first and last droppers).
+std::vector<std::vector<double>> read_design_heights(const Field& catenary,
+                                                     const CatenaryDesign& d) {
+  const Field presag = catenary.child("presag");
+  const Field between = catenary.child("presag_between");
+  const Field sags = catenary.child("droppers").child("design_sags");
+  if (sags.present()) {
+    for (const Field& parabola : {presag, between})
+      if (parabola.present())
+        parabola.fail(
+            "'droppers.design_sags' gives the design heights dropper by dropper; remove "
+            "this key (the pre-sag parabola) or the design sags");
+    return read_design_sags(sags, d.droppers.positions, d.system_height);
   }
-  if (items.size() != spans.size())
-    positions.fail("a list per span needs " + std::to_string(spans.size()) +
-                   " lists (one per span), got " + std::to_string(items.size()));
-  for (std::size_t span = 0; span < spans.size(); ++span)
-    out.push_back(read_positions(items[span], spans[span], span));
-  return out;
+  const double sag =
+      presag.real_or(0.0, RealRange::between(0.0, true, d.system_height, false, "m"));
+  static const std::vector<std::string> choices{"supports", "end_droppers"};
+  const std::string zeros = between.text_or("supports");
+  if (std::find(choices.begin(), choices.end(), zeros) == choices.end())
+    between.fail("unknown value '" + zeros + "';" + did_you_mean(zeros, choices) +
+                 " accepted: supports (the parabola is 0 at the supports), end_droppers (0 "
+                 "at each span's first and last droppers)");
+  const PresagBetween where =
+      zeros == "supports" ? PresagBetween::supports : PresagBetween::end_droppers;
+  std::vector<std::vector<double>> heights;
+  for (std::size_t span = 0; span < d.span_lengths.size(); ++span) {
+    const std::vector<double>& s = d.droppers.positions[span];
+    if (where == PresagBetween::end_droppers && s.size() < 2)
+      between.fail("span " + std::to_string(span + 1) +
+                   " has one dropper: a parabola between its first and last droppers "
+                   "needs two; use 'presag_between: supports' or 'droppers.design_sags'");
+    heights.push_back(presag_heights(sag, where, s, d.span_lengths[span]));
+  }
+  return heights;
+}
+
+// `clamp_mass`: one mass for both ends of every dropper, or {contact_wire, messenger} (the
+// upper end's clamp, on the messenger or on a stitch wire).
+void read_clamp_masses(const Field& clamp_mass, DropperDesign& d) {
+  const RealRange kg = RealRange::non_negative("kg");
+  if (!clamp_mass.is_map()) {
+    d.clamp_mass_contact = d.clamp_mass_upper = clamp_mass.real_or(0.0, kg);
+    return;
+  }
+  clamp_mass.check_keys({"contact_wire", "messenger"});
+  d.clamp_mass_contact = clamp_mass.child("contact_wire").real(kg);
+  d.clamp_mass_upper = clamp_mass.child("messenger").real(kg);
 }
 
 // `model: bar` (default) or `cable` with `elements` and `EI`; a cable dropper needs a
@@ -228,7 +306,7 @@ void read_dropper_model(const Field& droppers, DropperDesign& d) {
 DropperDesign read_droppers(const Field& droppers, const std::vector<double>& spans) {
   droppers.expect_map("the droppers {positions, EA or stiffness, ...}");
   droppers.check_keys({"positions", "model", "elements", "EI", "EA", "stiffness", "mass_per_length",
-                       "damping", "tension_only", "clamp_mass"});
+                       "damping", "tension_only", "clamp_mass", "design_sags"});
   DropperDesign d;
   d.positions = read_dropper_positions(droppers.child("positions"), spans);
   const Field EA = droppers.child("EA");
@@ -246,7 +324,7 @@ DropperDesign read_droppers(const Field& droppers, const std::vector<double>& sp
       droppers.child("mass_per_length").real_or(0.0, RealRange::non_negative("kg/m"));
   d.damping = droppers.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
   d.tension_only = droppers.child("tension_only").boolean_or(true);
-  d.clamp_mass = droppers.child("clamp_mass").real_or(0.0, RealRange::non_negative("kg"));
+  read_clamp_masses(droppers.child("clamp_mass"), d);
   read_dropper_model(droppers, d);
   return d;
 }
@@ -319,8 +397,6 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   d.span_lengths = read_span_lengths(catenary, scene, d.auto_spans);
   const Field height = catenary.child("system_height");
   d.system_height = height.real(RealRange::positive("m"));
-  d.presag = catenary.child("presag").real_or(
-      0.0, RealRange::between(0.0, true, d.system_height, false, "m"));
   const Field stagger = catenary.child("stagger");
   if (stagger.present() && d.dimension == 2)
     stagger.fail(
@@ -347,6 +423,7 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   d.messenger = read_wire(catenary.child("messenger"),
                           "the messenger wire {EA, EI, mass_per_length, tension}");
   d.droppers = read_droppers(catenary.child("droppers"), d.span_lengths);
+  d.droppers.design_z = read_design_heights(catenary, d);
   // Intermediate supports exist only with two spans or more.
   const bool has_intermediate_supports = d.span_lengths.size() > 1;
   const Field arms = catenary.child("steady_arms");

@@ -170,7 +170,8 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
 
   // Droppers, read back from their elements (bars or cable chains).
   bool all_tension_only = true, any_tension_only = false;
-  std::vector<double> dropper_mass, dropper_damping, stiffness, EA, EI, clamps;
+  std::vector<double> dropper_mass, dropper_damping, stiffness, EA, EI, lower_clamps, upper_clamps,
+      design_sags;
   for (const CatenaryDropper& d : c.droppers) {
     const DropperProperties p = dropper_properties(m, d);
     all_tension_only = all_tension_only && p.tension_only;
@@ -182,8 +183,9 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
     else
       EA.push_back(p.EA);
     if (p.EI > 0.0) EI.push_back(p.EI);
-    clamps.push_back(point_mass_at(m, d.contact_node));
-    clamps.push_back(point_mass_at(m, d.upper_node));
+    lower_clamps.push_back(point_mass_at(m, d.contact_node));
+    upper_clamps.push_back(point_mass_at(m, d.upper_node));
+    design_sags.push_back(-d.design_z);
   }
   const bool cables = !EI.empty();
   const std::string behaviour =
@@ -206,9 +208,15 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
             ", ", range_text(dropper_mass, "kg/m"), ", damping ",
             range_text(dropper_damping, "N*s/m"), "; unstretched lengths set by shape finding"),
         4);
-  const double max_clamp = *std::max_element(clamps.begin(), clamps.end());
+  t.row("design sags",
+        cat(range_text(design_sags, "m"),
+            " below the registrations at the droppers (the contact wire's design shape)"),
+        4);
+  const double max_clamp = std::max(*std::max_element(lower_clamps.begin(), lower_clamps.end()),
+                                    *std::max_element(upper_clamps.begin(), upper_clamps.end()));
   t.row("clamp masses",
-        max_clamp > 0.0 ? cat(range_text(clamps, "kg"), " at each end of every dropper")
+        max_clamp > 0.0 ? cat(range_text(lower_clamps, "kg"), " on the contact wire, ",
+                              range_text(upper_clamps, "kg"), " on the upper wire, per dropper")
                         : std::string("none (clamp_mass 0)"),
         4);
 

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,18 @@ unsigned mask_of(const Model& m, int node) {
   for (const Support& s : m.supports)
     if (s.node == node) mask |= s.fixed_mask;
   return mask;
+}
+
+// The base scene without its `presag` line (design sags and a pre-sag exclude each other).
+std::string scene_without_presag() {
+  std::ifstream in(scene_file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  const std::string line = "  presag: 0.055\n";
+  const std::size_t at = scene.find(line);
+  EXPECT_NE(at, std::string::npos);
+  return scene.erase(at, line.size());
 }
 
 double element_length(const Model& m, int e) {
@@ -466,6 +480,17 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
       {{"catenary.span_lengths=[60]"}, {"catenary.span_lengths", "not both"}},
       {{"catenary.spans=0"}, {"catenary.spans", "expected an integer in [1, 10000]"}},
       {{"catenary.presag=1.2"}, {"catenary.presag", "in [0, 1.2) [m]"}},
+      {{"catenary.presag_between=masts"},
+       {"catenary.presag_between", "unknown value 'masts'", "accepted: supports"}},
+      {{"catenary.droppers.positions=[[30], [5, 55], [5, 55]]",
+        "catenary.presag_between=end_droppers"},
+       {"catenary.presag_between", "span 1 has one dropper", "needs two"}},
+      {{"catenary.droppers.design_sags=[0, 0.01]"},
+       {"catenary.presag", "remove this key (the pre-sag parabola) or the design sags"}},
+      {{"catenary.droppers.clamp_mass={contact_wire: 0.1}"},
+       {"catenary.droppers.clamp_mass.messenger", "missing required key"}},
+      {{"catenary.droppers.clamp_mass={contact: 0.1, messenger: 0.2}"},
+       {"catenary.droppers.clamp_mass.contact", "unknown key"}},
       {{"catenary.element_length=0"}, {"catenary.element_length", "> 0 [m]"}},
       {{"catenary.dimension=4"}, {"catenary.dimension", "in [2, 3]"}},
       {{"catenary.contact_wire.tension=-1"}, {"catenary.contact_wire.tension", "> 0 [N]"}},
@@ -504,6 +529,63 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
   };
   test::expect_input_errors([](const auto& o) { read_scene(scene_file, o); }, "catenary_3span.yaml",
                             cases);
+  const std::vector<test::InputErrorCase> sag_cases{
+      {{"catenary.droppers.design_sags=[0, 0.01]"},
+       {"catenary.droppers.design_sags", "span 1 has 9 droppers but 2 design sags"}},
+      {{"catenary.droppers.design_sags=[0, 0, 0, 0, 1.2, 0, 0, 0, 0]"},
+       {"catenary.droppers.design_sags[4]", "in (-1.2, 1.2) [m]"}},
+      {{"catenary.droppers.design_sags=[[0], [0]]"},
+       {"catenary.droppers.design_sags", "needs 3 lists (one per span), got 2"}},
+  };
+  test::expect_input_errors(
+      [](const auto& o) { parse_scene(scene_without_presag(), "no_presag.yaml", o); },
+      "no_presag.yaml", sag_cases);
+}
+
+// The design heights at the droppers: the pre-sag parabola through the supports (the
+// default), through each span's first and last droppers (`presag_between: end_droppers`,
+// zero there and −presag midway), or the scene's own sags dropper by dropper.
+TEST(CatenaryBuilder, DesignHeightsFromTheParabolaOrDropperByDropper) {
+  const auto heights = [](const Model& m) {
+    std::vector<double> z;
+    for (const CatenaryDropper& d : m.catenary->droppers) z.push_back(d.design_z);
+    return z;
+  };
+  const Model through_supports = read_scene(scene_file, {"catenary.presag=0.06"});
+  const Model through_droppers =
+      read_scene(scene_file, {"catenary.presag=0.06", "catenary.presag_between=end_droppers"});
+  for (int span = 0; span < n_spans; ++span)
+    for (int k = 0; k < droppers_per_span; ++k) {
+      const double s = offsets[k];
+      const std::size_t i = span * droppers_per_span + k;
+      EXPECT_NEAR(heights(through_supports)[i], -0.24 * (s / 60.0) * (1.0 - s / 60.0), 1e-15);
+      EXPECT_NEAR(heights(through_droppers)[i], -0.24 * (s - 5.0) * (55.0 - s) / (50.0 * 50.0),
+                  1e-15);
+    }
+  EXPECT_EQ(heights(through_droppers)[0], 0.0);
+  EXPECT_EQ(heights(through_droppers)[8], 0.0);
+  EXPECT_NEAR(heights(through_droppers)[4], -0.06, 1e-15);
+  // One list per span, sags down positive; the clamp masses end by end.
+  const Model own =
+      parse_scene(scene_without_presag(), "no_presag.yaml",
+                  {"catenary.droppers.design_sags=[[0, 0.01, 0.02, 0.03, 0.04, 0.03, 0.02, 0.01, "
+                   "0], [0, 0, 0, 0, 0, 0, 0, 0, 0], [-0.01, 0, 0, 0, 0.05, 0, 0, 0, 0]]",
+                   "catenary.droppers.clamp_mass={contact_wire: 0.165, messenger: 0.195}"});
+  const std::vector<double> z = heights(own);
+  EXPECT_DOUBLE_EQ(z[3], -0.03);
+  EXPECT_DOUBLE_EQ(z[13], 0.0);
+  EXPECT_DOUBLE_EQ(z[18], 0.01);
+  EXPECT_DOUBLE_EQ(z[22], -0.05);
+  for (const CatenaryDropper& d : own.catenary->droppers) {
+    double lower = 0.0, upper = 0.0;
+    for (const PointMass& p : own.point_masses) {
+      if (p.node == d.contact_node) lower += p.mass;
+      if (p.node == d.upper_node) upper += p.mass;
+    }
+    EXPECT_DOUBLE_EQ(lower, 0.165);
+    EXPECT_DOUBLE_EQ(upper, 0.195);
+    EXPECT_DOUBLE_EQ(d.unstretched_length, d.mesh_length);  // until shape finding
+  }
 }
 
 // droppers.model: cable. Each dropper is a vertical chain of `elements` cable elements

@@ -26,6 +26,9 @@ struct CatenaryDropper {
   int stitch = -1;           // into CatenaryLayout::stitch_wires; −1: hangs from the messenger
   int span = 0;              // 0-based span number
   double design_z = 0.0;     // m, the contact wire's design height at the dropper
+  // m: the mesh length as built; shape finding sets the length that puts the contact wire
+  // at design_z (and the elements' unstretched lengths with it).
+  double unstretched_length = 0.0;
   // N/m: when > 0 the dropper's stiffness EA/l0 is what the design fixes, so its EA is
   // set to stiffness × unstretched length whenever the length changes; 0: EA is fixed.
   double stiffness = 0.0;
