@@ -200,6 +200,12 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.overrides.push_back(a.substr(6));
     } else if (a == "--restart") {
       cl.restart = true;
+    } else if (a == "--ids") {
+      if (cl.command != "check")
+        throw InputError(
+            {"", 0, "--ids"},
+            "'--ids' is an option of check (catena check SCENE.yaml --ids), not of " + cl.command);
+      cl.ids = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
     } else if (a == "--progress") {

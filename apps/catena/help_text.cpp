@@ -48,9 +48,12 @@ const CommandHelp* commands() {
   --quiet               no progress lines (as --progress off)
 )" + kMemoryOption,
        true},
-      {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB]\n",
+      {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB] [--ids]\n",
        "  check   validate the scene and print what would be modelled, without solving\n",
-       std::string("Options of check:\n") + kSetOption + kMemoryOption, false},
+       std::string("Options of check:\n") + kSetOption + kMemoryOption +
+           "  --ids                 also list the catenary's droppers and supports with their\n"
+           "                        node and element ids (docs/catenary.md, \"Ids\")\n",
+       false},
       {"stats", "  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]\n",
        R"(  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
           (serial: run it without mpirun)

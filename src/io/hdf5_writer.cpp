@@ -31,6 +31,7 @@
 #include "catena/core/version.hpp"
 #include "catena/io/output_error.hpp"
 #include "catena/model/element_kinds.hpp"
+#include "catenary_output.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
@@ -356,6 +357,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     const WriteContext context{comm, file, model};
     write_mesh(context, rows.nodes.block(), rows.elements.block());
     write_solution(context, result, rows);
+    run_collective_phase(comm, [&] { write_catenary_layout(file, model); });
     run_collective_phase(comm, [&] { write_attributes(file, attributes); });
     run_collective_phase(comm, [&] { file.close(); });
   }

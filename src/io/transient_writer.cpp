@@ -9,6 +9,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/output_error.hpp"
+#include "catenary_output.hpp"
 #include "collective_hdf5_call.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"
@@ -393,6 +394,7 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     if (s.rank == 0) reg.assign(model.registration_nodes.begin(), model.registration_nodes.end());
     write_mesh(layout::registration_nodes, n_reg, 1, rb, reg);
   }
+  write_catenary_layout(s.file, model);
   s.open_series(model, nullptr);
 
   run_output_phase(s.comm, [&] {

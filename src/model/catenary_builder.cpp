@@ -459,6 +459,10 @@ class CatenaryAssembler {
             ElasticSupport{top, Vec3(0.0, 0.0, ms.stiffness), Vec3(0.0, 0.0, ms.damping)});
     }
     for (const auto& [node, mask] : fixed) model_.supports.push_back(Support{node, mask});
+    for (std::size_t j = 0; j < n_supports; ++j) {
+      layout.contact_support_nodes.push_back(contact_node(contact_.support_nodes[j]));
+      layout.messenger_support_nodes.push_back(messenger_node(messenger_.support_nodes[j]));
+    }
     for (const int local : contact_.support_nodes)
       model_.registration_nodes.push_back(contact_node(local));
   }

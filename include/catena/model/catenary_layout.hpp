@@ -71,8 +71,11 @@ struct AutoSpanCount {
 };
 
 struct CatenaryLayout {
-  int dimension = 3;                    // 2: x–z plane (out-of-plane DOFs fixed), 3
-  std::vector<double> support_x;        // m, the n_spans + 1 support (mast) positions
+  int dimension = 3;              // 2: x–z plane (out-of-plane DOFs fixed), 3
+  std::vector<double> support_x;  // m, the n_spans + 1 support (mast) positions
+  // Per support: the node of each wire that is held there (with stagger a wire has two
+  // nodes at an intermediate support, joined by a spring: the one that ends the span before).
+  std::vector<int> contact_support_nodes, messenger_support_nodes;
   std::vector<double> dropper_offsets;  // m, from the span's start; empty if they differ per span
   double system_height = 0.0;           // m, messenger above contact wire at the supports
   CatenaryWire contact_wire;

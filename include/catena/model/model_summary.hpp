@@ -32,4 +32,10 @@ std::string describe(const Model& model, int n_ranks_running);
 // to repeat what `catena check` would have said.
 std::vector<std::string> scene_warnings(const Model& model);
 
+// Not collective. `catena check --ids`: the catenary builder's droppers (span, number, x,
+// design height, node ids at both ends, the wire they hang from, element id) and supports
+// (x, the contact-wire and messenger node ids held there, and what each support is), one
+// line each; a single line saying so for a scene without a `catenary`.
+std::string describe_catenary_ids(const Model& model);
+
 }  // namespace catena::model
