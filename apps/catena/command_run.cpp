@@ -13,6 +13,7 @@
 #include "catena/io/output_lock.hpp"
 #include "catena/io/run_files.hpp"
 #include "catena/model/model_summary.hpp"
+#include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
 #include "log_stage.hpp"
@@ -79,6 +80,8 @@ void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult&
       "|f| = %.3e N, %.2f s\n",
       report.n_load_steps, report.n_rejected_steps, report.n_newton_iterations,
       report.residual_norm, seconds);
+  if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())
+    std::printf("%s\n", guess.c_str());
   std::printf("  free DOFs %lld on %d ranks\n", static_cast<long long>(n_dofs), mpi_size(comm));
   std::printf("  max displacement %.6g m\n", global[0]);
   if (global[1] >= global[2])
@@ -125,7 +128,8 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   solver.on_progress(static_progress_lines(rank, cl.progress_seconds));
   const solvers::StaticReport report = [&] {
     const LogStage stage("Statics");
-    return solver.solve(q.get());
+    const VecHandle guess = solvers::hanging_cable_start(system);
+    return solver.solve(q.get(), guess.get());
   }();
   const double seconds = MPI_Wtime() - start;
 

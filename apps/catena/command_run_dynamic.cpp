@@ -29,6 +29,7 @@
 #include "catena/io/run_files.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
+#include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
@@ -368,12 +369,16 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
       statics.on_progress(static_progress_lines(rank, cl.progress_seconds));
       const solvers::StaticReport report = [&] {
         const LogStage stage("Statics");
-        return statics.solve(q.get());
+        const VecHandle guess = solvers::hanging_cable_start(system);
+        return statics.solve(q.get(), guess.get());
       }();
-      if (rank == 0)
+      if (rank == 0) {
         std::printf(
             "initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
             report.n_load_steps, report.n_newton_iterations, report.residual_norm);
+        if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())
+          std::printf("%s\n", guess.c_str());
+      }
     }
     apply_initial_conditions(system, q.get(), v.get());
     integrator->set_state(0.0, q.get(), v.get(), nullptr);

@@ -91,6 +91,10 @@ struct StaticOptions {
   double rtol = 1e-10;             // SNES relative residual tolerance
   double atol = 1e-8;              // SNES absolute residual tolerance (N)
   int max_newton_iterations = 30;  // per load step
+  // Start from each line's closed-form elastic catenary where the model is made of lines
+  // hanging under gravity alone (solvers/statics/hanging_cable_guess.hpp); false: always
+  // walk the load path from the reference.
+  bool elastic_catenary_guess = true;
 };
 
 struct OutputOptions {

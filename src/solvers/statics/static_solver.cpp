@@ -138,7 +138,70 @@ void check_factorisation(const MumpsStatus& mumps, const std::string& where) {
 
 }  // namespace
 
-StaticReport StaticSolver::solve(Vec q) {
+// Collective. Newton at path point `target` from `start` into `trial`; whether it
+// converged to a stable equilibrium (negative tangent pivots: unstable, rejected), with
+// its iteration count added to `report`.
+StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec start, Vec trial,
+                                            StaticReport& report) {
+  Impl& s = *impl_;
+  s.set_path(target);
+  // Converged when |f| ≤ atol + kRoundoffFraction·(norm of the unassembled element
+  // forces), or |f| fell by rtol within the step, or the Newton update is below
+  // kNewtonStepTolerance·|q|. Element forces are large where they cancel at nodes
+  // (tension): a scale from external loads alone would ask for more than round-off
+  // allows. Where stiffness is large and forces small (a stiff cantilever under a small
+  // load) the residual's round-off floor is stiffness × size × ε and only the update
+  // criterion can see convergence.
+  const double scale = s.system.element_force_norm({start, nullptr, s.path});
+  CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.base_atol + kRoundoffFraction * scale, s.base_rtol,
+                                 s.base_stol, s.base_max_it, s.base_max_f));
+  CATENA_PETSC(VecCopy(start, trial));
+  s.n_jacobians = 0;
+  const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, trial);
+  s.guard.rethrow_if_any();
+  CATENA_PETSC(ierr);
+
+  SNESConvergedReason reason;
+  PetscInt its = 0;
+  CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
+  CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
+  report.n_newton_iterations += static_cast<int>(its);
+  KSP ksp = nullptr;
+  CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
+  if (s.n_jacobians > 0) {
+    const MumpsStatus newton = mumps_status(ksp);
+    if (newton.infog1 < 0 && newton.infog1 != -10)
+      throw NumericalError(
+          "static solve: MUMPS failed with INFOG(1) = " + std::to_string(newton.infog1) +
+          ", INFOG(2) = " + std::to_string(newton.infog2) + " at " +
+          describe_path(target, tau_end));
+  }
+
+  // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
+  // cable's inverted arch, a column beyond buckling), whose tangent has negative
+  // eigenvalues. The tangent is factored at the converged state itself.
+  Attempt result{reason > 0, static_cast<int>(its)};
+  if (result.accepted) {
+    const MumpsStatus tangent = s.tangent_status(trial);
+    check_factorisation(tangent, describe_path(target, tau_end));
+    if (tangent.negative_pivots > 0) {
+      result.accepted = false;
+      ++report.n_unstable_rejections;
+    } else if (tangent.null_pivots > 0 && target >= tau_end) {
+      // Neutral directions are normal before the loads are on (an unloaded pendulum);
+      // at full load they mean a mechanism.
+      throw NumericalError(
+          "static solve: the stiffness matrix at the equilibrium is singular (" +
+          std::to_string(tangent.null_pivots) +
+          " null pivots): the structure is a mechanism. Check the supports (a cable or "
+          "bar held at one end only can swing; a beam needs its rotations held "
+          "somewhere) and that every node is connected to a supported part.");
+    }
+  }
+  return result;
+}
+
+StaticReport StaticSolver::solve(Vec q, Vec guess) {
   Impl& s = *impl_;
   StaticReport report;
   VecHandle q_trial;
@@ -150,67 +213,33 @@ StaticReport StaticSolver::solve(Vec q) {
   double step = initial_step;
   double last_attempt = 0.0;
   int attempts = 0;  // steps that needed Newton iterations, or were rejected
+  if (guess != nullptr) {
+    // The whole load at once from the guess; if Newton does not reach a stable
+    // equilibrium from there, the path from q as if there had been none.
+    last_attempt = tau_end;
+    const Attempt from_guess = attempt(tau_end, tau_end, guess, q_trial.get(), report);
+    report.guess = from_guess.accepted ? GuessOutcome::accepted : GuessOutcome::rejected;
+    if (from_guess.accepted) {
+      CATENA_PETSC(VecCopy(q_trial.get(), q));
+      tau = tau_end;
+      ++report.n_load_steps;
+    } else {
+      ++report.n_rejected_steps;
+    }
+    ++attempts;
+    if (s.progress)
+      s.progress({describe_path(tau, tau_end) + (from_guess.accepted ? " from the guess" : ""),
+                  report.n_load_steps, report.n_rejected_steps, report.n_newton_iterations});
+  }
   while (tau < tau_end) {
     if (attempts >= s.options.max_load_steps) break;
     // Never step across a phase boundary (integer τ), where the path changes what it ramps.
     const double phase_end = std::floor(tau) + 1.0;
     const double target = std::min({phase_end, tau + step, tau_end});
     last_attempt = target;
-    s.set_path(target);
-    // Converged when |f| ≤ atol + kRoundoffFraction·(norm of the unassembled element
-    // forces), or |f| fell by rtol within the step, or the Newton update is below
-    // kNewtonStepTolerance·|q|. Element forces are large where they cancel at nodes
-    // (tension): a scale from external loads alone would ask for more than round-off
-    // allows. Where stiffness is large and forces small (a stiff cantilever under a small
-    // load) the residual's round-off floor is stiffness × size × ε and only the update
-    // criterion can see convergence.
-    const double scale = s.system.element_force_norm({q, nullptr, s.path});
-    CATENA_PETSC(SNESSetTolerances(s.snes.get(), s.base_atol + kRoundoffFraction * scale,
-                                   s.base_rtol, s.base_stol, s.base_max_it, s.base_max_f));
-    CATENA_PETSC(VecCopy(q, q_trial.get()));
-    s.n_jacobians = 0;
-    const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, q_trial.get());
-    s.guard.rethrow_if_any();
-    CATENA_PETSC(ierr);
-
-    SNESConvergedReason reason;
-    PetscInt its = 0;
-    CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
-    CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
-    report.n_newton_iterations += static_cast<int>(its);
-    KSP ksp = nullptr;
-    CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
-    if (s.n_jacobians > 0) {
-      const MumpsStatus newton = mumps_status(ksp);
-      if (newton.infog1 < 0 && newton.infog1 != -10)
-        throw NumericalError(
-            "static solve: MUMPS failed with INFOG(1) = " + std::to_string(newton.infog1) +
-            ", INFOG(2) = " + std::to_string(newton.infog2) + " at " +
-            describe_path(target, tau_end));
-    }
-
-    // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
-    // cable's inverted arch, a column beyond buckling), whose tangent has negative
-    // eigenvalues. The tangent is factored at the converged state itself.
-    bool accept = reason > 0;
-    if (accept) {
-      const MumpsStatus tangent = s.tangent_status(q_trial.get());
-      check_factorisation(tangent, describe_path(target, tau_end));
-      if (tangent.negative_pivots > 0) {
-        accept = false;
-        ++report.n_unstable_rejections;
-      } else if (tangent.null_pivots > 0 && target >= tau_end) {
-        // Neutral directions are normal before the loads are on (an unloaded pendulum);
-        // at full load they mean a mechanism.
-        throw NumericalError(
-            "static solve: the stiffness matrix at the equilibrium is singular (" +
-            std::to_string(tangent.null_pivots) +
-            " null pivots): the structure is a mechanism. Check the supports (a cable or "
-            "bar held at one end only can swing; a beam needs its rotations held "
-            "somewhere) and that every node is connected to a supported part.");
-      }
-    }
-    if (accept) {
+    const Attempt tried = attempt(target, tau_end, q, q_trial.get(), report);
+    const int its = tried.iterations;
+    if (tried.accepted) {
       CATENA_PETSC(VecCopy(q_trial.get(), q));
       tau = target;
       ++report.n_load_steps;
@@ -229,7 +258,7 @@ StaticReport StaticSolver::solve(Vec q) {
     if (s.progress)
       s.progress({describe_path(tau, tau_end), report.n_load_steps, report.n_rejected_steps,
                   report.n_newton_iterations});
-    if (!accept && step < s.options.min_load_step) break;
+    if (!tried.accepted && step < s.options.min_load_step) break;
   }
 
   // Residual at the returned state (the last converged point of the path).

@@ -11,13 +11,21 @@ void complete(MPI_Comm comm, std::vector<double>& a) {
 }
 }  // namespace
 
-GatheredStatic solve_static(MPI_Comm comm, const model::Model& m) {
+GatheredStatic solve_static(
+    MPI_Comm comm, const model::Model& m,
+    const std::function<void(const assembly::SecondOrderSystem&, Vec)>& guess) {
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
+  VecHandle start;
+  if (guess) {
+    start = system.create_vector();
+    system.reference_state(start.get());
+    guess(system, start.get());
+  }
   solvers::StaticSolver solver(system, m.static_options);
   GatheredStatic g;
-  g.report = solver.solve(q.get());
+  g.report = solver.solve(q.get(), start.get());
   g.n_dofs = system.dof_map().n_global();
 
   const size_t n_nodes = m.nodes.size();

@@ -3,8 +3,10 @@
 // rank in model order, so tests can compare runs on different communicators.
 #include <mpi.h>
 
+#include <functional>
 #include <vector>
 
+#include "catena/assembly/second_order_system.hpp"
 #include "catena/model/model.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 
@@ -20,6 +22,10 @@ struct GatheredStatic {
   long long n_dofs = 0;
 };
 
-GatheredStatic solve_static(MPI_Comm comm, const model::Model& m);
+// Collective. From the reference along the load path; with `guess` (a function that sets a
+// starting state in q, e.g. solvers::set_guess) Newton first tries the whole load from it.
+GatheredStatic solve_static(
+    MPI_Comm comm, const model::Model& m,
+    const std::function<void(const assembly::SecondOrderSystem&, Vec)>& guess = {});
 
 }  // namespace catena::test

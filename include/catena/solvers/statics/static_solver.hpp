@@ -19,6 +19,9 @@
 
 namespace catena::solvers {
 
+// What became of a starting guess (StaticSolver::solve's `guess`).
+enum class GuessOutcome { none, accepted, rejected };
+
 struct StaticReport {
   double load_factor = 0.0;  // reached (1 on success)
   int n_load_steps = 0;      // accepted
@@ -26,6 +29,7 @@ struct StaticReport {
   int n_unstable_rejections = 0;  // rejected because the equilibrium was unstable
   int n_newton_iterations = 0;    // over all attempts
   double residual_norm = 0.0;     // 2-norm of f at the returned state, N
+  GuessOutcome guess = GuessOutcome::none;
 };
 
 // Where a static solve is, after a load-step attempt (for progress output).
@@ -47,13 +51,20 @@ class StaticSolver {
   // Collective. On entry q is the initial guess at λ = 0 (normally the reference state);
   // on return the equilibrium at λ = 1. Throws NumericalError naming the load level, the
   // residual norm and the node with the largest residual when load stepping gives up, or
-  // when the stiffness matrix is singular (an under-supported structure).
-  StaticReport solve(Vec q);
+  // when the stiffness matrix is singular (an under-supported structure). With `guess`
+  // (a state near the equilibrium, e.g. hanging_cable_guess.hpp) Newton first tries the
+  // whole load from it; only if that fails or ends unstable does the path start from q.
+  StaticReport solve(Vec q, Vec guess = nullptr);
 
   // Not collective. Called on every rank after each load-step attempt of solve().
   void on_progress(std::function<void(const StaticProgress&)> callback);
 
  private:
+  struct Attempt {
+    bool accepted = false;  // converged to a stable equilibrium
+    int iterations = 0;
+  };
+  Attempt attempt(double target, double tau_end, Vec start, Vec trial, StaticReport& report);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
