@@ -2,7 +2,7 @@
 """The /catenary group of a result file against the file's own mesh and solution
 (docs/output.md, "Catenary").
 
-Usage: check_catenary_layout.py RUN.h5 DROPPER_STIFFNESS N_STITCH_WIRES
+Usage: check_catenary_layout.py RUN.h5 DROPPER_STIFFNESS N_STITCH_WIRES [MU_C MU_M]
 
 Checks, for a scene built by the catenary builder with bar droppers of the given
 stiffness EA/l0 (N/m):
@@ -12,7 +12,13 @@ stiffness EA/l0 (N/m):
 * each support's contact-wire and messenger nodes lie at its x;
 * in a static result, the contact wire rests at each dropper's design height (within the
   1 mm the shape-finding tests allow) and each dropper's unstretched length is its static
-  length less its stretch N/k, N its axial force in /static/axial_force (to 1e-9 m).
+  length less its stretch N/k, N its axial force in /static/axial_force (to 1e-9 m);
+* in a static result with the wires' masses per length MU_C and MU_M (kg/m; a scene
+  without clamp or dropper masses), each wire's section resultants balance every dropper:
+  between the mid-points of the two wire elements at a dropper, the section forces
+  N t + Q (/static/axial_force along the mid-point tangent, /static/shear_force), the
+  dropper's pull and the wire's weight sum to zero within 0.05 N. Without the shear the
+  sum is off by several newtons (the tangent wire's bending at the dropper's kink).
 """
 import sys
 
@@ -30,7 +36,11 @@ with h5py.File(path, "r") as f:
     static = "static" in f
     if static:
         positions = f["static/positions"][:]
+        slopes = f["static/slopes"][:]
         axial_force = f["static/axial_force"][:]
+        shear_force = f["static/shear_force"][:]
+        element_set = f["mesh/element_set"][:]
+        set_names = list(f["mesh/element_set"].attrs["set_names"])
 
 row_of_node = {int(i): r for r, i in enumerate(node_ids)}
 row_of_element = {int(i): r for r, i in enumerate(element_ids)}
@@ -71,3 +81,36 @@ if static:
           f"largest |l0 - (L - N/k)| {worst_length:.2e} m")
     assert worst_height < 1e-3, worst_height
     assert worst_length < 1e-9, worst_length
+
+if static and len(sys.argv) > 5:
+    g = 9.81
+    for wire, mu, key, other in (("contact_wire", float(sys.argv[4]), "contact_node_id",
+                                  "upper_node_id"),
+                                 ("messenger", float(sys.argv[5]), "upper_node_id",
+                                  "contact_node_id")):
+        in_set = element_set == set_names.index(wire)
+        left = {int(b): e for e, (a, b) in enumerate(element_nodes) if in_set[e]}
+        right = {int(a): e for e, (a, b) in enumerate(element_nodes) if in_set[e]}
+
+        def section(e):
+            """The section force at element e's mid-point (axial along the cubic's tangent)
+            without and with the shear, and the element's reference length."""
+            a, b = element_nodes[e]
+            length = np.linalg.norm(x0[b] - x0[a])
+            tangent = 1.5 * (positions[b] - positions[a]) / length - 0.25 * (slopes[a] + slopes[b])
+            axial = axial_force[e] * tangent / np.linalg.norm(tangent)
+            return axial, axial + shear_force[e], length
+
+        worst = worst_without_shear = 0.0
+        for k in range(n):
+            node = row_of_node[int(d[key][k])]
+            pull = positions[row_of_node[int(d[other][k])]] - positions[node]
+            pull *= axial_force[row_of_element[int(d["element_id"][k])]] / np.linalg.norm(pull)
+            n_l, s_l, h_l = section(left[node])
+            n_r, s_r, h_r = section(right[node])
+            weight = np.array([0.0, 0.0, -mu * g * (h_l + h_r) / 2])
+            worst = max(worst, np.abs(s_r - s_l + pull + weight).max())
+            worst_without_shear = max(worst_without_shear, np.abs(n_r - n_l + pull + weight).max())
+        print(f"{wire}: section forces balance every dropper to {worst:.2e} N "
+              f"({worst_without_shear:.2f} N without the shear)")
+        assert worst < 0.05, worst
