@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   g++ make cmake pkg-config
-  petsc-dev libopenmpi-dev openmpi-bin openssh-client libmetis-dev libhdf5-openmpi-dev
+  petsc-dev slepc-dev libopenmpi-dev openmpi-bin openssh-client libmetis-dev libhdf5-openmpi-dev
   libgtest-dev libyaml-cpp-dev libeigen3-dev
   python3 python3-h5py python3-numpy python3-matplotlib
 )

@@ -44,6 +44,16 @@ void StateView::section_results(const EvalPoint& p, std::vector<int>& element_in
 
 void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
                                   std::vector<double>& slopes) const {
+  gather_owned_nodes(q_global, positions, slopes, true);
+}
+
+void StateView::owned_node_changes(Vec dq, std::vector<double>& positions,
+                                   std::vector<double>& slopes) const {
+  gather_owned_nodes(dq, positions, slopes, false);
+}
+
+void StateView::gather_owned_nodes(Vec q_global, std::vector<double>& positions,
+                                   std::vector<double>& slopes, bool fixed_at_reference) const {
   const SecondOrderSystem& sys = system_;
   sys.scatter_to_local(q_global, sys.q_work_.get());
   const LocalArrayRead q(sys.q_work_.get());
@@ -52,8 +62,8 @@ void StateView::owned_node_values(Vec q_global, std::vector<double>& positions,
   for (int n : sys.dofs_.owned_nodes()) {
     auto value = [&](int k) {
       const PetscInt l = sys.dofs_.local_dof(n, k);
-      return l >= 0 ? sys.dofs_.coefficient(n, k) * q.data()[l]
-                    : sys.node_reference_[kBlock * n + k];
+      if (l >= 0) return sys.dofs_.coefficient(n, k) * q.data()[l];
+      return fixed_at_reference ? sys.node_reference_[kBlock * n + k] : 0.0;
     };
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
     for (int d = 0; d < 3; ++d)

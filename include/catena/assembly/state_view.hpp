@@ -41,6 +41,10 @@ class StateView {
   // Collective. Full nodal values (fixed DOFs included) of owned nodes: positions and
   // slopes (∂r/∂x, zero where a node has none), 3 each.
   void owned_node_values(Vec q, std::vector<double>& positions, std::vector<double>& slopes) const;
+  // Collective. The same for a change of state dq (a mode shape, a velocity): the fixed
+  // DOFs do not change, so they read 0 instead of their reference values.
+  void owned_node_changes(Vec dq, std::vector<double>& positions,
+                          std::vector<double>& slopes) const;
   // Collective. Support reactions at owned supported nodes.
   Reactions reactions(const EvalPoint& p) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
@@ -60,6 +64,8 @@ class StateView {
                           const std::vector<double>& multipliers) const;
 
  private:
+  void gather_owned_nodes(Vec q, std::vector<double>& positions, std::vector<double>& slopes,
+                          bool fixed_at_reference) const;
   const SecondOrderSystem& system_;
 };
 

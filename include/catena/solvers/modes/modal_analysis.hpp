@@ -1,0 +1,38 @@
+#pragma once
+// Undamped vibration modes about a state (normally the static equilibrium): the
+// generalised eigenproblem K φ = ω² M φ with K = ∂f/∂q the tangent stiffness there (its
+// stress stiffening included, so a tensioned wire's modes are the string's) and M the
+// mass matrix, both over the free DOFs (supports eliminated). Solved by SLEPc's
+// Krylov–Schur with shift-and-invert about 0 and a MUMPS LDLᵀ factorisation of K, so the
+// lowest modes converge first; every solve's status is checked.
+//
+// Options database prefix: -modes_ (e.g. -modes_eps_monitor, -modes_eps_tol 1e-12,
+// -modes_st_ksp_type); set last, so the command line wins.
+#include <petscvec.h>
+
+#include <vector>
+
+#include "catena/assembly/petsc_handle.hpp"
+#include "catena/assembly/second_order_system.hpp"
+
+namespace catena::solvers {
+
+struct ModalOptions {
+  int count = 20;            // modes wanted, lowest first
+  double tolerance = 1e-10;  // relative residual of each eigenpair
+};
+
+struct Modes {
+  std::vector<double> frequency;  // Hz, ascending
+  // Shapes over the system's unknowns, normalised to unit modal mass (φᵀ M φ = 1 kg).
+  std::vector<VecHandle> shape;
+  std::vector<double> residual;  // |K φ − ω² M φ| / (ω² |M φ|), per mode
+  int n_iterations = 0;          // Krylov–Schur restarts
+};
+
+// Collective. The `options.count` lowest modes about q (no multipliers: a model with
+// constraints is refused with a message). Throws NumericalError when K cannot be factored
+// (a mechanism or an unstable state) or fewer modes converge than asked for.
+Modes compute_modes(assembly::SecondOrderSystem& system, Vec q, const ModalOptions& options);
+
+}  // namespace catena::solvers
