@@ -10,7 +10,8 @@ namespace catena::app {
 namespace {
 // run, check, stats or elasticity.
 bool is_command(const std::string& name) {
-  return name == "run" || name == "check" || name == "stats" || name == "elasticity";
+  return name == "run" || name == "check" || name == "stats" || name == "elasticity" ||
+         name == "modes";
 }
 
 bool is_scene_path(const std::string& token) {
@@ -164,8 +165,8 @@ CommandLine parse_command_line(int argc, char** argv) {
     if (args.size() > 1 && args[1] != "--help" && args[1] != "-h") {
       cl.help_topic = args[1];
       if (!is_command(cl.help_topic))
-        throw InputError({"", 0, "help"},
-                         "no command '" + args[1] + "'; accepted: run, check, stats, elasticity");
+        throw InputError({"", 0, "help"}, "no command '" + args[1] +
+                                              "'; accepted: run, check, stats, elasticity, modes");
     }
     return cl;
   }
@@ -179,8 +180,9 @@ CommandLine parse_command_line(int argc, char** argv) {
     return cl;
   }
   if (!is_command(cl.command))
-    throw InputError({"", 0, "command"}, "unknown command '" + cl.command +
-                                             "'; accepted: run, check, stats, elasticity, --help");
+    throw InputError({"", 0, "command"},
+                     "unknown command '" + cl.command +
+                         "'; accepted: run, check, stats, elasticity, modes, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {
@@ -194,6 +196,14 @@ CommandLine parse_command_line(int argc, char** argv) {
       return cl;
     } else if (cl.command == "elasticity" && parse_elasticity_option(args, i, cl.elasticity)) {
       continue;
+    } else if (cl.command == "modes" && a == "--count") {
+      cl.modes.count = parse_integer(value("--count"), "--count", "a number of modes, >= 1");
+      if (cl.modes.count < 1)
+        throw InputError({"", 0, "--count"},
+                         "--count " + args[i] + ": accepted: a number of modes, >= 1");
+    } else if (cl.command == "modes" && a == "--restart") {
+      throw InputError({"", 0, "--restart"},
+                       "'--restart' continues a dynamic run; modes are computed in one go");
     } else if (a == "--set") {
       cl.overrides.push_back(value("--set"));
     } else if (a.rfind("--set=", 0) == 0) {

@@ -24,8 +24,13 @@ struct ElasticityArguments {
   bool json = false;        // --json: JSON instead of the table
 };
 
+// `catena modes SCENE [--set k=v ...] [--count N] [-o FILE]`.
+struct ModesArguments {
+  int count = 20;  // --count N: the lowest N modes
+};
+
 struct CommandLine {
-  std::string command;                 // run | check | stats | elasticity | help | version
+  std::string command;                 // run | check | stats | elasticity | modes | help | version
   std::string help_topic;              // help: the command asked about ("" = all)
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
@@ -42,13 +47,14 @@ struct CommandLine {
   std::string joined;                      // the whole command line, for the output file
   StatsArguments stats;                    // command "stats" only
   ElasticityArguments elasticity;          // command "elasticity" only
+  ModesArguments modes;                    // command "modes" only
 };
 
 // Throws catena::InputError for malformed arguments.
 CommandLine parse_command_line(int argc, char** argv);
 
 // Not collective. The help text: of every command when `command` is empty, else of that
-// one (run, check, stats, elasticity).
+// one (run, check, stats, elasticity, modes).
 std::string usage(const std::string& command = "");
 
 }  // namespace catena::app

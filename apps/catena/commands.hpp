@@ -16,6 +16,9 @@ void command_stats(MPI_Comm comm, const CommandLine& cl);
 // Collective; rank 0 prints. `catena elasticity`: the static elasticity curve of one span
 // of a catenary scene (command_elasticity.cpp).
 void command_elasticity(MPI_Comm comm, const CommandLine& cl);
+// Collective; rank 0 prints. `catena modes`: the lowest vibration modes about the static
+// equilibrium, written to an HDF5/XDMF pair (command_modes.cpp).
+void command_modes(MPI_Comm comm, const CommandLine& cl);
 // Collective. The dynamic analysis of command_run.
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
 

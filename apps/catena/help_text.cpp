@@ -66,6 +66,19 @@ const CommandHelp* commands() {
                         at the cutoff; the sampling rate must be >= 10 x the cutoff)
 )",
        false},
+      {"modes",
+       R"(  catena modes SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--count N] [PETSc options]
+)",
+       R"(  modes   the lowest vibration modes about the scene's static equilibrium (frequencies,
+          mass-normalised shapes) into OUT.h5 + OUT.xmf (ParaView: one step per mode)
+)",
+       std::string(R"(Options of modes:
+  -o, --output FILE     output file (default: the scene's output.file with _modes before
+                        .h5)
+  --count N             the N lowest modes (default 20)
+)") + kSetOption +
+           kMemoryOption,
+       true},
       {"elasticity",
        R"(  catena elasticity SCENE.yaml [--set KEY=VALUE ...] [--span N] [--step DX] [--force F]
                     [--json] [PETSc options]

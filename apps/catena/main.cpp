@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
         catena::app::command_stats(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "elasticity") {
         catena::app::command_elasticity(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "modes") {
+        catena::app::command_modes(PETSC_COMM_WORLD, cl);
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }
