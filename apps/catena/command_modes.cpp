@@ -16,15 +16,14 @@
 #include "catena/core/version.hpp"
 #include "catena/io/modes_result.hpp"
 #include "catena/solvers/modes/modal_analysis.hpp"
-#include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
 #include "log_stage.hpp"
 #include "output_preflight.hpp"
-#include "progress_lines.hpp"
 #include "run_info.hpp"
 #include "scene_loading.hpp"
 #include "shape_report.hpp"
+#include "static_phase.hpp"
 
 namespace catena::app {
 namespace {
@@ -56,13 +55,7 @@ void command_modes(MPI_Comm comm, const CommandLine& cl) {
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
-  solvers::StaticSolver statics(system, m.static_options);
-  statics.on_progress(static_progress_lines(rank, cl.progress_seconds));
-  const solvers::StaticReport equilibrium = [&] {
-    const LogStage stage("Statics");
-    const VecHandle guess = solvers::hanging_cable_start(system);
-    return statics.solve(q.get(), guess.get());
-  }();
+  const solvers::StaticReport equilibrium = solve_statics(system, q.get(), cl);
   if (rank == 0) {
     std::printf("static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
                 equilibrium.n_load_steps, equilibrium.n_newton_iterations,

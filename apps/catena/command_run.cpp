@@ -22,6 +22,7 @@
 #include "run_info.hpp"
 #include "scene_loading.hpp"
 #include "shape_report.hpp"
+#include "static_phase.hpp"
 
 namespace catena::app {
 namespace {
@@ -124,13 +125,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
-  solvers::StaticSolver solver(system, m.static_options);
-  solver.on_progress(static_progress_lines(rank, cl.progress_seconds));
-  const solvers::StaticReport report = [&] {
-    const LogStage stage("Statics");
-    const VecHandle guess = solvers::hanging_cable_start(system);
-    return solver.solve(q.get(), guess.get());
-  }();
+  const solvers::StaticReport report = solve_statics(system, q.get(), cl);
   const double seconds = MPI_Wtime() - start;
 
   const io::StaticResult result = collect_result(system, q.get(), report);

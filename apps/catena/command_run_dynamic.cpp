@@ -40,6 +40,7 @@
 #include "resume_checkpoint.hpp"
 #include "run_info.hpp"
 #include "shape_report.hpp"
+#include "static_phase.hpp"
 #include "stop_signal.hpp"
 #include "test_hooks.hpp"
 #include "wall_clock_schedule.hpp"
@@ -302,6 +303,37 @@ OutputError output_failure(const OutputError& failure, bool failed_closing,
   return OutputError(message + checkpoint.str());
 }
 
+// Collective. The static equilibrium a dynamic run starts from (or linearises about), into
+// q (the reference state on entry), with its summary line.
+void solve_initial_statics(assembly::SecondOrderSystem& system, Vec q, const CommandLine& cl,
+                           int rank) {
+  const solvers::StaticReport report = solve_statics(system, q, cl);
+  if (rank != 0) return;
+  std::printf("initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
+              report.n_load_steps, report.n_newton_iterations, report.residual_norm);
+  if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())
+    std::printf("%s\n", guess.c_str());
+}
+
+// Collective. analysis.structure: linear — every cable and beam element except the
+// tension-only ones (cable droppers, which must still go slack) linearised about q0.
+void linearize_structure(assembly::SecondOrderSystem& system, Vec q0, int rank) {
+  const model::Model& m = system.model();
+  const auto linear = [&](int e) {
+    const model::ElementProps& props = m.elements[static_cast<std::size_t>(e)].props;
+    if (const auto* cable = std::get_if<model::CableProps>(&props)) return !cable->tension_only;
+    return std::holds_alternative<model::BeamProps>(props);
+  };
+  int n = system.linearize_elements(q0, linear);
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT, MPI_SUM, system.comm());
+  if (rank == 0)
+    std::printf(
+        "structure: linear about the static equilibrium: %d cable and beam elements linearised "
+        "(constant stiffness and damping); bars, springs, masses, tension-only cables and "
+        "contacts as they are\n",
+        n);
+}
+
 }  // namespace
 
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
@@ -344,6 +376,14 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
               " s is not beyond the checkpoint's t = " + std::to_string(resumed->facts.time) +
               " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
               std::to_string(2 * resumed->facts.time));
+    if (dyn.linear_structure) {
+      // The linearisation point is the static equilibrium, which the checkpoint does not
+      // hold: solved again (the same scene gives the same equilibrium).
+      VecHandle q0 = system.create_vector();
+      system.reference_state(q0.get());
+      solve_initial_statics(system, q0.get(), cl, rank);
+      linearize_structure(system, q0.get(), rank);
+    }
     VecHandle a = system.create_vector();
     const std::vector<double> no_multipliers(
         model::kMultipliersPerConstraint * m.constraints.size(), 0.0);
@@ -365,20 +405,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     if (rank == 0) print_restart_exactness(*resumed, *integrator, mpi_size(comm));
   } else {
     if (dyn.initial.from_static) {
-      solvers::StaticSolver statics(system, m.static_options);
-      statics.on_progress(static_progress_lines(rank, cl.progress_seconds));
-      const solvers::StaticReport report = [&] {
-        const LogStage stage("Statics");
-        const VecHandle guess = solvers::hanging_cable_start(system);
-        return statics.solve(q.get(), guess.get());
-      }();
-      if (rank == 0) {
-        std::printf(
-            "initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
-            report.n_load_steps, report.n_newton_iterations, report.residual_norm);
-        if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())
-          std::printf("%s\n", guess.c_str());
-      }
+      solve_initial_statics(system, q.get(), cl, rank);
+      if (dyn.linear_structure) linearize_structure(system, q.get(), rank);
     }
     apply_initial_conditions(system, q.get(), v.get());
     integrator->set_state(0.0, q.get(), v.get(), nullptr);

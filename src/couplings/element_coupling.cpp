@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "catena/elements/linearized.hpp"
+
 namespace catena::couplings {
 
 namespace {
@@ -78,6 +80,10 @@ void ElementCoupling::evaluate(const CouplingState& s, double* f, std::span<cons
     if (r.c.c_M != 0.0)
       for (size_t i = 0; i < nn; ++i) r.out[i] += r.c.c_M * M[i];
   }
+}
+
+void ElementCoupling::linearize_about(std::span<const double> q0) {
+  element_ = std::make_unique<elements::Linearized>(std::move(element_), q0);
 }
 
 }  // namespace catena::couplings

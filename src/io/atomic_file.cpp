@@ -87,4 +87,18 @@ TemporaryFile::~TemporaryFile() {
     std::filesystem::remove(path_, ignored);
 }
 
+void publish_with_xdmf(TemporaryFile& hdf5, const std::filesystem::path& hdf5_path,
+                       TemporaryFile& xdmf, const std::filesystem::path& xdmf_path) {
+  rename_into_place(hdf5.path(), hdf5_path);
+  hdf5.release();
+  try {
+    rename_into_place(xdmf.path(), xdmf_path);
+  } catch (const Error& error) {
+    throw Error(std::string(error.what()) + "; the HDF5 file was written, its XDMF was not");
+  }
+  xdmf.release();
+  // The renames are directory entries: durable once the directory is synced.
+  fsync_path(hdf5_path.has_parent_path() ? hdf5_path.parent_path() : std::filesystem::path("."));
+}
+
 }  // namespace catena::io

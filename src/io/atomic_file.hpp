@@ -42,4 +42,12 @@ class TemporaryFile {
   bool released_ = false;
 };
 
+// Not collective (the rank that owns the temporaries). Renames a written HDF5 result and
+// then its XDMF description into place and syncs their directory, releasing both
+// temporaries. HDF5 first: it is the result. Two renames cannot be one atomic step; if the
+// second fails (both names were checked up front, so only a system fault can do it), the
+// HDF5 file is complete and the error says the XDMF is missing.
+void publish_with_xdmf(TemporaryFile& hdf5, const std::filesystem::path& hdf5_path,
+                       TemporaryFile& xdmf, const std::filesystem::path& xdmf_path);
+
 }  // namespace catena::io

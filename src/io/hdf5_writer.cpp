@@ -372,19 +372,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
   });
   run_collective_phase(comm, [&] {
     if (!is_root) return;
-    // HDF5 first: it is the result. Two renames cannot be one atomic step; if the second
-    // failed (both names were checked up front, so only a system fault can do it), `path`
-    // still holds a complete file, and the error says which half is missing.
-    rename_into_place(hdf5_temporary->path(), path);
-    hdf5_temporary->release();
-    try {
-      rename_into_place(xdmf_temporary->path(), xdmf_path);
-    } catch (const Error& error) {
-      throw Error(std::string(error.what()) + "; the HDF5 file was written, its XDMF was not");
-    }
-    xdmf_temporary->release();
-    // The renames are directory entries: durable once the directory is synced.
-    fsync_path(path.has_parent_path() ? path.parent_path() : fs::path("."));
+    publish_with_xdmf(*hdf5_temporary, path, *xdmf_temporary, xdmf_path);
   });
 }
 

@@ -136,11 +136,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     write_file_durably(xdmf_temporary->path(),
                        modes_xdmf(path.filename().string(), n_nodes,
                                   static_cast<std::int64_t>(model.elements.size()), r.frequency));
-    rename_into_place(h5_temporary->path(), path);
-    h5_temporary->release();
-    rename_into_place(xdmf_temporary->path(), xdmf);
-    xdmf_temporary->release();
-    fsync_path(path.has_parent_path() ? path.parent_path() : fs::path("."));
+    publish_with_xdmf(*h5_temporary, path, *xdmf_temporary, xdmf);
   });
 }
 

@@ -54,8 +54,8 @@ void read_newton(const Field& newton, StaticOptions& options) {
 AnalysisType read_analysis(const Field& analysis, StaticOptions& options) {
   if (!analysis.present()) return AnalysisType::static_equilibrium;
   analysis.expect_map("analysis settings {type, duration, initial, load_steps, newton}");
-  analysis.check_keys(
-      {"type", "duration", "initial", "load_steps", "newton", "elastic_catenary_guess"});
+  analysis.check_keys({"type", "duration", "initial", "load_steps", "newton",
+                       "elastic_catenary_guess", "structure"});
   const AnalysisType type = read_analysis_type(analysis.child("type"));
   options.elastic_catenary_guess =
       analysis.child("elastic_catenary_guess").boolean_or(options.elastic_catenary_guess);

@@ -187,6 +187,22 @@ void read_initial(const Field& initial, Model& model) {
   for (auto& [node, offset] : offsets) ic.offsets.push_back(offset);
 }
 
+// `structure`: nonlinear (default) or linear about the initial static equilibrium, which
+// must then exist (initial.from: static).
+void read_structure(const Field& structure, Model& model) {
+  static const std::vector<std::string> choices{"nonlinear", "linear"};
+  const std::string name = structure.text_or("nonlinear");
+  if (std::find(choices.begin(), choices.end(), name) == choices.end())
+    structure.fail("unknown structure '" + name +
+                   "'; accepted: nonlinear (the default), linear "
+                   "(cables and beams linearised about the initial static equilibrium)");
+  model.dynamic_options.linear_structure = name == "linear";
+  if (model.dynamic_options.linear_structure && !model.dynamic_options.initial.from_static)
+    structure.fail(
+        "a linear structure is linearised about the static equilibrium, so it starts there: "
+        "set analysis.initial.from: static (or leave 'from' out), not reference");
+}
+
 // A fixed step longer than the run would be one step over the whole duration, with
 // the step's end clamped to it: almost certainly a unit slip (dt in ms?). An adaptive
 // run's dt is only its first step; the driver cuts that to the duration (the app notes it).
@@ -211,6 +227,8 @@ void read_dynamics(const Field& scene, Model& model) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);
     fail_if_present(analysis.child("initial"), "'initial'" + why);
+    fail_if_present(analysis.child("structure"),
+                    "'structure'" + why + " (statics solves the nonlinear equilibrium)");
     fail_if_present(scene.child("integrator"),
                     "integrator settings apply to analysis.type: dynamic");
     for (const char* key : {"interval", "flush_wall_seconds", "checkpoint_wall_seconds"})
@@ -220,6 +238,7 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
+  read_structure(analysis.child("structure"), model);
   read_integrator(scene.child("integrator"), model.constraints.size(),
                   model.dynamic_options.integrator);
   check_step_within_duration(scene.child("integrator").child("dt"), duration,

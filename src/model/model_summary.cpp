@@ -213,6 +213,13 @@ std::string describe(const Model& model, int n_ranks_running) {
     t.row("dynamics", text);
     t.row("initial state", model.dynamic_options.initial.from_static ? "static equilibrium (below)"
                                                                      : "reference configuration");
+    t.row("structure",
+          model.dynamic_options.linear_structure
+              ? "linear: cables and beams linearised about the initial static equilibrium "
+                "(constant stiffness and damping; large motions and the stiffness the "
+                "tension changes with them left out); bars, springs, masses, tension-only "
+                "cables and contacts nonlinear"
+              : "nonlinear (analysis.structure: linear linearises the cables and beams)");
   }
   t.row("analysis", std::string(model.analysis == AnalysisType::dynamic ? "initial " : "") +
                         "static; load steps initial " + format_number(s.initial_load_step) +

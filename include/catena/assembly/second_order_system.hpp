@@ -22,6 +22,7 @@
 #include <mpi.h>
 #include <petscmat.h>
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -116,6 +117,12 @@ class SecondOrderSystem {
   // Collective. ∂²u/∂t² of the prescribed motions at t in the multiplier slots (0 in the
   // others): with G constant, the acceleration-level constraint is G a = that.
   void constraint_acceleration(double t, Vec out) const;
+
+  // Collective. Replaces the element kernel of every model element for which
+  // `linearize(element index)` is true by its linearisation about q0 (elements/
+  // linearized.hpp): from then on its force is f0 + K0 Δq + C0 v and its matrices are
+  // constant. Returns how many elements this rank linearised.
+  int linearize_elements(Vec q0, const std::function<bool(int)>& linearize);
 
   // True if the static load path needs its second phase (some cable's prestrain is below
   // the path's tensioning prestrain, see elements::LocalState).

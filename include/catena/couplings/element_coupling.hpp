@@ -26,6 +26,9 @@ class ElementCoupling final : public Coupling {
   PatchRole patch_role() const override { return PatchRole::kernel; }
 
   const elements::Element& element() const { return *element_; }
+  // Not collective. From now on the element linearised about its local state q0
+  // (elements/linearized.hpp): constant stiffness and damping, force f0 + K0 Δq + C0 v.
+  void linearize_about(std::span<const double> q0);
   const std::vector<int>& nodes() const { return nodes_; }
   ElementOrigin origin() const { return origin_; }
   int source() const { return source_; }

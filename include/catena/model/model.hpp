@@ -203,6 +203,10 @@ struct MovingContact {
 
 struct DynamicOptions {
   double duration = 0.0;  // s, > 0
+  // analysis.structure: linear: cables and beams (not tension-only ones) linearised about
+  // the initial static equilibrium (elements/linearized.hpp); bars, springs, masses,
+  // constraints, loads and contacts stay as they are.
+  bool linear_structure = false;
   IntegratorOptions integrator;
   InitialConditions initial;
 };
