@@ -8,7 +8,8 @@
 #     HHT on meshes/pantograph_wire.yaml (moving contact, local Newton), np 1 and np 2;
 #     Radau IIA s = 3 on meshes/taut_string.yaml, np 1 and np 2;
 #     adaptive steps (embedded estimates): Radau IIA on the taut string and HHT on the
-#     pantograph, np 1; step doubling (HHT on the pantograph), np 2.
+#     pantograph, np 1; step doubling (HHT on the pantograph), np 2; a linear structure
+#     (HHT on the pantograph, np 2).
 #  B. A crash: checkpoints every 7 steps, SIGKILL after 40 (HHT on the pantograph, np 2)
 #     or 19 (Radau IIA, np 1) steps, so that the last checkpoint (step 35 or 14) is not the
 #     stop point, then --restart.
@@ -99,6 +100,9 @@ case_ radau_np2 2 2 CATENA_STOP_AFTER_STEPS=13 exact "${string[@]}"
 case_ radau_adaptive_np1 1 1 CATENA_STOP_AFTER_STEPS=9 exact "${adaptive_string[@]}"
 case_ hht_adaptive_np1 1 1 CATENA_STOP_AFTER_STEPS=25 exact "${adaptive_pantograph[@]}"
 case_ hht_doubling_np2 2 2 CATENA_STOP_AFTER_STEPS=6 exact "${doubling_pantograph[@]}"
+#    A linear structure: the restart solves the equilibrium again and linearises about it.
+case_ hht_linear_np2 2 2 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}" \
+  --set analysis.structure=linear
 # B.
 case_ hht_crash_np2 2 2 "CATENA_CHECKPOINT_EVERY_STEPS=7 CATENA_KILL_AFTER_STEPS=40" exact \
   "${pantograph[@]}"
