@@ -7,6 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "catena/core/error.hpp"
+#include "catena/io/output_error.hpp"
+
 namespace catena::io {
 
 // Not collective. Whether errno `error_number` says why data could not be written to an
@@ -47,5 +50,18 @@ class Hdf5ErrorPrintingSuppressed {
   H5E_auto2_t previous_handler_ = nullptr;
   void* previous_data_ = nullptr;
 };
+
+// Collective as `write` is. Writes a result file: runs `write` with HDF5's error printing
+// off; a failure (agreed between the ranks by `write`'s phases and agreed HDF5 calls)
+// becomes an OutputError naming `path`.
+template <class Write>
+void write_result_file(const std::string& path, Write&& write) {
+  const Hdf5ErrorPrintingSuppressed quiet_hdf5;
+  try {
+    write();
+  } catch (const Error& agreed) {
+    throw OutputError("cannot write '" + path + "': " + agreed.what());
+  }
+}
 
 }  // namespace catena::io

@@ -380,13 +380,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
 
 void write_static_result(MPI_Comm comm, const std::string& path, const model::Model& model,
                          const StaticResult& result, const RunInfo& info) {
-  const Hdf5ErrorPrintingSuppressed quiet_hdf5;
-  try {
-    write_atomically(comm, fs::path(path), model, result, info);
-  } catch (const Error& agreed) {
-    // Every failure above is agreed between the ranks (phases and agreed HDF5 calls).
-    throw OutputError("cannot write '" + path + "': " + agreed.what());
-  }
+  write_result_file(path, [&] { write_atomically(comm, fs::path(path), model, result, info); });
 }
 
 }  // namespace catena::io
