@@ -1,5 +1,8 @@
 #include "catena/elements/linearized.hpp"
 
+#include <Eigen/Core>
+#include <algorithm>
+
 #include "catena/core/error.hpp"
 
 namespace catena::elements {
@@ -17,15 +20,17 @@ Linearized::Linearized(std::unique_ptr<Element> inner, std::span<const double> q
 }
 
 void Linearized::evaluate(const LocalState& s, Request r, LocalOutput out) const {
-  const std::size_t n = q0_.size();
-  if (r.force)
-    for (std::size_t i = 0; i < n; ++i) {
-      double f = f0_[i];
-      for (std::size_t j = 0; j < n; ++j) f += K0_[i * n + j] * (s.q[j] - q0_[j]);
-      if (!s.v.empty())
-        for (std::size_t j = 0; j < n; ++j) f += C0_[i * n + j] * s.v[j];
-      out.f[i] = f;
-    }
+  const auto n = static_cast<Eigen::Index>(q0_.size());
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using Vector = Eigen::VectorXd;
+  if (r.force) {
+    Eigen::Map<Vector> f(out.f, n);
+    const Eigen::Map<const Vector> q(s.q.data(), n), q0(q0_.data(), n), f0(f0_.data(), n);
+    f.noalias() = f0 + Eigen::Map<const Matrix>(K0_.data(), n, n) * (q - q0);
+    if (!s.v.empty())
+      f.noalias() +=
+          Eigen::Map<const Matrix>(C0_.data(), n, n) * Eigen::Map<const Vector>(s.v.data(), n);
+  }
   if (r.stiffness) std::copy(K0_.begin(), K0_.end(), out.K);
   if (r.damping) std::copy(C0_.begin(), C0_.end(), out.C);
 }
