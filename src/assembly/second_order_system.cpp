@@ -9,6 +9,7 @@
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/couplings/model_couplings.hpp"
+#include "catena/model/supported_nodes.hpp"
 #include "local_array.hpp"
 #include "visit_forces.hpp"
 
@@ -88,9 +89,8 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
                     &node_reference_[kBlock * n]);
 
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
-  std::vector<char> supported(model.nodes.size(), 0);  // fixed DOFs or an elastic support
-  for (const auto& s : model.supports) supported[static_cast<size_t>(s.node)] = 1;
-  for (const auto& s : model.elastic_supports) supported[static_cast<size_t>(s.node)] = 1;
+  std::vector<char> supported(model.nodes.size(), 0);
+  for (const int node : model::supported_nodes(model)) supported[static_cast<size_t>(node)] = 1;
   offset_.push_back(0);
   for (const auto& c : couplings_) {
     bool linked = false;

@@ -10,6 +10,7 @@
 #include "catena/core/mpi_comm.hpp"
 #include "catena/couplings/element_coupling.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
+#include "catena/model/supported_nodes.hpp"
 #include "local_array.hpp"
 #include "visit_forces.hpp"
 
@@ -76,12 +77,7 @@ void StateView::gather_owned_nodes(Vec q_global, std::vector<double>& positions,
 Reactions StateView::reactions(const EvalPoint& p) const {
   const SecondOrderSystem& sys = system_;
   const model::Model& m = *sys.model_;
-  // Supported nodes (any fixed DOF or an elastic support), replicated and ascending.
-  std::vector<int> supported;
-  for (const auto& s : m.supports) supported.push_back(s.node);
-  for (const auto& s : m.elastic_supports) supported.push_back(s.node);
-  std::sort(supported.begin(), supported.end());
-  supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
+  const std::vector<int> supported = model::supported_nodes(m);  // replicated, ascending
   auto slot = [&](int node) {
     return static_cast<size_t>(std::lower_bound(supported.begin(), supported.end(), node) -
                                supported.begin());

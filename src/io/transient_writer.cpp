@@ -9,6 +9,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/output_error.hpp"
+#include "catena/model/supported_nodes.hpp"
 #include "catenary_output.hpp"
 #include "collective_hdf5_call.hpp"
 #include "collective_phase.hpp"
@@ -199,7 +200,7 @@ struct TransientWriter::Impl {
         constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
                     "owned_constraints"),
         has_constraints(!m.constraints.empty()),
-        supported(supported_nodes(m)),
+        supported(model::supported_nodes(m)),
         supports(c, static_cast<std::int64_t>(supported.size()), support_rows(supported, own_nodes),
                  "owned support nodes"),
         has_supports(!supported.empty()),
@@ -207,15 +208,6 @@ struct TransientWriter::Impl {
     MPI_Comm_rank(c, &rank);
   }
 
-  // Nodes with fixed DOFs or an elastic support, ascending (as StateView::reactions).
-  static std::vector<int> supported_nodes(const model::Model& m) {
-    std::vector<int> nodes;
-    for (const auto& s : m.supports) nodes.push_back(s.node);
-    for (const auto& s : m.elastic_supports) nodes.push_back(s.node);
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    return nodes;
-  }
   // This rank's rows of `supported`: its owned nodes among them.
   static std::vector<int> support_rows(const std::vector<int>& supported,
                                        const std::vector<int>& own_nodes) {

@@ -1,0 +1,14 @@
+#pragma once
+// The nodes a model holds: any fixed DOF (Model::supports) or an elastic support. The
+// reactions (assembly/state_view.hpp), their rows in the time series (io) and the couplings
+// the system evaluates for them all index this one list.
+#include <vector>
+
+#include "catena/model/model.hpp"
+
+namespace catena::model {
+
+// Not collective. Model node indices, ascending, each once.
+std::vector<int> supported_nodes(const Model& model);
+
+}  // namespace catena::model

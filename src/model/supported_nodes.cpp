@@ -1,0 +1,16 @@
+#include "catena/model/supported_nodes.hpp"
+
+#include <algorithm>
+
+namespace catena::model {
+
+std::vector<int> supported_nodes(const Model& model) {
+  std::vector<int> nodes;
+  for (const Support& s : model.supports) nodes.push_back(s.node);
+  for (const ElasticSupport& s : model.elastic_supports) nodes.push_back(s.node);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+}  // namespace catena::model
