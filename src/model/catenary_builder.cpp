@@ -458,7 +458,8 @@ class CatenaryAssembler {
         model_.elastic_supports.push_back(
             ElasticSupport{top, Vec3(0.0, 0.0, ms.stiffness), Vec3(0.0, 0.0, ms.damping)});
     }
-    for (const auto& [node, mask] : fixed) model_.supports.push_back(Support{node, mask});
+    for (const auto& [node, mask] : fixed)
+      model_.supports.push_back(Support{node, mask, false, mask & planar});
     for (std::size_t j = 0; j < n_supports; ++j) {
       layout.contact_support_nodes.push_back(contact_node(contact_.support_nodes[j]));
       layout.messenger_support_nodes.push_back(messenger_node(messenger_.support_nodes[j]));

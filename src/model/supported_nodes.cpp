@@ -6,7 +6,8 @@ namespace catena::model {
 
 std::vector<int> supported_nodes(const Model& model) {
   std::vector<int> nodes;
-  for (const Support& s : model.supports) nodes.push_back(s.node);
+  for (const Support& s : model.supports)
+    if ((s.fixed_mask & ~s.plane_mask) != 0u || s.slope_direction) nodes.push_back(s.node);
   for (const ElasticSupport& s : model.elastic_supports) nodes.push_back(s.node);
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());

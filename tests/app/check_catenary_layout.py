@@ -10,6 +10,8 @@ stiffness EA/l0 (N/m):
   upper nodes lie at its x, the upper one above; its element is a dropper joining the two;
   it hangs from the messenger (0) or from one of the N_STITCH_WIRES stitch wires;
 * each support's contact-wire and messenger nodes lie at its x;
+* the reactions' rows (/mesh/support_nodes) are nodes at the supports, the four anchors
+  among them: a 2D line's out-of-plane hold of every node adds none;
 * in a static result, the contact wire rests at each dropper's design height (within the
   1 mm the shape-finding tests allow) and each dropper's unstretched length is its static
   length less its stretch N/k, N its axial force in /static/axial_force (to 1e-9 m);
@@ -76,6 +78,30 @@ for j in range(len(s["x"])):
         assert abs(x0[row, 0] - s["x"][j]) < 1e-9, (key, j, x0[row], s["x"][j])
 
 print(f"{n} droppers, {len(s['x'])} supports: numbering, nodes and elements consistent")
+
+# The reactions' rows on the catenary (the nodes its elements connect to the anchors; a
+# pantograph's stages are held apart) are the nodes held in the x-z plane (anchors, elastic
+# supports), never the nodes a 2D line holds only in y (all of them): each lies at a
+# support's x, and the four anchors are among them.
+with h5py.File(path, "r") as f:
+    support_rows = f["mesh/support_nodes" if "mesh/support_nodes" in f else "static/support_nodes"][:]
+anchors = {int(s[key][j]) for key in ("contact_node_id", "messenger_node_id") for j in (0, -1)}
+neighbours = {}
+for a, b in element_nodes:
+    neighbours.setdefault(int(a), []).append(int(b))
+    neighbours.setdefault(int(b), []).append(int(a))
+line = {row_of_node[i] for i in anchors}
+todo = list(line)
+while todo:
+    for other in neighbours.get(todo.pop(), []):
+        if other not in line:
+            line.add(other)
+            todo.append(other)
+support_ids = {int(node_ids[r]) for r in support_rows if int(r) in line}
+at_supports = set(s["contact_node_id"].tolist()) | set(s["messenger_node_id"].tolist())
+assert support_ids <= at_supports, sorted(support_ids - at_supports)[:5]
+assert anchors <= support_ids, sorted(anchors - support_ids)
+print(f"reaction rows on the line: {len(support_ids)} of its {len(line)} nodes, all at supports")
 if static:
     print(f"largest |z - design height| {1e3 * worst_height:.4f} mm, "
           f"largest |l0 - (L - N/k)| {worst_length:.2e} m")

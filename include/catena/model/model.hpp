@@ -44,6 +44,10 @@ struct Support {
   int node = 0;
   unsigned fixed_mask = 0;       // bit k fixes nodal DOF k
   bool slope_direction = false;  // r_x = s·tangent, s free (the slope's bits are not set)
+  // The bits of fixed_mask that only keep a 2D model in its plane (y and slope y of a 2D
+  // catenary's nodes): a modelling restriction, not a support, so a node held by them alone
+  // has no reaction output (model/supported_nodes.hpp).
+  unsigned plane_mask = 0;
 };
 
 // Linear spring (and dashpot) from a node's position to ground.

@@ -1,5 +1,7 @@
 #pragma once
-// The nodes a model holds: any fixed DOF (Model::supports) or an elastic support. The
+// The nodes a model holds: any fixed DOF (Model::supports) or an elastic support, except
+// the DOFs that only keep a 2D model in its plane (Support::plane_mask: in a 2D catenary
+// every node's y, whose reaction is zero by symmetry and would cost a row per node). The
 // reactions (assembly/state_view.hpp), their rows in the time series (io) and the couplings
 // the system evaluates for them all index this one list.
 #include <vector>
