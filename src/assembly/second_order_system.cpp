@@ -127,6 +127,9 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       at_supports_.push_back(acts_on_all_.size() - 1);
   }
 
+  evaluated_.resize(couplings_.size());
+  for (size_t i = 0; i < couplings_.size(); ++i) evaluated_[i] = i;
+
   bool damps = false;
   for (const auto& c : couplings_) damps = damps || c->has_damping();
   has_damping_ = any_rank(comm, damps);
@@ -257,24 +260,41 @@ void SecondOrderSystem::scatter_to_local(Vec global, Vec local_ghosted) const {
   CATENA_PETSC(VecGhostUpdateEnd(local_ghosted, INSERT_VALUES, SCATTER_FORWARD));
 }
 
-void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
-  const LoggedEvent logged(log_events().force);
-  double squares = 0.0;
+void SecondOrderSystem::sum_forces(const EvalPoint& p, const std::vector<size_t>& only, Vec f,
+                                   double* squares) const {
   {
     LocalArrayWrite out(f_work_.get());
     CATENA_PETSC(VecSet(out.local(), 0.0));
     double* dst = out.data();
-    visit_forces(p, [&](size_t i, const ActiveDofs& dofs, std::span<const double> f_el) {
-      const double* f_rows = scale_force(dofs, f_el.data(), work_.scaled);
-      for (size_t k = 0; k < f_el.size(); ++k)
-        if (dofs.local[k] >= 0) dst[dofs.local[k]] += f_rows[k];
-      if (element_norm && couplings_[i]->in_force_scale())
-        for (double x : f_el) squares += x * x;
-    });
+    visit_forces(
+        p,
+        [&](size_t i, const ActiveDofs& dofs, std::span<const double> f_el) {
+          const double* f_rows = scale_force(dofs, f_el.data(), work_.scaled);
+          for (size_t k = 0; k < f_el.size(); ++k)
+            if (dofs.local[k] >= 0) dst[dofs.local[k]] += f_rows[k];
+          if (squares && couplings_[i]->in_force_scale())
+            for (double x : f_el) *squares += x * x;
+        },
+        &only);
   }
   CATENA_PETSC(VecGhostUpdateBegin(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecGhostUpdateEnd(f_work_.get(), ADD_VALUES, SCATTER_REVERSE));
   CATENA_PETSC(VecCopy(f_work_.get(), f));
+}
+
+void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
+  const LoggedEvent logged(log_events().force);
+  double squares = 0.0;
+  sum_forces(p, evaluated_, f, element_norm ? &squares : nullptr);
+  if (linear_) {
+    // f += f0 + K (q − q0) + C v: the difference first, so that no product of the stiffness
+    // with absolute coordinates (10⁷ N/m × 600 m) cancels against f0 in round-off.
+    CATENA_PETSC(VecWAXPY(linear_->dq.get(), -1.0, linear_->q0.get(), p.q));
+    CATENA_PETSC(MatMultAdd(linear_->K.get(), linear_->dq.get(), f, f));
+    if (p.v) CATENA_PETSC(MatMultAdd(linear_->C.get(), p.v, f, f));
+    CATENA_PETSC(VecAXPY(f, 1.0, linear_->f0.get()));
+    squares += linear_->squares;
+  }
   if (element_norm) {
     double global = 0.0;
     MPI_Allreduce(&squares, &global, 1, MPI_DOUBLE, MPI_SUM, comm_);
@@ -283,11 +303,14 @@ void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
 }
 
 double SecondOrderSystem::element_force_norm(const EvalPoint& p) {
-  double local = 0.0;
-  visit_forces(p, [&](size_t i, const ActiveDofs&, std::span<const double> f_el) {
-    if (couplings_[i]->in_force_scale())
-      for (double x : f_el) local += x * x;
-  });
+  double local = linear_ ? linear_->squares : 0.0;
+  visit_forces(
+      p,
+      [&](size_t i, const ActiveDofs&, std::span<const double> f_el) {
+        if (couplings_[i]->in_force_scale())
+          for (double x : f_el) local += x * x;
+      },
+      &evaluated_);
   double global = 0.0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, comm_);
   return std::sqrt(global);
@@ -295,24 +318,28 @@ double SecondOrderSystem::element_force_norm(const EvalPoint& p) {
 
 void SecondOrderSystem::assemble_matrices(const EvalPoint& p,
                                           std::span<const JacobianCoefficients> c,
-                                          std::span<const Mat> matrices) {
+                                          std::span<const Mat> matrices,
+                                          const std::vector<size_t>& only) {
   const LoggedEvent logged(log_events().tangent);
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
+  CATENA_ASSERT(matrices.size() <= 2, "assemble_matrices: at most two matrices per pass");
   std::vector<couplings::MatrixRequest> requests;
   std::vector<Mat> targets;
+  std::vector<JacobianCoefficients> coefficients;
   for (size_t r = 0; r < matrices.size(); ++r)
     if (matrices[r]) {
       CATENA_PETSC(MatZeroEntries(matrices[r]));
       requests.push_back({c[r], nullptr});
       targets.push_back(matrices[r]);
+      coefficients.push_back(c[r]);
     }
   {
     const LocalArrayRead q(q_work_.get());
     std::unique_ptr<LocalArrayRead> v;
     if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
     std::vector<double>* blocks[2] = {&work_.block, &work_.block2};
-    for (size_t i = 0; i < couplings_.size(); ++i) {
+    for (const size_t i : only) {
       const ActiveDofs dofs = active(i, p.t, work_);
       if (dofs.n == 0) continue;
       for (size_t r = 0; r < requests.size(); ++r) {
@@ -328,18 +355,29 @@ void SecondOrderSystem::assemble_matrices(const EvalPoint& p,
     CATENA_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
     CATENA_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
   }
+  if (!linear_ || &only != &evaluated_) return;
+  // Every matrix has the system's whole pattern (create_matrix): a sum of arrays.
+  for (size_t r = 0; r < targets.size(); ++r) {
+    const JacobianCoefficients& k = coefficients[r];
+    if (k.c_K != 0.0)
+      CATENA_PETSC(MatAXPY(targets[r], k.c_K, linear_->K.get(), SAME_NONZERO_PATTERN));
+    if (k.c_C != 0.0)
+      CATENA_PETSC(MatAXPY(targets[r], k.c_C, linear_->C.get(), SAME_NONZERO_PATTERN));
+    if (k.c_M != 0.0)
+      CATENA_PETSC(MatAXPY(targets[r], k.c_M, linear_->M.get(), SAME_NONZERO_PATTERN));
+  }
 }
 
 void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J) {
   const Mat matrices[1] = {J};
-  assemble_matrices(p, {&c, 1}, matrices);
+  assemble_matrices(p, {&c, 1}, matrices, evaluated_);
 }
 
 void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) {
   // K carries G in the multiplier rows (∂R/∂q of the whole residual); C is ∂f/∂v.
   const JacobianCoefficients c[2] = {{1.0, 0.0, 0.0, 0.0, 1.0}, {0.0, 1.0, 0.0, 0.0, 0.0}};
   const Mat matrices[2] = {K_out, C_out};
-  assemble_matrices(p, c, matrices);
+  assemble_matrices(p, c, matrices, evaluated_);
 }
 
 }  // namespace catena::assembly

@@ -58,10 +58,10 @@ echo "run_files: B passed"
 
 # C.
 out=$dir/files_c.h5; clean "$out"
-"$catena" run $scene --set analysis.duration=20 -o "$out" > "$dir/files_c1.log" 2>&1 &
+"$catena" run $scene --set analysis.duration=2000 -o "$out" > "$dir/files_c1.log" 2>&1 &
 pid=$!
 in_dynamics "$dir/files_c1.log"
-"$catena" run $scene --set analysis.duration=20 -o "$out" > "$dir/files_c2.log" 2>&1
+"$catena" run $scene --set analysis.duration=2000 -o "$out" > "$dir/files_c2.log" 2>&1
 code=$?
 kill -TERM $pid; wait $pid
 [ $? -eq 143 ] || fail "C: the first run did not stop cleanly: $(tail -2 "$dir/files_c1.log")"

@@ -123,9 +123,10 @@ fill_disk() {
 
 case $case in
   dynamic_sample)
-    # Samples every 5 ms, a step and a checkpoint every 20 ms: the 8th sample after the
-    # first falls in the second step, after the first checkpoint.
-    dynamic_run "rank=1,call=9,at=/samples/positions"
+    # Samples every 5 ms, a step and a checkpoint every 20 ms; samples are written at each
+    # flush, so the second write of positions holds the second step's samples, after the
+    # first checkpoint.
+    dynamic_run "rank=1,call=2,at=/samples/positions"
     expect_one_clean_error "H5Dwrite failed for '$dir/run.part.h5' at /samples/positions" \
       "No space left on device" "(on rank 1)" "$dir/run.part.h5 is closed with status \"failed\""
     expect_checkpoint_kept "$dir/run.h5"

@@ -160,8 +160,10 @@ TEST_F(WriteFailureTest, SampleWriteFailingOnOneRankFailsOnEveryRankAndTheFileCl
   const fs::path path = directory_ / "run.h5";
   const auto writer = transient_writer(path);
   append_sample(*writer, 0.0);
-  inject(1, "/samples/velocities");  // the next sample's velocities
-  const std::string message = output_error_of([&] { append_sample(*writer, 0.1); });
+  writer->flush();
+  inject(1, "/samples/velocities");  // the next sample's velocities, written by a flush
+  append_sample(*writer, 0.1);       // buffered
+  const std::string message = output_error_of([&] { writer->flush(); });
   expect_same_error_on_every_rank(
       message, {"H5Dwrite failed for '" + path.string() + "' at /samples/velocities",
                 "No space left on device"});
@@ -196,7 +198,8 @@ TEST_F(WriteFailureTest, FailingCloseOnOneRankFailsOnEveryRank) {
   const fs::path path = directory_ / "run.h5";
   const auto writer = transient_writer(path);
   append_sample(*writer, 0.0);
-  inject(2, "");
+  writer->flush();
+  inject(2, "");  // after close's flush (no rows buffered: H5Fflush only)
   expect_same_error_on_every_rank(
       output_error_of([&] { writer->close("complete", {}); }),
       {"H5Fclose failed for '" + path.string() + "'", "No space left on device"});

@@ -121,7 +121,11 @@ class SecondOrderSystem {
   // Collective. Replaces the element kernel of every model element for which
   // `linearize(element index)` is true by its linearisation about q0 (elements/
   // linearized.hpp): from then on its force is f0 + K0 Δq + C0 v and its matrices are
-  // constant. Returns how many elements this rank linearised.
+  // constant. Residuals and matrices then take those elements from one assembled block
+  // (K, C, M and Σ f0 over the free DOFs: a sparse product per residual, a matrix sum per
+  // Jacobian, instead of an evaluation per element); local patches and output queries
+  // still evaluate them one by one. Once per system. Returns how many elements this rank
+  // linearised.
   int linearize_elements(Vec q0, const std::function<bool(int)>& linearize);
 
   // True if the static load path needs its second phase (some cable's prestrain is below
@@ -183,10 +187,22 @@ class SecondOrderSystem {
   // residual loop, which runs per coupling).
   template <class Fn>
   void visit_forces(const EvalPoint& p, Fn&& fn, const std::vector<size_t>* only = nullptr) const;
-  // Collective. Each combination c[r] over every coupling at p into matrices[r] (zeroed
-  // first, assembled on return; null matrices are skipped).
+  // Collective. Each combination c[r] over the couplings in `only` at p into matrices[r]
+  // (zeroed first, assembled on return; null matrices are skipped), then the linear block's
+  // share of it if `only` is evaluated_.
   void assemble_matrices(const EvalPoint& p, std::span<const JacobianCoefficients> c,
-                         std::span<const Mat> matrices);
+                         std::span<const Mat> matrices, const std::vector<size_t>& only);
+  // Collective. Σ f over the couplings in `only` at p into f (global), and Σ |f_e|² over
+  // those in the force scale into *squares (this rank's, if not null).
+  void sum_forces(const EvalPoint& p, const std::vector<size_t>& only, Vec f,
+                  double* squares) const;
+
+  // The linearised elements as one block (linearize_elements): f = f0 + K (q − q0) + C v.
+  struct LinearBlock {
+    MatHandle K, C, M;
+    VecHandle q0, f0, dq;  // dq: work
+    double squares = 0.0;  // this rank's Σ |f0_e|²: the block's share of the force scale
+  };
 
   MPI_Comm comm_;
   const model::Model* model_;
@@ -195,9 +211,11 @@ class SecondOrderSystem {
   DofMap dofs_;
   // Per coupling: offset into the flat per-DOF arrays below (its dofs() resolved).
   std::vector<size_t> offset_;
-  std::vector<char> acts_on_all_;       // per coupling: Coupling::acts_on_all(), cached
-  std::vector<size_t> timed_;           // the couplings with PatchRole::at_patch_time
-  std::vector<size_t> at_supports_;     // the couplings acting on a supported node
+  std::vector<char> acts_on_all_;    // per coupling: Coupling::acts_on_all(), cached
+  std::vector<size_t> timed_;        // the couplings with PatchRole::at_patch_time
+  std::vector<size_t> at_supports_;  // the couplings acting on a supported node
+  std::vector<size_t> evaluated_;    // the couplings evaluated one by one: all but linear_'s
+  std::unique_ptr<LinearBlock> linear_;
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)
   std::vector<double> fixed_value_;     // reference value used where fixed

@@ -15,7 +15,7 @@
 // src/io/transient_layout.hpp.
 //
 // The file is written in place (not atomically) so that a long run's results up to the
-// last flush() are readable after a crash: flush() writes the buffered step rows and
+// last flush() are readable after a crash: flush() writes the buffered sample and step rows and
 // H5Fflush()es, so a reader sees a consistent file up to that point. close() records
 // `status` ("complete", "interrupted" or "failed: <why>") and the run statistics. A file
 // whose `status` is still "running" ended without close(): data up to the last flush.
@@ -83,14 +83,15 @@ class TransientWriter {
                   std::vector<int> owned_constraints, const ResumePoint& resume);
   ~TransientWriter();
 
-  // Rows written so far (samples; steps including those buffered until flush()).
+  // Rows written so far, those buffered until flush() included.
   std::int64_t samples_written() const;
   std::int64_t steps_written() const;
   TransientWriter(const TransientWriter&) = delete;
   TransientWriter& operator=(const TransientWriter&) = delete;
 
   // Collective. One sample: this rank's owned rows (3 values per node, 1 per element, 3
-  // per constraint, 3 + 3 per supported node among its owned nodes).
+  // per constraint, 3 + 3 per supported node among its owned nodes). Buffered: written
+  // 32 samples at a time, and by flush().
   void append_sample(double t, const std::vector<double>& positions,
                      const std::vector<double>& velocities, const std::vector<double>& slopes,
                      const std::vector<double>& axial_force,
