@@ -210,6 +210,13 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.overrides.push_back(a.substr(6));
     } else if (a == "--restart") {
       cl.restart = true;
+    } else if (a == "--realtime") {
+      if (cl.command != "run")
+        throw InputError({"", 0, "--realtime"},
+                         "'--realtime' is an option of run (catena run SCENE.yaml --realtime), "
+                         "not of " +
+                             cl.command);
+      cl.realtime = true;
     } else if (a == "--ids") {
       if (cl.command != "check")
         throw InputError(

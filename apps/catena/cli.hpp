@@ -37,6 +37,7 @@ struct CommandLine {
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
   bool ids = false;                    // check --ids: list the catenary builder's ids
+  bool realtime = false;               // run --realtime: measure against the wall clock
   // --memory-limit GIB: the memory per host a run may use (default: physical memory);
   // 0 (--memory-limit off): no memory check.
   std::optional<double> memory_limit_gib;

@@ -121,6 +121,10 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
     throw InputError({cl.scene, 0, "--restart"},
                      "--restart continues a dynamic run from its checkpoint; this scene's "
                      "analysis is static (analysis.type: static)");
+  if (cl.realtime)
+    throw InputError({cl.scene, 0, "--realtime"},
+                     "--realtime measures a dynamic run against the wall clock; this scene's "
+                     "analysis is static (analysis.type: static)");
   const double start = MPI_Wtime();
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();

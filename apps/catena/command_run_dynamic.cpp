@@ -37,6 +37,7 @@
 #include "initial_state.hpp"
 #include "log_stage.hpp"
 #include "progress_lines.hpp"
+#include "realtime_monitor.hpp"
 #include "resume_checkpoint.hpp"
 #include "run_info.hpp"
 #include "shape_report.hpp"
@@ -54,7 +55,7 @@ class OutputObserver : public solvers::TransientObserver {
  public:
   OutputObserver(assembly::SecondOrderSystem& system, io::TransientWriter& writer,
                  const model::OutputOptions& output, const solvers::TimeIntegrator& integrator,
-                 std::string run_id, DynamicProgress progress)
+                 std::string run_id, DynamicProgress progress, RealtimeMonitor& realtime)
       : system_(system),
         view_(system),
         writer_(writer),
@@ -62,7 +63,8 @@ class OutputObserver : public solvers::TransientObserver {
         run_id_(std::move(run_id)),
         integrator_(integrator),
         schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}),
-        progress_(progress) {}
+        progress_(progress),
+        realtime_(realtime) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
@@ -142,6 +144,7 @@ class OutputObserver : public solvers::TransientObserver {
       writer_.flush();
     }
     progress_.step(r.time, r.newton_iterations, r.rejected);
+    realtime_.step(r.time);
     hooks_.after_step();
   }
 
@@ -172,6 +175,7 @@ class OutputObserver : public solvers::TransientObserver {
   const solvers::TimeIntegrator& integrator_;
   WallClockSchedule schedule_;
   DynamicProgress progress_;
+  RealtimeMonitor& realtime_;
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
@@ -460,9 +464,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                                                    owned_constraints);
   }
   const std::string partial = io::partial_output_path(output);
+  RealtimeMonitor realtime(rank, cl.realtime, integrator->time(), m.output.interval);
   OutputObserver observer(
       system, *writer, m.output, *integrator, run_id,
-      DynamicProgress(rank, integrator->time(), options.t_end, cl.progress_seconds));
+      DynamicProgress(rank, integrator->time(), options.t_end, cl.progress_seconds), realtime);
   if (resumed) {
     observer.set_last_dt(resumed->facts.last_dt);
     observer.set_last_checkpoint_time(resumed->facts.time);
@@ -501,8 +506,15 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   const double wall = MPI_Wtime() - start;
   const auto& k = integrator->counters();
   const LogStage output_stage("Output");
+  std::vector<std::pair<std::string, double>> run_statistics = statistics(report, k, wall);
+  std::optional<RealtimeSummary> realtime_summary;
+  if (realtime.enabled()) {
+    realtime_summary = realtime.summary(comm);
+    for (auto& entry : RealtimeMonitor::statistics(*realtime_summary))
+      run_statistics.push_back(std::move(entry));
+  }
   try {
-    writer->close(report.interrupted ? "interrupted" : "complete", statistics(report, k, wall));
+    writer->close(report.interrupted ? "interrupted" : "complete", run_statistics);
   } catch (const OutputError& e) {
     throw output_failure(e, true, *writer, partial, io::checkpoint_path(output),
                          observer.last_checkpoint_time(), {});
@@ -519,6 +531,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         report.interrupted ? "interrupted" : "done", report.t_reached, report.steps_accepted,
         report.steps_rejected, report.smallest_dt, report.largest_dt, k.newton_iterations,
         k.factorizations, k.residual_evaluations, wall, wall / std::max(report.t_reached, 1e-300));
+    if (realtime_summary) RealtimeMonitor::print(rank, *realtime_summary, m.output.interval);
     std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s%s\n", written.c_str(),
                 report.samples, io::transient_xdmf_path(written).c_str(),
                 io::checkpoint_path(output).c_str(),

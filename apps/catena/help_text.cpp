@@ -32,7 +32,7 @@ const CommandHelp* commands() {
   static const CommandHelp all[] = {
       {"run",
        R"(  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
-               [--quiet] [--memory-limit GIB] [PETSc options]
+               [--quiet] [--realtime] [--memory-limit GIB] [PETSc options]
 )",
        R"(  run     solve the scene (static equilibrium or dynamics) and write OUT.h5 (+ OUT.xmf
           for ParaView)
@@ -46,6 +46,9 @@ const CommandHelp* commands() {
                         step; off: none): simulated time, steps, Newton iterations, rate
                         and ETA of dynamics; load path point and steps of statics
   --quiet               no progress lines (as --progress off)
+  --realtime            dynamics: report whether each output interval ended within the
+                        wall clock (hardware in the loop) and the wall time per step:
+                        mean, 99th percentile, worst (also in OUT.h5's statistics)
 )" + kMemoryOption,
        true},
       {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB] [--ids]\n",

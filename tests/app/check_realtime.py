@@ -1,0 +1,26 @@
+#!/usr/bin/python3
+"""`catena run --realtime`'s figures in the output file's statistics (docs/output.md).
+
+Usage: check_realtime.py RUN.h5 N_INTERVALS
+
+The run's root attributes hold realtime_intervals (N_INTERVALS), realtime_intervals_behind
+(0 for this run, which keeps up), and step wall times with 0 < mean <= 99th percentile <=
+worst, all below a second.
+"""
+import sys
+
+import h5py
+
+path, n_intervals = sys.argv[1], int(sys.argv[2])
+with h5py.File(path, "r") as f:
+    a = f.attrs
+    intervals, behind = int(a["realtime_intervals"]), int(a["realtime_intervals_behind"])
+    mean, p99, worst = (float(a["realtime_mean_step_seconds"]),
+                        float(a["realtime_step_seconds_p99"]),
+                        float(a["realtime_worst_step_seconds"]))
+    lag = float(a["realtime_largest_lag_seconds"])
+print(f"check_realtime: {intervals} intervals, {behind} behind, step mean {mean:.3g} s, "
+      f"p99 {p99:.3g} s, worst {worst:.3g} s, largest lag {lag:.3g} s")
+assert intervals == n_intervals, intervals
+assert behind == 0 and lag == 0.0, (behind, lag)
+assert 0.0 < mean <= p99 <= worst < 1.0, (mean, p99, worst)
