@@ -23,7 +23,7 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
                  "error_estimate", "newton", "newton_rtol", "newton_atol", "max_newton_iterations",
-                 "linear_algebra", "local_newton"});
+                 "linear_algebra", "local_newton", "tangent_every"});
   const Field type = in.child("type");
   o.type = type.text_or(o.type);
   const IntegratorType* facts = find_integrator_type(o.type);
@@ -82,13 +82,30 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   const Field newton = in.child("newton");
   if (facts->takes_newton) {
     o.newton = newton.text_or(o.newton);
-    if (o.newton != "simplified" && o.newton != "full")
-      newton.fail("unknown Newton variant '" + o.newton + "'; accepted: simplified, full");
+    const bool hht = facts->method == IntegratorMethod::hht;
+    if (o.newton != "simplified" && o.newton != "full" && !(hht && o.newton == "linearly_implicit"))
+      newton.fail("unknown Newton variant '" + o.newton + "' for " + o.type + "; accepted: " +
+                  (hht ? "simplified, full, linearly_implicit" : "simplified, full"));
+    if (o.newton == "linearly_implicit" && constraints > 0)
+      newton.fail(
+          "newton: linearly_implicit takes no constraints (its linear model of the force "
+          "leaves the multipliers' rows undefined); this scene has " +
+          std::to_string(constraints) + "; use simplified or full");
   } else {
     fail_if_present(newton, "'newton' applies to hht and the implicit Runge-Kutta types");
   }
+  const Field tangent_every = in.child("tangent_every");
+  if (o.newton == "linearly_implicit")
+    o.tangent_every = static_cast<int>(
+        tangent_every.integer_or(o.tangent_every, IntRange::between(0, 1000000000)));
+  else
+    fail_if_present(tangent_every, "'tangent_every' applies to newton: linearly_implicit only");
   const Field local_newton = in.child("local_newton");
-  if (facts->takes_local_newton)
+  if (facts->takes_local_newton && o.newton == "linearly_implicit")
+    fail_if_present(local_newton,
+                    "'local_newton' does not apply to newton: linearly_implicit (one Newton "
+                    "step per time step, never corrected)");
+  else if (facts->takes_local_newton)
     o.local_newton = local_newton.boolean_or(o.local_newton);
   else
     fail_if_present(local_newton, "'local_newton' applies to hht only");

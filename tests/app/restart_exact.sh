@@ -9,7 +9,7 @@
 #     Radau IIA s = 3 on meshes/taut_string.yaml, np 1 and np 2;
 #     adaptive steps (embedded estimates): Radau IIA on the taut string and HHT on the
 #     pantograph, np 1; step doubling (HHT on the pantograph), np 2; a linear structure
-#     (HHT on the pantograph, np 2).
+#     (HHT on the pantograph, np 2), and with the linearly implicit step (np 1).
 #  B. A crash: checkpoints every 7 steps, SIGKILL after 40 (HHT on the pantograph, np 2)
 #     or 19 (Radau IIA, np 1) steps, so that the last checkpoint (step 35 or 14) is not the
 #     stop point, then --restart.
@@ -103,6 +103,11 @@ case_ hht_doubling_np2 2 2 CATENA_STOP_AFTER_STEPS=6 exact "${doubling_pantograp
 #    A linear structure: the restart solves the equilibrium again and linearises about it.
 case_ hht_linear_np2 2 2 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}" \
   --set analysis.structure=linear
+#    The linearly implicit step, its tangent re-evaluated every 50 steps (the count since
+#    the last one travels in the checkpoint).
+case_ hht_linearly_implicit_np1 1 1 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}" \
+  --set analysis.structure=linear --set integrator.newton=linearly_implicit \
+  --set integrator.tangent_every=50
 # B.
 case_ hht_crash_np2 2 2 "CATENA_CHECKPOINT_EVERY_STEPS=7 CATENA_KILL_AFTER_STEPS=40" exact \
   "${pantograph[@]}"

@@ -132,7 +132,10 @@ struct IntegratorOptions {
   double dt_max = 0.0;    // s: 0 = no limit beyond the duration
   // auto: embedded where the method has one (Radau IIA odd s, HHT), else step doubling.
   std::string error_estimate = "auto";  // auto | embedded | step_doubling
-  std::string newton = "simplified";    // simplified (frozen Jacobian) | full
+  // simplified (frozen Jacobian) | full | linearly_implicit (HHT: one Newton step per time
+  // step, fixed cost; the tangent re-evaluated every `tangent_every` steps, 0: never)
+  std::string newton = "simplified";
+  int tangent_every = 0;
   // IRK stage Newton: auto (decoupled where exact) | decoupled | coupled
   std::string linear_algebra = "auto";
   // HHT: finish Newton solves whose residual is left in a few windows by Newton on those

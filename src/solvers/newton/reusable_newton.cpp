@@ -251,4 +251,46 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   return result;
 }
 
+NewtonResult ReusableNewton::linear_step(Vec x) {
+  NewtonResult result;
+  residual_fn_(x, residual_);
+  ++counters_.residual_evaluations;
+  PetscReal norm = 0.0;
+  CATENA_PETSC(VecNorm(residual_, NORM_2, &norm));
+  result.residual_norm = norm;
+  if (!std::isfinite(norm)) {
+    result.failure = "the residual is not finite";
+    invalidate_tangent();
+    return result;
+  }
+  const KSP solver = ksp();
+  if (!matrix_valid_) {
+    Mat J = nullptr;
+    CATENA_PETSC(SNESGetJacobian(snes_.get(), &J, nullptr, nullptr, nullptr));
+    const bool refresh = !tangent_valid_;
+    builder_(x, refresh, J);
+    if (refresh) {
+      tangent_valid_ = true;
+      ++counters_.tangent_evaluations;
+    }
+    matrix_valid_ = true;
+    ++counters_.factorizations;  // the changed matrix is refactored at the solve
+    CATENA_PETSC(KSPSetOperators(solver, J, J));
+  }
+  if (!step_) CATENA_PETSC(VecDuplicate(x, step_.out()));
+  CATENA_PETSC(KSPSolve(solver, residual_, step_.get()));
+  ++counters_.iterations;
+  ++counters_.linear_solves;
+  result.iterations = 1;
+  const DirectSolveStatus status = direct_solve_status(solver);
+  if (status.failed()) {
+    result.failure = "the linear solve of the Newton matrix failed (" + status.describe() + ")";
+    invalidate_tangent();
+    return result;
+  }
+  CATENA_PETSC(VecAXPY(x, -1.0, step_.get()));
+  result.converged = true;
+  return result;
+}
+
 }  // namespace catena::solvers

@@ -52,7 +52,8 @@ struct HhtIntegrator::Impl {
   VecHandle f0;  // f(t0, q0, v0)
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
-  VecHandle f1, residual, error;
+  VecHandle f1, residual, error, work;
+  long steps_since_tangent = 0;  // linearly implicit: steps taken with the current tangent
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
@@ -106,6 +107,52 @@ struct HhtIntegrator::Impl {
     }
   }
 
+  // The linearly implicit step (HhtOptions::linearly_implicit) from the predictor a_p = a₀:
+  // a₁ = a_p − J⁻¹ R(a_p), and for the next step's α term the step's linear model of
+  // f(q₁, v₁): from J (a₁ − a_p) = −R_p, (1 + α)(βh² K + γh C)(a₁ − a_p) = −R_p − M (a₁ − a_p),
+  //   f₁ ≈ f_p + (βh² K + γh C)(a₁ − a_p) = f_p − (R_p − M δ)/(1 + α),  δ = a_p − a₁.
+  NewtonResult linearly_implicit_step() {
+    if (options.tangent_every > 0 && steps_since_tangent >= options.tangent_every)
+      newton->invalidate_tangent();
+    const long tangents_before = newton->counters().tangent_evaluations;
+    const NewtonResult r = newton->linear_step(state.pending_a());  // f1 = f_p, residual = R_p
+    if (!r.converged) return r;
+    const bool refreshed = newton->counters().tangent_evaluations != tangents_before;
+    steps_since_tangent = refreshed ? 1 : steps_since_tangent + 1;
+    CATENA_PETSC(VecWAXPY(work.get(), -1.0, state.pending_a(), state.a()));  // δ
+    CATENA_PETSC(MatMult(mass_product.get(), work.get(), error.get()));      // M δ
+    CATENA_PETSC(VecAXPY(error.get(), -1.0, residual.get()));                // M δ − R_p
+    CATENA_PETSC(VecAXPY(f1.get(), 1.0 / (1.0 + options.alpha), error.get()));
+    return r;
+  }
+
+  // The attempt's outcome from its Newton result: on success the pending state from a1
+  // (pending_a) and the local error estimate if asked for.
+  StepOutcome finish_attempt(const NewtonResult& result, const ErrorTolerance* tol) {
+    StepOutcome out;
+    out.converged = result.converged;
+    out.newton_iterations = result.iterations;
+    out.residual_norm = result.residual_norm;
+    counters.newton_iterations += result.iterations;
+    if (!result.converged) {
+      ++counters.newton_failures;
+      out.failure = result.failure;
+      out.worst_dof = worst_dof(residual.get());
+      state.discard_pending();
+      return out;
+    }
+    // q1, v1 from a1 (a Newton solve's last residual evaluation was at a1 already).
+    kinematics(state.pending_a());
+    algebraic->zero_algebraic(state.pending_a());  // λ1 now lives in q1
+    state.set_pending(state.time() + h);
+    if (tol) {
+      CATENA_PETSC(VecWAXPY(error.get(), -1.0, state.a(), state.pending_a()));
+      CATENA_PETSC(VecScale(error.get(), h * h * (beta - 1.0 / 6.0)));
+      out.error = weighted_error_norm(*tol, error.get(), state.q(), state.pending_q());
+    }
+    return out;
+  }
+
   // C, or null where the system has no damping (C = 0: neither assembled nor added).
   Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
 
@@ -149,8 +196,8 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
                                                       " is outside the accepted range [-1/3, 0]");
   impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
-  for (VecHandle* v :
-       {&s.f0, &s.f1, &s.residual, &s.error, &s.q_known, &s.v_known, &s.tangent_q, &s.tangent_v})
+  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.work, &s.q_known, &s.v_known,
+                       &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
   // Only the matrices this system uses: each holds the full pattern from the start.
   s.mass = system.create_matrix();
@@ -216,6 +263,11 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.h_matrix = h;
   }
   s.start_attempt();
+  if (s.options.linearly_implicit) {
+    CATENA_PETSC(VecCopy(s.state.a(), s.state.pending_a()));  // predictor: a₀
+    const NewtonResult result = s.linearly_implicit_step();
+    return s.finish_attempt(result, tol);
+  }
   // The local corrections have grown costlier than a new tangent (local_newton.hpp).
   if (s.local && s.local->tangent_worn()) s.newton->invalidate_tangent();
   CATENA_PETSC(VecCopy(s.state.a(), s.state.pending_a()));  // predictor: constant acceleration
@@ -226,28 +278,7 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
                        (1.0 + s.options.alpha) * s.round_off.at(s.state.q());
   const NewtonResult result =
       s.newton->solve(s.state.pending_a(), s.options.atol + s.options.rtol * s.scale0 + floor);
-  StepOutcome out;
-  out.converged = result.converged;
-  out.newton_iterations = result.iterations;
-  out.residual_norm = result.residual_norm;
-  s.counters.newton_iterations += result.iterations;
-  if (!result.converged) {
-    ++s.counters.newton_failures;
-    out.failure = result.failure;
-    out.worst_dof = worst_dof(s.residual.get());
-    s.state.discard_pending();
-    return out;
-  }
-  // The last residual evaluation was at the converged a1: q1, v1, f1 belong to it.
-  s.kinematics(s.state.pending_a());
-  s.algebraic->zero_algebraic(s.state.pending_a());  // λ1 now lives in q1
-  s.state.set_pending(s.state.time() + h);
-  if (tol) {
-    CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.state.a(), s.state.pending_a()));
-    CATENA_PETSC(VecScale(s.error.get(), h * h * (s.beta - 1.0 / 6.0)));
-    out.error = weighted_error_norm(*tol, s.error.get(), s.state.q(), s.state.pending_q());
-  }
-  return out;
+  return s.finish_attempt(result, tol);
 }
 
 void HhtIntegrator::accept() {
@@ -272,6 +303,7 @@ void HhtIntegrator::save_resume_state(ResumeState& out) const {
   out.reals["hht.h_matrix"] = s.h_matrix;
   out.reals["hht.tangent_t"] = s.tangent_t;
   out.integers["hht.round_off_known"] = s.round_off.known() ? 1 : 0;
+  out.integers["hht.steps_since_tangent"] = s.steps_since_tangent;
   save_own_counters(s.counters, out);
   s.newton->save_resume_state(out);
   if (s.local) s.local->save_resume_state(out);
@@ -286,6 +318,9 @@ void HhtIntegrator::restore_resume_state(const ResumeState& in) {
   restore_own_counters(in, s.counters);
   s.newton->restore_resume_state(in);
   if (s.local) s.local->restore_resume_state(in);
+  // Checkpoints before the linearly implicit step carry neither: their runs did not use it.
+  if (in.integers.contains("hht.steps_since_tangent"))
+    s.steps_since_tangent = in.integer("hht.steps_since_tangent");
   // K, C and the floor as they were: evaluated again at their point (the Newton matrix is
   // rebuilt from them at the next attempt).
   if (in.integer("hht.round_off_known") != 0) {

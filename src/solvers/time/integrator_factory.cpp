@@ -41,7 +41,9 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     h.atol = o.newton_atol;
     h.max_newton_iterations = o.max_newton_iterations;
     h.full_newton = o.newton == "full";
-    h.local_newton = o.local_newton;
+    h.local_newton = o.local_newton && o.newton != "linearly_implicit";
+    h.linearly_implicit = o.newton == "linearly_implicit";
+    h.tangent_every = o.tangent_every;
     return std::make_unique<HhtIntegrator>(system, h);
   }
   if (o.type == "petsc") {

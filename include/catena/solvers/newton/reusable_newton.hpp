@@ -87,6 +87,13 @@ class ReusableNewton {
   // fresh tangent; `iterations` counts both attempts.
   NewtonResult solve(Vec x, double atol);
 
+  // Collective. One Newton step from x with the current matrix, built (and factored) first
+  // only if it is out of date: x ← x − J⁻¹ F(x). No convergence test, no line search, no
+  // local correction: one residual and one pair of triangular solves (the linearly implicit
+  // step of a fixed-cost integrator). `converged` is false only if F(x) is not finite or
+  // the linear solve failed (`failure` says why); residual_norm is ‖F(x)‖ before the step.
+  NewtonResult linear_step(Vec x);
+
   const NewtonCounters& counters() const { return counters_; }
   KSP ksp() const;
 
@@ -134,6 +141,7 @@ class ReusableNewton {
   LocalCorrection local_;
   Vec residual_;
   VecHandle guess_;  // the initial guess, kept for a retry (created at the first need)
+  VecHandle step_;   // linear_step's update (created at the first need)
   SnesHandle snes_;
   CallbackGuard guard_;
   NewtonCounters counters_;

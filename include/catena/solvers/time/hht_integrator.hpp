@@ -12,7 +12,8 @@
 //
 // Newton: ReusableNewton — the matrix (and its factorisation) is kept across steps of
 // equal h while the iteration contracts fast (simplified Newton), or rebuilt at every
-// iterate (full Newton).
+// iterate (full Newton); or one linearly implicit Newton step per time step (fixed cost:
+// HhtOptions::linearly_implicit, docs/integrators.md).
 // Local error estimate (Zienkiewicz & Xie, Earthquake Eng. Struct. Dyn. 20 (1991) 871–887):
 //   e_q = h² (β − 1/6)(a₁ − a₀) = O(h³),
 // the difference between the Newmark displacement and a Taylor expansion with a linear
@@ -39,6 +40,13 @@ struct HhtOptions {
   // (0: off), -hht_local_newton_worn and -hht_local_newton_max_window override them.
   bool local_newton = true;
   LocalNewtonSettings local_newton_settings;
+  // Linearly implicit (fixed cost): one Newton step per time step from the predictor, with
+  // the matrix of the last tangent (ReusableNewton::linear_step), re-evaluated every
+  // `tangent_every` steps (0: only at the first step and after a failure). f(q₁, v₁) for
+  // the next step's α term is the step's linear model of it, not a new evaluation. No
+  // constraints (refused by the scene reader).
+  bool linearly_implicit = false;
+  int tangent_every = 0;
 };
 
 class HhtIntegrator final : public StepStateIntegrator {
