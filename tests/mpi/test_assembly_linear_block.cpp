@@ -7,48 +7,20 @@
 // loop both take part.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "global_vectors.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 
-using catena::Vec3;
 namespace model = catena::model;
 
 namespace {
 
 model::Model damped_line() {
-  model::Model m;
-  m.gravity = Vec3(0, 0, -9.81);
   model::CableProps cw{1.8e7, 195.0, 1.35, 1e-3, 20000.0 / 1.8e7, {}};
   cw.rayleigh = {0.06, 7.6e-5};
-  const int n = 24;
-  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {60, 0, 0}, n, cw);
-  for (int i = 4; i < n; i += 4) m.point_masses.push_back({nodes[i], 0.195});
-  catena::test::set_reference_frames(m);
-  catena::test::pin(m, nodes.front());
-  catena::test::pin(m, nodes.back());
-  m.elastic_supports.push_back({nodes[n / 2], Vec3(0, 300, 300), Vec3(0, 5, 5)});
-  return m;
-}
-
-// A partition-independent vector: a function of the global index.
-void fill(Vec x, double scale, double phase) {
-  PetscInt lo = 0, hi = 0;
-  CATENA_PETSC(VecGetOwnershipRange(x, &lo, &hi));
-  for (PetscInt i = lo; i < hi; ++i)
-    CATENA_PETSC(
-        VecSetValue(x, i, scale * std::sin(0.7 * static_cast<double>(i) + phase), INSERT_VALUES));
-  CATENA_PETSC(VecAssemblyBegin(x));
-  CATENA_PETSC(VecAssemblyEnd(x));
-}
-
-double norm(Vec x) {
-  PetscReal n = 0.0;
-  CATENA_PETSC(VecNorm(x, NORM_INFINITY, &n));
-  return n;
+  return catena::test::cable_line_with_items(cw, 5.0);
 }
 
 double norm(Mat A) {
@@ -66,8 +38,10 @@ TEST(LinearBlock, ResidualAndMatrixAreTheNonlinearTangentsAtQ0) {
   catena::VecHandle q0 = linear.create_vector(), q = linear.create_vector(),
                     v = linear.create_vector(), dq = linear.create_vector();
   linear.reference_state(q0.get());
-  fill(dq.get(), 2e-3, 0.0);
-  fill(v.get(), 0.3, 1.0);
+  CATENA_PETSC(VecSet(dq.get(), 0.0));
+  CATENA_PETSC(VecSet(v.get(), 0.0));
+  catena::test::add_wave(dq.get(), 2e-3, 0.7, 0.0);
+  catena::test::add_wave(v.get(), 0.3, 0.7, 1.0);
   CATENA_PETSC(VecWAXPY(q.get(), 1.0, dq.get(), q0.get()));
 
   int n = linear.linearize_elements(q0.get(), [&](int e) {
@@ -90,10 +64,10 @@ TEST(LinearBlock, ResidualAndMatrixAreTheNonlinearTangentsAtQ0) {
   double scale = 0.0;
   linear.force({q.get(), v.get(), {}}, got.get(), &scale);
   EXPECT_GT(scale, 0.0);
-  const double size = norm(expected.get());
+  const double size = catena::test::max_abs(expected.get());
   CATENA_PETSC(VecAXPY(got.get(), -1.0, expected.get()));
   EXPECT_GT(size, 1.0);
-  EXPECT_LE(norm(got.get()), 1e-9 * size) << "|f| " << size;
+  EXPECT_LE(catena::test::max_abs(got.get()), 1e-9 * size) << "|f| " << size;
 
   // Newton matrix with every coefficient in play.
   const catena::assembly::JacobianCoefficients c{0.7, 0.3, 2.0e4, 0.0, 0.0};

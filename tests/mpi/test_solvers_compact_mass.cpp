@@ -5,15 +5,13 @@
 // flag is false exactly when no kernel damps, and then C assembles to zero.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "global_vectors.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 
-using catena::Vec3;
 namespace model = catena::model;
 
 namespace {
@@ -21,17 +19,7 @@ namespace {
 // A 60 m cable line (20 kN) with point masses and an elastic support; `tau`: its
 // Kelvin–Voigt damping time.
 model::Model cable_line(double tau) {
-  model::Model m;
-  m.gravity = Vec3(0, 0, -9.81);
-  model::CableProps cw{1.8e7, 195.0, 1.35, tau, 20000.0 / 1.8e7, {}};
-  const int n = 24;
-  const auto nodes = catena::test::add_line(m, {0, 0, 0}, {60, 0, 0}, n, cw);
-  for (int i = 4; i < n; i += 4) m.point_masses.push_back({nodes[i], 0.195});
-  catena::test::set_reference_frames(m);
-  catena::test::pin(m, nodes.front());
-  catena::test::pin(m, nodes.back());
-  m.elastic_supports.push_back({nodes[n / 2], Vec3(0, 300, 300), Vec3::Zero()});
-  return m;
+  return catena::test::cable_line_with_items({1.8e7, 195.0, 1.35, tau, 20000.0 / 1.8e7, {}}, 0.0);
 }
 
 double nonzeros(Mat A) {
@@ -54,13 +42,8 @@ TEST(CompactMass, SameProductFewerEntries) {
   const catena::MatHandle C = catena::assembly::compact_copy(M.get());
 
   // A partition-independent x: a function of the global index.
-  PetscInt lo = 0, hi = 0;
-  CATENA_PETSC(VecGetOwnershipRange(x.get(), &lo, &hi));
-  for (PetscInt i = lo; i < hi; ++i)
-    CATENA_PETSC(
-        VecSetValue(x.get(), i, std::sin(0.7 * static_cast<double>(i)) + 0.3, INSERT_VALUES));
-  CATENA_PETSC(VecAssemblyBegin(x.get()));
-  CATENA_PETSC(VecAssemblyEnd(x.get()));
+  CATENA_PETSC(VecSet(x.get(), 0.3));
+  catena::test::add_wave(x.get(), 1.0, 0.7, 0.0);
   CATENA_PETSC(MatMult(M.get(), x.get(), full.get()));
   CATENA_PETSC(MatMult(C.get(), x.get(), compact.get()));
   PetscReal scale = 0.0, diff = 0.0;

@@ -24,6 +24,7 @@
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
+#include "global_vectors.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 
@@ -31,6 +32,9 @@ using catena::Vec3;
 namespace model = catena::model;
 namespace assembly = catena::assembly;
 namespace solvers = catena::solvers;
+
+using catena::test::add_wave;
+using catena::test::max_abs;
 
 namespace {
 
@@ -52,23 +56,6 @@ model::Model cable_line(int* constrained_node = nullptr) {
   pinned.node_a = nodes[2 * kElements / 3];
   m.constraints.push_back(pinned);
   if (constrained_node) *constrained_node = pinned.node_a;
-  return m;
-}
-
-// x += amplitude · sin(k·i + phase) over the owned global indices i (partition-independent).
-void add_wave(Vec x, double amplitude, double k, double phase) {
-  PetscInt lo = 0, hi = 0;
-  CATENA_PETSC(VecGetOwnershipRange(x, &lo, &hi));
-  for (PetscInt i = lo; i < hi; ++i)
-    CATENA_PETSC(
-        VecSetValue(x, i, amplitude * std::sin(k * static_cast<double>(i) + phase), ADD_VALUES));
-  CATENA_PETSC(VecAssemblyBegin(x));
-  CATENA_PETSC(VecAssemblyEnd(x));
-}
-
-double max_abs(Vec x) {
-  PetscReal m = 0.0;
-  CATENA_PETSC(VecNorm(x, NORM_INFINITY, &m));
   return m;
 }
 

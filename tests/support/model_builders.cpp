@@ -90,4 +90,18 @@ analysis: {type: dynamic, duration: 1.0}
 )";
 }
 
+model::Model cable_line_with_items(const model::CableProps& section, double support_damping) {
+  model::Model m;
+  m.gravity = Vec3(0, 0, -9.81);
+  const int n = 24;
+  const auto nodes = add_line(m, {0, 0, 0}, {60, 0, 0}, n, section);
+  for (int i = 4; i < n; i += 4) m.point_masses.push_back({nodes[i], 0.195});
+  set_reference_frames(m);
+  pin(m, nodes.front());
+  pin(m, nodes.back());
+  m.elastic_supports.push_back(
+      {nodes[n / 2], Vec3(0, 300, 300), Vec3(0, support_damping, support_damping)});
+  return m;
+}
+
 }  // namespace catena::test

@@ -28,6 +28,11 @@ void clamp(model::Model& m, int node);  // fix all 12 nodal DOFs (trimmed to the
 // direction (model::Support::slope_direction), the slope's length free.
 void clamp_direction(model::Model& m, int node);
 
+// A 60 m cable line of 24 `section` elements along x, pinned at both ends, with point
+// masses of 0.195 kg at every fourth node and an elastic support at the middle node
+// (300 N/m and `support_damping` N·s/m in y and z); gravity −z.
+model::Model cable_line_with_items(const model::CableProps& section, double support_damping);
+
 // Scene text: a 30 m contact wire at 20 kN (60 cables, pinned ends) with an EN 50318
 // pantograph pressing 120 N at 60 m/s from `start` metres (a dynamic analysis of 1 s).
 std::string pantograph_on_wire_scene(double start);
