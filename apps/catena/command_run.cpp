@@ -107,6 +107,10 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
       std::fprintf(stderr, "catena: warning: %s\n", warning.c_str());
     std::fflush(stderr);
   }
+  if (cl.realtime && m.analysis != model::AnalysisType::dynamic)
+    throw InputError({cl.scene, 0, "--realtime"},
+                     "--realtime measures a dynamic run against the wall clock; this scene's "
+                     "analysis is static (analysis.type: static)");
   // Before any solving: a run must not end by finding that it cannot write its results.
   check_output_path(comm, m, cl.output.has_value());
   // One run at a time per output name (and its checkpoint and partial output).
@@ -120,10 +124,6 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   if (cl.restart)
     throw InputError({cl.scene, 0, "--restart"},
                      "--restart continues a dynamic run from its checkpoint; this scene's "
-                     "analysis is static (analysis.type: static)");
-  if (cl.realtime)
-    throw InputError({cl.scene, 0, "--realtime"},
-                     "--realtime measures a dynamic run against the wall clock; this scene's "
                      "analysis is static (analysis.type: static)");
   const double start = MPI_Wtime();
   assembly::SecondOrderSystem system(comm, m);

@@ -25,20 +25,28 @@ void RealtimeMonitor::step(double t) {
     s_.worst_time = t;
   }
   // Every deadline this step reached (a step longer than the interval reaches several);
-  // the tolerance keeps a step ending on a sample time from missing it by round-off.
+  // the tolerance keeps a step ending on a sample time from missing it by round-off. With
+  // output at every step (interval 0) each step is an interval of its own.
+  if (interval_ <= 0.0) {
+    deadline(now, t - t_start_);
+    return;
+  }
   const double tolerance = 1e-9 * interval_;
   while (t - t_start_ >= static_cast<double>(next_interval_) * interval_ - tolerance) {
-    const double simulated = static_cast<double>(next_interval_) * interval_;
-    const double lag = (now - start_) - simulated;
-    ++s_.intervals;
-    if (lag > 0.0) {
-      ++s_.behind;
-      if (lag > s_.largest_lag) {
-        s_.largest_lag = lag;
-        s_.lag_time = t_start_ + simulated;
-      }
-    }
+    deadline(now, static_cast<double>(next_interval_) * interval_);
     ++next_interval_;
+  }
+}
+
+void RealtimeMonitor::deadline(double now, double simulated) {
+  const double lag = (now - start_) - simulated;
+  ++s_.intervals;
+  if (lag > 0.0) {
+    ++s_.behind;
+    if (lag > s_.largest_lag) {
+      s_.largest_lag = lag;
+      s_.lag_time = t_start_ + simulated;
+    }
   }
 }
 
@@ -88,15 +96,19 @@ std::vector<std::pair<std::string, double>> RealtimeMonitor::statistics(const Re
 
 void RealtimeMonitor::print(int rank, const RealtimeSummary& s, double interval, std::FILE* out) {
   if (rank != 0) return;
+  char each[48];
+  if (interval > 0.0)
+    std::snprintf(each, sizeof each, "%g s each", interval);
+  else
+    std::snprintf(each, sizeof each, "one per step");
   if (s.behind == 0)
-    std::fprintf(out,
-                 "realtime: all %ld output intervals (%g s each) ended within the wall clock\n",
-                 s.intervals, interval);
+    std::fprintf(out, "realtime: all %ld output intervals (%s) ended within the wall clock\n",
+                 s.intervals, each);
   else
     std::fprintf(out,
-                 "realtime: %ld of %ld output intervals (%g s each) ended behind the wall clock; "
+                 "realtime: %ld of %ld output intervals (%s) ended behind the wall clock; "
                  "the largest lag %.3g s at t = %g s\n",
-                 s.behind, s.intervals, interval, s.largest_lag, s.lag_time);
+                 s.behind, s.intervals, each, s.largest_lag, s.lag_time);
   if (s.steps > 0)
     std::fprintf(out,
                  "realtime: wall time per step (with its output): mean %.3g ms, 99th "

@@ -47,6 +47,9 @@ class RealtimeMonitor {
   bool enabled() const { return enabled_; }
 
  private:
+  // Not collective (rank 0). The deadline of an interval ending `simulated` s after t_start.
+  void deadline(double now, double simulated);
+
   bool enabled_, active_;
   double t_start_, interval_, start_, last_;
   long next_interval_ = 1;  // the interval whose deadline comes next (1-based)

@@ -78,9 +78,11 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   const SecondOrderSystem& sys = system_;
   const model::Model& m = *sys.model_;
   const std::vector<int> supported = model::supported_nodes(m);  // replicated, ascending
-  auto slot = [&](int node) {
-    return static_cast<size_t>(std::lower_bound(supported.begin(), supported.end(), node) -
-                               supported.begin());
+  // The node's row, or −1 for a node that is no support (a neighbour of one, held only in a
+  // 2D line's plane: its reaction is not reported).
+  auto slot = [&](int node) -> std::ptrdiff_t {
+    const auto at = std::lower_bound(supported.begin(), supported.end(), node);
+    return at != supported.end() && *at == node ? at - supported.begin() : -1;
   };
 
   // Partial sums of the support force on each nodal DOF, completed by an allreduce. The
@@ -95,12 +97,15 @@ Reactions StateView::reactions(const EvalPoint& p) const {
         const std::vector<couplings::DofKey>& keys = e->dofs();
         for (size_t k = 0; k < f_el.size(); ++k) {
           const int node = keys[k].index, comp = keys[k].component;
+          const std::ptrdiff_t row = slot(node);
+          if (row < 0) continue;
+          double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];
           // A linked slope's force is a reaction too: its part along the tangent, the
           // stretch's equation, sums to zero over the node's couplings.
           if (e->origin() == ElementOrigin::elastic_support)
-            partial[kBlock * slot(node) + comp] -= f_el[k];
+            entry -= f_el[k];
           else if (dofs.global[k] < 0 || sys.dofs_.linked(node, comp))
-            partial[kBlock * slot(node) + comp] += f_el[k];
+            entry += f_el[k];
         }
       },
       &sys.at_supports_);  // only the couplings at supported nodes contribute
@@ -112,7 +117,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   const LocalArrayRead q(sys.q_work_.get());
   for (int node : supported) {
     if (sys.partition_.node_owner[node] != rank) continue;
-    const double* R = &total[kBlock * slot(node)];
+    const double* R = &total[kBlock * static_cast<size_t>(slot(node))];
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(node));
     r.nodes.push_back(node);
     for (int d = 0; d < 3; ++d) r.force.push_back(R[kind.position + d]);

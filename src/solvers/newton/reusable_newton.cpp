@@ -288,6 +288,15 @@ NewtonResult ReusableNewton::linear_step(Vec x) {
     invalidate_tangent();
     return result;
   }
+  // No residual follows at the new iterate: a factorisation without pivoting (PETSc's LU)
+  // may return a non-finite update without reporting it, which would be accepted here.
+  PetscReal step_norm = 0.0;
+  CATENA_PETSC(VecNorm(step_.get(), NORM_INFINITY, &step_norm));
+  if (!std::isfinite(step_norm)) {
+    result.failure = "the Newton step is not finite";
+    invalidate_tangent();
+    return result;
+  }
   CATENA_PETSC(VecAXPY(x, -1.0, step_.get()));
   result.converged = true;
   return result;

@@ -53,7 +53,7 @@ struct HhtIntegrator::Impl {
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   VecHandle f1, residual, error, work;
-  long steps_since_tangent = 0;  // linearly implicit: steps taken with the current tangent
+  long steps_since_tangent = 0;  // linearly implicit: steps accepted with the current tangent
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
@@ -117,8 +117,7 @@ struct HhtIntegrator::Impl {
     const long tangents_before = newton->counters().tangent_evaluations;
     const NewtonResult r = newton->linear_step(state.pending_a());  // f1 = f_p, residual = R_p
     if (!r.converged) return r;
-    const bool refreshed = newton->counters().tangent_evaluations != tangents_before;
-    steps_since_tangent = refreshed ? 1 : steps_since_tangent + 1;
+    if (newton->counters().tangent_evaluations != tangents_before) steps_since_tangent = 0;
     CATENA_PETSC(VecWAXPY(work.get(), -1.0, state.pending_a(), state.a()));  // δ
     CATENA_PETSC(MatMult(mass_product.get(), work.get(), error.get()));      // M δ
     CATENA_PETSC(VecAXPY(error.get(), -1.0, residual.get()));                // M δ − R_p
@@ -196,6 +195,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
                                                       " is outside the accepted range [-1/3, 0]");
   impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
+  CATENA_ASSERT(
+      !options.linearly_implicit || !system.has_constraints(),
+      "HHT's linearly implicit step takes no constraints (the scene reader refuses them)");
   for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.work, &s.q_known, &s.v_known,
                        &s.tangent_q, &s.tangent_v})
     *v = system.create_vector();
@@ -243,7 +245,12 @@ HhtIntegrator::~HhtIntegrator() = default;
 
 std::string HhtIntegrator::name() const {
   char text[64];
-  std::snprintf(text, sizeof text, "hht(alpha=%g)", impl_->options.alpha);
+  // The linearly implicit step is another method: a checkpoint of one does not continue
+  // as the other (checkpoints name their integrator).
+  std::snprintf(
+      text, sizeof text,
+      impl_->options.linearly_implicit ? "hht(alpha=%g, linearly implicit)" : "hht(alpha=%g)",
+      impl_->options.alpha);
   return text;
 }
 
@@ -284,6 +291,7 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
 void HhtIntegrator::accept() {
   Impl& s = *impl_;
   s.state.accept("HhtIntegrator");
+  if (s.options.linearly_implicit) ++s.steps_since_tangent;
   std::swap(s.f0, s.f1);
   s.scale0 = s.scale1;
   ++s.counters.steps_accepted;
