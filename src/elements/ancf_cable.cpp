@@ -130,9 +130,7 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
 
   Blocks f;
   for (auto& b : f) b.setZero();
-  // Left uninitialised unless requested: a residual evaluation needs neither, and zeroing
-  // 2 × 144 values per call was a measurable part of it.
-  std::array<std::array<Mat3, 4>, 4> K, C;
+  std::array<std::array<Mat3, 4>, 4> K{}, C{};
   if (r.stiffness)
     for (auto& row : K)
       for (auto& b : row) b.setZero();
