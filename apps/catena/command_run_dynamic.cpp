@@ -22,6 +22,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/assembly/state_view.hpp"
+#include "catena/catenary/modal_build.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/checkpoint.hpp"
@@ -29,6 +30,7 @@
 #include "catena/io/run_files.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
+#include "catena/solvers/modal/modal_integrator.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
@@ -117,6 +119,8 @@ class OutputObserver : public solvers::TransientObserver {
       contacts.force.push_back(c.force);
       contacts.position.push_back(c.position);
     }
+    // The modal model's forces are its own (its q leaves out the static correction).
+    if (std::vector<double> own; integrator_.contact_forces_at(t, own)) contacts.force = own;
     const assembly::Reactions reactions = view_.reactions({q, v, {}, t});
     writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
                           {reactions.force, reactions.moment});
@@ -124,7 +128,8 @@ class OutputObserver : public solvers::TransientObserver {
 
   void step(const solvers::StepRecord& r) override {
     io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}};
-    if (!system_.model().contacts.empty())
+    if (integrator_.contact_forces_at(integrator_.time(), record.contact_force)) {
+    } else if (!system_.model().contacts.empty())
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
@@ -338,6 +343,31 @@ void linearize_structure(assembly::SecondOrderSystem& system, Vec q0, int rank) 
         n);
 }
 
+// Collective. analysis.structure: modal — the modal model about q0 (the static
+// equilibrium), with its summary line.
+std::unique_ptr<solvers::TimeIntegrator> make_modal_integrator(assembly::SecondOrderSystem& system,
+                                                               Vec q0, double cutoff, int rank) {
+  if (rank == 0) {
+    std::printf("modal model: modes below %g Hz (spectrum slicing)...\n", cutoff);
+    std::fflush(stdout);
+  }
+  catenary::ModalBuildReport report;
+  solvers::ModalModel model = [&] {
+    const LogStage stage("Modes");
+    return catenary::build_modal_model(system, q0, cutoff, &report);
+  }();
+  if (rank == 0) {
+    const std::vector<double>& f = model.frequency_hz;
+    std::printf(
+        "modal model: %zu modes (%.3f to %.3f Hz), %zu pantograph DOFs, %zu droppers that may "
+        "go slack; eigen-solve %.2f s (%d restarts, largest residual %.1e), build %.2f s\n",
+        f.size(), f.front(), f.back(), model.pantograph_dofs.size(), model.dynamics.droppers.size(),
+        report.eigen_seconds, report.krylov_restarts, report.worst_residual, report.seconds);
+    std::fflush(stdout);
+  }
+  return std::make_unique<solvers::ModalIntegrator>(std::move(model));
+}
+
 }  // namespace
 
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
@@ -354,6 +384,16 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   options.t_end = dyn.duration;
   options.sample_interval = m.output.interval;
   options.step = solvers::make_step_control(dyn.integrator);
+
+  // The modal model is built about the static equilibrium before anything asks the
+  // integrator's name (a checkpoint of another model, or of other modes, is refused).
+  VecHandle modal_q0;
+  if (dyn.structure == model::StructureModel::modal) {
+    modal_q0 = system.create_vector();
+    system.reference_state(modal_q0.get());
+    solve_initial_statics(system, modal_q0.get(), cl, rank);
+    integrator = make_modal_integrator(system, modal_q0.get(), dyn.modal_cutoff, rank);
+  }
 
   std::optional<io::Checkpoint> resumed;
   if (cl.restart) {
@@ -380,7 +420,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
               " s is not beyond the checkpoint's t = " + std::to_string(resumed->facts.time) +
               " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
               std::to_string(2 * resumed->facts.time));
-    if (dyn.linear_structure) {
+    if (dyn.structure == model::StructureModel::linear) {
       // The linearisation point is the static equilibrium, which the checkpoint does not
       // hold: solved again (the same scene gives the same equilibrium).
       VecHandle q0 = system.create_vector();
@@ -408,9 +448,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                   static_cast<long long>(resumed->facts.steps));
     if (rank == 0) print_restart_exactness(*resumed, *integrator, mpi_size(comm));
   } else {
-    if (dyn.initial.from_static) {
+    if (modal_q0) {
+      CATENA_PETSC(VecCopy(modal_q0.get(), q.get()));
+    } else if (dyn.initial.from_static) {
       solve_initial_statics(system, q.get(), cl, rank);
-      if (dyn.linear_structure) linearize_structure(system, q.get(), rank);
+      if (dyn.structure == model::StructureModel::linear)
+        linearize_structure(system, q.get(), rank);
     }
     apply_initial_conditions(system, q.get(), v.get());
     integrator->set_state(0.0, q.get(), v.get(), nullptr);

@@ -204,20 +204,32 @@ void read_initial(const Field& initial, Model& model) {
   for (auto& [node, offset] : offsets) ic.offsets.push_back(offset);
 }
 
-// `structure`: nonlinear (default) or linear about the initial static equilibrium, which
+// `structure`: nonlinear (default), linear about the initial static equilibrium, or modal
+// (its modes below `modal_cutoff`); both of the latter start from that equilibrium, which
 // must then exist (initial.from: static).
-void read_structure(const Field& structure, Model& model) {
-  static const std::vector<std::string> choices{"nonlinear", "linear"};
+void read_structure(const Field& analysis, Model& model) {
+  const Field structure = analysis.child("structure");
+  static const std::vector<std::string> choices{"nonlinear", "linear", "modal"};
   const std::string name = structure.text_or("nonlinear");
   if (std::find(choices.begin(), choices.end(), name) == choices.end())
     structure.fail("unknown structure '" + name +
                    "'; accepted: nonlinear (the default), linear "
-                   "(cables and beams linearised about the initial static equilibrium)");
-  model.dynamic_options.linear_structure = name == "linear";
-  if (model.dynamic_options.linear_structure && !model.dynamic_options.initial.from_static)
-    structure.fail(
-        "a linear structure is linearised about the static equilibrium, so it starts there: "
-        "set analysis.initial.from: static (or leave 'from' out), not reference");
+                   "(cables and beams linearised about the initial static equilibrium), modal "
+                   "(the linearised catenary's modes below analysis.modal_cutoff)");
+  DynamicOptions& o = model.dynamic_options;
+  o.structure = name == "linear"  ? StructureModel::linear
+                : name == "modal" ? StructureModel::modal
+                                  : StructureModel::nonlinear;
+  if (o.structure != StructureModel::nonlinear && !o.initial.from_static)
+    structure.fail("a " + name +
+                   " structure is linearised about the static equilibrium, so it starts there: "
+                   "set analysis.initial.from: static (or leave 'from' out), not reference");
+  const Field cutoff = analysis.child("modal_cutoff");
+  if (o.structure != StructureModel::modal) {
+    fail_if_present(cutoff, "'modal_cutoff' applies to analysis.structure: modal");
+    return;
+  }
+  o.modal_cutoff = cutoff.real_or(kDefaultModalCutoff, RealRange::positive("Hz"));
 }
 
 // A fixed step longer than the run would be one step over the whole duration, with
@@ -246,6 +258,7 @@ void read_dynamics(const Field& scene, Model& model) {
     fail_if_present(analysis.child("initial"), "'initial'" + why);
     fail_if_present(analysis.child("structure"),
                     "'structure'" + why + " (statics solves the nonlinear equilibrium)");
+    fail_if_present(analysis.child("modal_cutoff"), "'modal_cutoff'" + why);
     fail_if_present(scene.child("integrator"),
                     "integrator settings apply to analysis.type: dynamic");
     for (const char* key : {"interval", "flush_wall_seconds", "checkpoint_wall_seconds"})
@@ -255,7 +268,7 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
-  read_structure(analysis.child("structure"), model);
+  read_structure(analysis, model);
   read_integrator(scene.child("integrator"), model.constraints.size(),
                   model.dynamic_options.integrator);
   check_step_within_duration(scene.child("integrator").child("dt"), duration,

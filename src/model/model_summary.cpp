@@ -214,12 +214,20 @@ std::string describe(const Model& model, int n_ranks_running) {
     t.row("initial state", model.dynamic_options.initial.from_static ? "static equilibrium (below)"
                                                                      : "reference configuration");
     t.row("structure",
-          model.dynamic_options.linear_structure
+          model.dynamic_options.structure == StructureModel::modal
+              ? "modal: the structure linearised about the initial static equilibrium, the "
+                "catenary in its modes below " +
+                    format_number(model.dynamic_options.modal_cutoff) +
+                    " Hz (analysis.modal_cutoff; higher modes and large motions left out), "
+                    "the pantographs in their own DOFs; contact and slack droppers nonlinear "
+                    "(as forces at their points)"
+          : model.dynamic_options.structure == StructureModel::linear
               ? "linear: cables and beams linearised about the initial static equilibrium "
                 "(constant stiffness and damping; large motions and the stiffness the "
                 "tension changes with them left out); bars, springs, masses, tension-only "
                 "cables and contacts nonlinear"
-              : "nonlinear (analysis.structure: linear linearises the cables and beams)");
+              : "nonlinear (analysis.structure: linear linearises the cables and beams, "
+                "modal keeps the catenary's modes below a cut-off)");
   }
   t.row("analysis", std::string(model.analysis == AnalysisType::dynamic ? "initial " : "") +
                         "static; load steps initial " + format_number(s.initial_load_step) +

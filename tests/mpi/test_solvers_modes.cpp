@@ -10,7 +10,12 @@
 //    Richardson extrapolation; the closed form is the inextensible thin beam's);
 //  - each shape, normalised to unit modal mass, is the sine n of the closed form;
 //  - the eigenpairs' residuals are at the solver's tolerance;
-//  - the same frequencies on every rank count (against MPI_COMM_SELF).
+//  - the same frequencies on every rank count (against MPI_COMM_SELF);
+//  - the modes below a cut-off (compute_modes_below, spectrum slicing, the modal model's
+//    solver): exactly the ten below 10.5 Hz (f_10 = 10.157, f_11 = 11.2 Hz; the first axial
+//    mode is at 30 Hz), with the same frequencies, unit modal mass, and zero on DOFs left
+//    out of `keep` (here the wire's first interior node's x: its modes then are those of a
+//    wire whose node cannot move along it, which for bending modes changes nothing).
 // The wire lies in the x–z plane (y and slope y held), so each bending mode appears once.
 #include <gtest/gtest.h>
 
@@ -135,6 +140,42 @@ TEST(Modes, SameFrequenciesOnEveryRankCount) {
   const Result alone = modes_on(MPI_COMM_SELF);
   for (int k = 0; k < kModes; ++k)
     EXPECT_NEAR(here.frequency[k], alone.frequency[k], 1e-10 * alone.frequency[k]);
+}
+
+TEST(Modes, ModesBelowACutOffAreAllOfThem) {
+  ct::ensure_petsc();
+  const model::Model m = tensioned_wire(120);
+  catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector();
+  system.reference_state(q.get());
+  catena::MatHandle K = system.create_matrix(), M = system.create_matrix();
+  const catena::assembly::EvalPoint at{q.get(), nullptr, {}, 0.0};
+  system.jacobian(at, {1.0, 0.0, 0.0, 0.0, 0.0}, K.get());
+  system.jacobian(at, {0.0, 0.0, 1.0, 0.0, 0.0}, M.get());
+  const catena::assembly::DofMap& dofs = system.dof_map();
+  const PetscInt left_out = dofs.global_dof(1, 0);  // node 1's x
+  std::vector<PetscInt> keep;
+  for (PetscInt g = dofs.first_owned(); g < dofs.first_owned() + dofs.n_owned(); ++g)
+    if (g != left_out) keep.push_back(g);
+  const catena::solvers::Modes modes =
+      catena::solvers::compute_modes_below(K.get(), M.get(), keep, 10.5, q.get(), "test", "cutoff");
+  ASSERT_EQ(modes.frequency.size(), static_cast<std::size_t>(kModes));
+  for (int k = 0; k < kModes; ++k) {
+    EXPECT_NEAR(modes.frequency[k] / closed_form(k + 1), 1.0, 5e-6) << "mode " << k + 1;
+    EXPECT_LT(modes.residual[k], 1e-8);
+    catena::VecHandle Mx = system.create_vector();
+    MatMult(M.get(), modes.shape[k].get(), Mx.get());
+    PetscScalar mass = 0.0;
+    VecDot(Mx.get(), modes.shape[k].get(), &mass);
+    EXPECT_NEAR(mass, 1.0, 1e-10);
+    PetscInt first = 0, end = 0;
+    VecGetOwnershipRange(modes.shape[k].get(), &first, &end);
+    if (left_out >= first && left_out < end) {
+      PetscScalar value = 1.0;
+      VecGetValues(modes.shape[k].get(), 1, &left_out, &value);
+      EXPECT_EQ(value, 0.0);
+    }
+  }
 }
 
 }  // namespace

@@ -128,6 +128,17 @@ class SecondOrderSystem {
   // linearised.
   int linearize_elements(Vec q0, const std::function<bool(int)>& linearize);
 
+  // Collective. The structure without its moving contacts and moving loads, linearised
+  // about q0 (v = 0, t = 0, the end of the load path): K = ∂f/∂q, C = ∂f/∂v, M and
+  // f0 = f(q0, 0) over every other coupling (elements, masses, supports, dead loads), so
+  // that f ≈ f0 + K (q − q0) + C v. The modal model's matrices (solvers/modal). Before
+  // linearize_elements (asserted).
+  struct StructureMatrices {
+    MatHandle K, C, M;
+    VecHandle f0;
+  };
+  StructureMatrices structure_matrices(Vec q0);
+
   // True if the static load path needs its second phase (some cable's prestrain is below
   // the path's tensioning prestrain, see elements::LocalState).
   bool has_slack_prestrain() const;

@@ -208,12 +208,27 @@ struct MovingContact {
   double aerodynamic_coefficient = 0.0;  // N·s²/m²: the uplift is F0 + c·speed²
 };
 
+// analysis.structure: what of the structure's nonlinearity a dynamic run keeps.
+enum class StructureModel {
+  nonlinear,  // all of it (the default)
+  // cables and beams (not tension-only ones) linearised about the initial static
+  // equilibrium (elements/linearized.hpp); bars, springs, masses, constraints, loads and
+  // contacts stay as they are
+  linear,
+  // the structure linearised about the static equilibrium, the catenary in its modes below
+  // modal_cutoff, contacts and slack droppers as forces (solvers/modal/modal_model.hpp)
+  modal,
+};
+
+// Hz: the default analysis.modal_cutoff, twice the 20 Hz upper limit of the band in which
+// EN 50318 evaluates the contact force (docs/integrators.md, "Modal model": the statistics'
+// convergence against the cut-off).
+inline constexpr double kDefaultModalCutoff = 40.0;
+
 struct DynamicOptions {
   double duration = 0.0;  // s, > 0
-  // analysis.structure: linear: cables and beams (not tension-only ones) linearised about
-  // the initial static equilibrium (elements/linearized.hpp); bars, springs, masses,
-  // constraints, loads and contacts stay as they are.
-  bool linear_structure = false;
+  StructureModel structure = StructureModel::nonlinear;
+  double modal_cutoff = 0.0;  // Hz, analysis.modal_cutoff (structure: modal)
   IntegratorOptions integrator;
   InitialConditions initial;
 };

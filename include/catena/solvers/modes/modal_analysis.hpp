@@ -35,4 +35,15 @@ struct Modes {
 // (a mechanism or an unstable state) or fewer modes converge than asked for.
 Modes compute_modes(assembly::SecondOrderSystem& system, Vec q, const ModalOptions& options);
 
+// Collective. Every mode of K φ = ω² M φ over the DOFs in `keep` (this rank's owned global
+// indices, ascending; the other DOFs held at zero) with frequency ≤ cutoff (Hz), by
+// SLEPc's spectrum slicing (Krylov–Schur, shift-and-invert, the MUMPS LDLᵀ's inertia
+// counting the eigenvalues below each shift, so none is missed). Shapes are vectors laid
+// out as `like`, zero outside `keep`, normalised to unit modal mass. K and M must be
+// symmetric (the structure's, not the Newton matrices'). Throws NumericalError when K
+// cannot be factored or a mode fails to converge, InputError (naming `key` of
+// `scene`) when no mode lies below the cut-off.
+Modes compute_modes_below(Mat K, Mat M, const std::vector<PetscInt>& keep, double cutoff, Vec like,
+                          const std::string& scene, const std::string& key);
+
 }  // namespace catena::solvers

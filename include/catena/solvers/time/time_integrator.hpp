@@ -9,6 +9,7 @@
 #include <petscvec.h>
 
 #include <string>
+#include <vector>
 
 #include "catena/solvers/resume_state.hpp"
 
@@ -104,6 +105,15 @@ class TimeIntegrator {
   virtual Vec pending_v() const = 0;
 
   virtual const IntegratorCounters& counters() const = 0;
+  // After accept(): the contact forces at t ∈ [previous_time(), time()] (N, one per
+  // model::MovingContact) into `out`, when the integrator solves for them itself (the modal
+  // model, whose q() leaves out the part they depend on); false: the caller evaluates them
+  // from the state.
+  virtual bool contact_forces_at(double t, std::vector<double>& out) const {
+    (void)t;
+    (void)out;
+    return false;
+  }
 
   // Restarts (resume_state.hpp). Not collective. After accept(): what this integrator
   // carries to its next step beyond (t, q, v, a), its counters included; the vectors are

@@ -1,0 +1,99 @@
+#pragma once
+// Steps the modal model (modal_model.hpp) on plain arrays: each mode and the pantographs'
+// DOFs by their exact step under loads linear over the step (exact_step.hpp), the contact
+// and slack-dropper forces at the step's end solved together with it.
+//
+// The end-of-step state is affine in the unknown site forces λ (F per contact, ΔT per
+// dropper): η₁ = η_free + Gu1 ∘ Σ λ_l w_l (w: ψ(s₁) for a contact, −d for a dropper), and
+// the pantographs' u₁ likewise. The site laws are piecewise linear in λ, so a semi-smooth
+// Newton iteration on r(λ) = λ − law(λ) over the sites that are (or become) active ends
+// after a few iterations with the exact answer of the discrete system: contact loss and
+// slack droppers are decided at the step's end, implicitly, so neither limits the step
+// (an explicit force with the dropper's 10⁵ N/m against a mode's mass would). A dropper
+// joins the iteration when its tension would turn negative; the others cost one product
+// D η per iteration (D: droppers × modes).
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "catena/solvers/modal/exact_step.hpp"
+#include "catena/solvers/modal/modal_model.hpp"
+
+namespace catena::solvers {
+
+struct ModalState {
+  double t = 0.0;
+  Eigen::VectorXd eta, eta_dot;       // modal coordinates (kg^½ m) and their rates
+  Eigen::VectorXd u, u_dot;           // pantograph DOFs' displacements from q0 and velocities
+  std::vector<double> contact_force;  // N, per contact (≥ 0)
+  std::vector<double> slack;          // N, per dropper: the tension it does not carry (≥ 0)
+};
+
+struct ModalStepResult {
+  bool converged = false;
+  int iterations = 0;  // of the site forces' Newton iteration
+  std::string failure;
+};
+
+class ModalStepper {
+ public:
+  explicit ModalStepper(ModalDynamics dynamics);
+
+  const ModalDynamics& dynamics() const { return d_; }
+  // The state at rest in the static equilibrium at time t (all displacements zero), its site
+  // forces settled.
+  ModalState rest(double t) const;
+  // Sets s's contact forces and dropper slack from its positions and velocities (a state
+  // given from outside, e.g. a restart).
+  void settle_forces(ModalState& s) const;
+  // One step of h from `from` into `to`.
+  ModalStepResult step(const ModalState& from, double h, ModalState& to);
+  // η̈ and ü at s.
+  void accelerations(const ModalState& s, Eigen::VectorXd& eta_ddot, Eigen::VectorXd& u_ddot) const;
+  // Contact c's penetration δ (m) at s (positive: in contact), for tests and output.
+  double penetration(const ModalState& s, std::size_t c) const;
+
+ private:
+  // A contact's wire at the contact point at time t: on its path or not, ψ_i and ∂ψ_i/∂s,
+  // the static wire height w0 and its slope.
+  struct Site {
+    bool on_path = false;
+    Eigen::VectorXd psi, dpsi;
+    double w0 = 0.0, dw0 = 0.0;
+    // Static correction (zero without): the residual flexibility of the point with itself
+    // and with each dropper's elongation, and its residual static displacement.
+    double r_self = 0.0, r_static = 0.0;
+    Eigen::VectorXd r_dropper;
+  };
+  Site site(std::size_t c, double t) const;
+  struct Measures {
+    double delta = 0.0, rate = 0.0;  // contact
+  };
+  // `residual`: the wire's residual (static correction) displacement at the point.
+  Measures contact_measures(std::size_t c, const Site& at, const Eigen::VectorXd& eta,
+                            const Eigen::VectorXd& eta_dot, const Eigen::VectorXd& u,
+                            const Eigen::VectorXd& u_dot, double residual) const;
+  // The droppers' elongations at η with the static correction's part for the site forces
+  // (contact forces per contact, slack per dropper).
+  Eigen::VectorXd elongations(const Eigen::VectorXd& eta, const std::vector<Site>& sites,
+                              const std::vector<double>& contact_force,
+                              const std::vector<double>& slack) const;
+  double contact_law(std::size_t c, const Measures& m) const;
+  // Modal load p and the pantographs' M⁻¹ × load g at s (the sites at s.t).
+  void loads(const ModalState& s, Eigen::VectorXd& p, Eigen::VectorXd& g) const;
+  struct Propagator {
+    double h = 0.0;
+    Eigen::ArrayXd Euu, Euv, Evu, Evv, Gu0, Gu1, Gv0, Gv1;  // per mode
+    ExactStep pantograph;
+  };
+  const Propagator& propagator(double h);
+
+  ModalDynamics d_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D_;  // droppers × modes
+  Eigen::VectorXd dropper_tension_, dropper_stiffness_, dropper_damping_;
+  Eigen::MatrixXd Mp_inverse_;
+  Eigen::VectorXd constant_g_;           // M_p⁻¹ (−f0_p)
+  std::vector<Propagator> propagators_;  // the steps used so far (usually one or two)
+};
+
+}  // namespace catena::solvers

@@ -1,0 +1,177 @@
+#include "catena/solvers/modal/modal_integrator.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+
+namespace catena::solvers {
+
+ModalIntegrator::ModalIntegrator(ModalModel model)
+    : model_(std::move(model)), stepper_(model_.dynamics) {
+  for (VecHandle* v : {&q_, &v_, &a_, &pending_q_, &pending_v_, &work_})
+    CATENA_PETSC(VecDuplicate(model_.q0.get(), v->out()));
+  PetscInt first = 0, end = 0;
+  CATENA_PETSC(VecGetOwnershipRange(model_.q0.get(), &first, &end));
+  for (const PetscInt g : model_.pantograph_dofs)
+    owned_pantograph_.push_back(g >= first && g < end ? g - first : -1);
+  current_ = previous_ = pending_ = stepper_.rest(0.0);
+}
+
+std::string ModalIntegrator::name() const {
+  std::ostringstream s;
+  s << "modal(" << model_.dynamics.n_modes() << " modes <= " << model_.cutoff_hz << " Hz)";
+  return s.str();
+}
+
+Eigen::VectorXd ModalIntegrator::pantograph_values(Vec v) const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(owned_pantograph_.size()));
+  const double* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(v, &a));
+  for (std::size_t k = 0; k < owned_pantograph_.size(); ++k)
+    if (owned_pantograph_[k] >= 0) y(static_cast<Eigen::Index>(k)) = a[owned_pantograph_[k]];
+  CATENA_PETSC(VecRestoreArrayRead(v, &a));
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(v));
+  if (y.size() > 0)
+    MPI_Allreduce(MPI_IN_PLACE, y.data(), static_cast<int>(y.size()), MPI_DOUBLE, MPI_SUM, comm);
+  return y;
+}
+
+void ModalIntegrator::rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y, bool rates,
+                              Vec out) const {
+  if (rates)
+    CATENA_PETSC(VecSet(out, 0.0));
+  else
+    CATENA_PETSC(VecCopy(model_.q0.get(), out));
+  std::vector<Vec> shapes;
+  shapes.reserve(model_.shapes.size());
+  for (const VecHandle& s : model_.shapes) shapes.push_back(s.get());
+  CATENA_PETSC(VecMAXPY(out, static_cast<PetscInt>(shapes.size()), x.data(), shapes.data()));
+  double* a = nullptr;
+  CATENA_PETSC(VecGetArray(out, &a));
+  for (std::size_t k = 0; k < owned_pantograph_.size(); ++k)
+    if (owned_pantograph_[k] >= 0) a[owned_pantograph_[k]] += y(static_cast<Eigen::Index>(k));
+  CATENA_PETSC(VecRestoreArray(out, &a));
+}
+
+void ModalIntegrator::set_state(double t, Vec q, Vec v, Vec) {
+  // η = Φᵀ M (q − q0), η̇ = Φᵀ M v (unit modal masses); the pantographs' DOFs as they are.
+  std::vector<Vec> shapes;
+  for (const VecHandle& s : model_.shapes) shapes.push_back(s.get());
+  const auto n = static_cast<PetscInt>(shapes.size());
+  ModalState s;
+  s.t = t;
+  s.eta.resize(n);
+  s.eta_dot.resize(n);
+  CATENA_PETSC(VecWAXPY(work_.get(), -1.0, model_.q0.get(), q));
+  s.u = pantograph_values(work_.get());
+  CATENA_PETSC(MatMult(model_.M.get(), work_.get(), a_.get()));
+  CATENA_PETSC(VecMDot(a_.get(), n, shapes.data(), s.eta.data()));
+  if (v) {
+    s.u_dot = pantograph_values(v);
+    CATENA_PETSC(MatMult(model_.M.get(), v, a_.get()));
+    CATENA_PETSC(VecMDot(a_.get(), n, shapes.data(), s.eta_dot.data()));
+  } else {
+    s.u_dot = Eigen::VectorXd::Zero(s.u.size());
+    s.eta_dot.setZero();
+  }
+  stepper_.settle_forces(s);
+  current_ = previous_ = pending_ = s;
+  q_fresh_ = v_fresh_ = a_fresh_ = pending_fresh_ = false;
+}
+
+StepOutcome ModalIntegrator::attempt(double h, const ErrorTolerance*) {
+  const ModalStepResult r = stepper_.step(current_, h, pending_);
+  pending_fresh_ = false;
+  StepOutcome out;
+  out.converged = r.converged;
+  out.newton_iterations = r.iterations;
+  out.failure = r.failure;
+  counters_.newton_iterations += r.iterations;
+  if (!r.converged) {
+    ++counters_.newton_failures;
+    ++counters_.steps_rejected;
+  }
+  return out;
+}
+
+void ModalIntegrator::accept() {
+  previous_ = current_;
+  current_ = pending_;
+  ++counters_.steps_accepted;
+  q_fresh_ = v_fresh_ = a_fresh_ = false;
+}
+
+bool ModalIntegrator::contact_forces_at(double t, std::vector<double>& out) const {
+  const double h = current_.t - previous_.t;
+  const double s = h > 0.0 ? std::clamp((t - previous_.t) / h, 0.0, 1.0) : 1.0;
+  out.resize(current_.contact_force.size());
+  for (std::size_t c = 0; c < out.size(); ++c)
+    out[c] = (1.0 - s) * previous_.contact_force[c] + s * current_.contact_force[c];
+  return true;
+}
+
+Vec ModalIntegrator::q() const {
+  if (!q_fresh_) rebuild(current_.eta, current_.u, false, q_.get());
+  q_fresh_ = true;
+  return q_.get();
+}
+
+Vec ModalIntegrator::v() const {
+  if (!v_fresh_) rebuild(current_.eta_dot, current_.u_dot, true, v_.get());
+  v_fresh_ = true;
+  return v_.get();
+}
+
+Vec ModalIntegrator::a() const {
+  if (!a_fresh_) {
+    Eigen::VectorXd eta_ddot, u_ddot;
+    stepper_.accelerations(current_, eta_ddot, u_ddot);
+    rebuild(eta_ddot, u_ddot, true, a_.get());
+  }
+  a_fresh_ = true;
+  return a_.get();
+}
+
+Vec ModalIntegrator::pending_q() const {
+  if (!pending_fresh_) {
+    rebuild(pending_.eta, pending_.u, false, pending_q_.get());
+    rebuild(pending_.eta_dot, pending_.u_dot, true, pending_v_.get());
+  }
+  pending_fresh_ = true;
+  return pending_q_.get();
+}
+
+Vec ModalIntegrator::pending_v() const {
+  pending_q();
+  return pending_v_.get();
+}
+
+void ModalIntegrator::interpolate(double t, Vec q, Vec v) {
+  // Cubic Hermite over the last step: positions from (x, ẋ), rates from (ẋ, ẍ) at both ends.
+  const double h = current_.t - previous_.t;
+  const double s = h > 0.0 ? (t - previous_.t) / h : 1.0;
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+  if (q) {
+    const Eigen::VectorXd eta = h00 * previous_.eta + h10 * h * previous_.eta_dot +
+                                h01 * current_.eta + h11 * h * current_.eta_dot;
+    const Eigen::VectorXd u =
+        h00 * previous_.u + h10 * h * previous_.u_dot + h01 * current_.u + h11 * h * current_.u_dot;
+    rebuild(eta, u, false, q);
+  }
+  if (v) {
+    Eigen::VectorXd e0, e1, u0, u1;
+    stepper_.accelerations(previous_, e0, u0);
+    stepper_.accelerations(current_, e1, u1);
+    const Eigen::VectorXd eta_dot =
+        h00 * previous_.eta_dot + h10 * h * e0 + h01 * current_.eta_dot + h11 * h * e1;
+    const Eigen::VectorXd u_dot =
+        h00 * previous_.u_dot + h10 * h * u0 + h01 * current_.u_dot + h11 * h * u1;
+    rebuild(eta_dot, u_dot, true, v);
+  }
+}
+
+}  // namespace catena::solvers

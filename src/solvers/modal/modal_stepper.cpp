@@ -1,0 +1,417 @@
+#include "catena/solvers/modal/modal_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "catena/core/error.hpp"
+#include "catena/elements/hermite.hpp"
+
+namespace catena::solvers {
+namespace {
+
+constexpr int kMaxIterations = 50;
+// |λ − law(λ)| ≤ kTolerance (1 + |λ|) per site: far below the forces' round-off relevance.
+constexpr double kTolerance = 1e-10;
+
+}  // namespace
+
+ModalStepper::ModalStepper(ModalDynamics dynamics) : d_(std::move(dynamics)) {
+  const int n = d_.n_modes();
+  CATENA_ASSERT(n > 0 && static_cast<int>(d_.zeta.size()) == n &&
+                    static_cast<int>(d_.constant_load.size()) == n,
+                "ModalStepper: one ω, ζ and constant load per mode");
+  const auto n_droppers = static_cast<Eigen::Index>(d_.droppers.size());
+  D_.resize(n_droppers, n);
+  dropper_tension_.resize(n_droppers);
+  dropper_stiffness_.resize(n_droppers);
+  dropper_damping_.resize(n_droppers);
+  for (Eigen::Index j = 0; j < n_droppers; ++j) {
+    const ModalDropper& dr = d_.droppers[static_cast<std::size_t>(j)];
+    CATENA_ASSERT(static_cast<int>(dr.elongation.size()) == n, "a dropper row per mode");
+    D_.row(j) = Eigen::Map<const Eigen::RowVectorXd>(dr.elongation.data(), n);
+    dropper_tension_(j) = dr.tension;
+    dropper_stiffness_(j) = dr.stiffness;
+    dropper_damping_(j) = dr.damping;
+  }
+  const int np = d_.n_pantograph_dofs();
+  if (np > 0) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(d_.Mp);
+    if (!lu.isInvertible())
+      throw NumericalError(
+          "modal model: the pantographs' mass matrix is singular (a pantograph DOF without "
+          "mass); give every stage a mass");
+    Mp_inverse_ = lu.inverse();
+    constant_g_ = Mp_inverse_ * (-d_.f0p);
+  }
+  for (const ModalContact& c : d_.contacts)
+    if (c.head.size() != np)
+      throw NumericalError("modal model: a contact's head row is not over the pantograph DOFs");
+}
+
+ModalStepper::Site ModalStepper::site(std::size_t c, double t) const {
+  const ModalContact& k = d_.contacts[c];
+  Site at;
+  const double s = k.position(t);
+  if (!k.stations.contains(s)) return at;
+  at.on_path = true;
+  const std::size_t e = k.stations.element_at(s);
+  const double L = k.stations.element_length(e);
+  const elements::HermiteAt h =
+      elements::hermite_at(std::clamp(s - k.stations.start[e], 0.0, L), L);
+  const int n = d_.n_modes();
+  // Blocks r_A, r_A,x, r_B, r_B,x carry S1..S4 (elements/hermite.hpp).
+  const int row[4] = {2 * k.node_a[e], 2 * k.node_a[e] + 1, 2 * k.node_b[e], 2 * k.node_b[e] + 1};
+  at.psi = Eigen::VectorXd::Zero(n);
+  at.dpsi = Eigen::VectorXd::Zero(n);
+  for (int b = 0; b < 4; ++b) {
+    const Eigen::Map<const Eigen::VectorXd> r(k.rows.data() + static_cast<std::size_t>(row[b]) * n,
+                                              n);
+    at.psi += h.s[b] * r;
+    at.dpsi += h.ds[b] * r;
+    at.w0 += h.s[b] * k.reference[static_cast<std::size_t>(row[b])];
+    at.dw0 += h.ds[b] * k.reference[static_cast<std::size_t>(row[b])];
+  }
+  if (d_.static_correction) {
+    const double* R = k.residual.data() + 16 * e;
+    const auto nd = static_cast<Eigen::Index>(d_.droppers.size());
+    at.r_dropper = Eigen::VectorXd::Zero(nd);
+    for (int b = 0; b < 4; ++b) {
+      for (int b2 = 0; b2 < 4; ++b2) at.r_self += h.s[b] * R[4 * b + b2] * h.s[b2];
+      at.r_static += h.s[b] * k.residual_static[static_cast<std::size_t>(row[b])];
+      if (nd > 0)
+        at.r_dropper +=
+            h.s[b] * Eigen::Map<const Eigen::VectorXd>(
+                         k.residual_dropper.data() + static_cast<std::size_t>(row[b]) * nd, nd);
+    }
+  }
+  return at;
+}
+
+ModalStepper::Measures ModalStepper::contact_measures(
+    std::size_t c, const Site& at, const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot,
+    const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot, double residual) const {
+  const ModalContact& k = d_.contacts[c];
+  Measures m;
+  // δ = up·r_head − w(s); δ̇ = up·ṙ_head − (∂w/∂t at the material point) − speed ∂w/∂s.
+  const double head = k.head_reference + (u.size() > 0 ? k.head.dot(u) : 0.0);
+  const double head_rate = u_dot.size() > 0 ? k.head.dot(u_dot) : 0.0;
+  m.delta = head - (at.w0 + at.psi.dot(eta) + residual);
+  m.rate = head_rate - at.psi.dot(eta_dot) - k.speed * (at.dw0 + at.dpsi.dot(eta));
+  return m;
+}
+
+double ModalStepper::contact_law(std::size_t c, const Measures& m) const {
+  const ModalContact& k = d_.contacts[c];
+  if (m.delta <= 0.0) return 0.0;
+  return std::max(0.0, k.stiffness * m.delta + k.damping * m.rate);
+}
+
+Eigen::VectorXd ModalStepper::elongations(const Eigen::VectorXd& eta,
+                                          const std::vector<Site>& sites,
+                                          const std::vector<double>& contact_force,
+                                          const std::vector<double>& slack) const {
+  Eigen::VectorXd eps = D_ * eta;
+  if (!d_.static_correction) return eps;
+  eps += d_.dropper_residual_static;
+  for (std::size_t c = 0; c < sites.size(); ++c)
+    if (sites[c].on_path && contact_force[c] != 0.0) eps += contact_force[c] * sites[c].r_dropper;
+  for (std::size_t j = 0; j < slack.size(); ++j)
+    if (slack[j] != 0.0) eps -= slack[j] * d_.dropper_residual.col(static_cast<Eigen::Index>(j));
+  return eps;
+}
+
+double ModalStepper::penetration(const ModalState& s, std::size_t c) const {
+  const Site at = site(c, s.t);
+  if (!at.on_path) return 0.0;
+  const double residual =
+      at.r_self * s.contact_force[c] + at.r_static -
+      (at.r_dropper.size() > 0 ? at.r_dropper.dot(Eigen::Map<const Eigen::VectorXd>(
+                                     s.slack.data(), static_cast<Eigen::Index>(s.slack.size())))
+                               : 0.0);
+  return contact_measures(c, at, s.eta, s.eta_dot, s.u, s.u_dot, residual).delta;
+}
+
+ModalState ModalStepper::rest(double t) const {
+  ModalState s;
+  s.t = t;
+  s.eta = Eigen::VectorXd::Zero(d_.n_modes());
+  s.eta_dot = Eigen::VectorXd::Zero(d_.n_modes());
+  s.u = Eigen::VectorXd::Zero(d_.n_pantograph_dofs());
+  s.u_dot = Eigen::VectorXd::Zero(d_.n_pantograph_dofs());
+  settle_forces(s);
+  return s;
+}
+
+void ModalStepper::settle_forces(ModalState& s) const {
+  // Each contact alone with its own static correction (F = k δ with δ = δ_modes − r F, the
+  // coupling through other sites' residual flexibility left out), then the droppers.
+  std::vector<Site> sites(d_.contacts.size());
+  s.contact_force.assign(d_.contacts.size(), 0.0);
+  for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
+    sites[c] = site(c, s.t);
+    if (!sites[c].on_path) continue;
+    const Measures m =
+        contact_measures(c, sites[c], s.eta, s.eta_dot, s.u, s.u_dot, sites[c].r_static);
+    const double k = d_.contacts[c].stiffness;
+    const double F = contact_law(c, m) / (1.0 + k * sites[c].r_self);
+    s.contact_force[c] = m.delta - sites[c].r_self * F > 0.0 ? F : 0.0;
+  }
+  s.slack.assign(d_.droppers.size(), 0.0);
+  if (d_.droppers.empty()) return;
+  const Eigen::VectorXd eps = elongations(s.eta, sites, s.contact_force, s.slack);
+  const Eigen::VectorXd rate = D_ * s.eta_dot;
+  for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(j);
+    const double elastic = dropper_tension_(i) + dropper_stiffness_(i) * eps(i);
+    if (elastic < 0.0) s.slack[j] = -(elastic + dropper_damping_(i) * rate(i));
+  }
+}
+
+void ModalStepper::loads(const ModalState& s, Eigen::VectorXd& p, Eigen::VectorXd& g) const {
+  const int n = d_.n_modes();
+  p = Eigen::Map<const Eigen::VectorXd>(d_.constant_load.data(), n);
+  Eigen::VectorXd head_load = Eigen::VectorXd::Zero(d_.n_pantograph_dofs());
+  for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
+    if (s.contact_force[c] == 0.0) continue;
+    const Site at = site(c, s.t);
+    if (!at.on_path) continue;
+    p += s.contact_force[c] * at.psi;
+    head_load -= s.contact_force[c] * d_.contacts[c].head;
+  }
+  for (std::size_t j = 0; j < d_.droppers.size(); ++j)
+    if (s.slack[j] != 0.0) p -= s.slack[j] * D_.row(static_cast<Eigen::Index>(j)).transpose();
+  if (d_.n_pantograph_dofs() > 0) g = constant_g_ + Mp_inverse_ * head_load;
+}
+
+void ModalStepper::accelerations(const ModalState& s, Eigen::VectorXd& eta_ddot,
+                                 Eigen::VectorXd& u_ddot) const {
+  Eigen::VectorXd p, g;
+  loads(s, p, g);
+  const Eigen::Map<const Eigen::ArrayXd> omega(d_.omega.data(), d_.n_modes());
+  const Eigen::Map<const Eigen::ArrayXd> zeta(d_.zeta.data(), d_.n_modes());
+  eta_ddot = (p.array() - 2.0 * zeta * omega * s.eta_dot.array() - omega.square() * s.eta.array())
+                 .matrix();
+  if (d_.n_pantograph_dofs() > 0)
+    u_ddot = g - Mp_inverse_ * (d_.Kp * s.u + d_.Cp * s.u_dot);
+  else
+    u_ddot.resize(0);
+}
+
+const ModalStepper::Propagator& ModalStepper::propagator(double h) {
+  for (const Propagator& p : propagators_)
+    if (p.h == h) return p;
+  // Fixed steps use dt and, once, the cut last step; adaptive runs would fill this without
+  // end, so only the latest few are kept.
+  if (propagators_.size() >= 4) propagators_.erase(propagators_.begin());
+  Propagator p;
+  p.h = h;
+  const int n = d_.n_modes();
+  for (Eigen::ArrayXd* a : {&p.Euu, &p.Euv, &p.Evu, &p.Evv, &p.Gu0, &p.Gu1, &p.Gv0, &p.Gv1})
+    a->resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double w = d_.omega[static_cast<std::size_t>(i)];
+    const ExactStep e = exact_step(Eigen::MatrixXd::Constant(1, 1, w * w),
+                                   Eigen::MatrixXd::Constant(1, 1, 2.0 * d_.zeta[i] * w), h);
+    p.Euu(i) = e.Euu(0, 0);
+    p.Euv(i) = e.Euv(0, 0);
+    p.Evu(i) = e.Evu(0, 0);
+    p.Evv(i) = e.Evv(0, 0);
+    p.Gu0(i) = e.Gu0(0, 0);
+    p.Gu1(i) = e.Gu1(0, 0);
+    p.Gv0(i) = e.Gv0(0, 0);
+    p.Gv1(i) = e.Gv1(0, 0);
+  }
+  if (d_.n_pantograph_dofs() > 0)
+    p.pantograph = exact_step(Mp_inverse_ * d_.Kp, Mp_inverse_ * d_.Cp, h);
+  propagators_.push_back(std::move(p));
+  return propagators_.back();
+}
+
+ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState& to) {
+  const Propagator& P = propagator(h);
+  const int n = d_.n_modes();
+  const int np = d_.n_pantograph_dofs();
+  const std::size_t nc = d_.contacts.size();
+  Eigen::VectorXd p0, g0;
+  loads(from, p0, g0);
+  const Eigen::Map<const Eigen::ArrayXd> pc(d_.constant_load.data(), n);
+  // The free end state: the loads at the end without the site forces.
+  const Eigen::ArrayXd eta_free =
+      P.Euu * from.eta.array() + P.Euv * from.eta_dot.array() + P.Gu0 * p0.array() + P.Gu1 * pc;
+  const Eigen::ArrayXd rate_free =
+      P.Evu * from.eta.array() + P.Evv * from.eta_dot.array() + P.Gv0 * p0.array() + P.Gv1 * pc;
+  Eigen::VectorXd u_free, u_rate_free;
+  if (np > 0) {
+    const ExactStep& E = P.pantograph;
+    u_free = E.Euu * from.u + E.Euv * from.u_dot + E.Gu0 * g0 + E.Gu1 * constant_g_;
+    u_rate_free = E.Evu * from.u + E.Evv * from.u_dot + E.Gv0 * g0 + E.Gv1 * constant_g_;
+  }
+  to.t = from.t + h;
+  std::vector<Site> sites(nc);
+  for (std::size_t c = 0; c < nc; ++c) sites[c] = site(c, to.t);
+
+  // The unknowns: the contacts on their paths, and the droppers slack at the start or that
+  // turn slack during the iteration. Each has a modal load w and a pantograph load.
+  struct Unknown {
+    bool contact = false;
+    std::size_t index = 0;
+    double lambda = 0.0;
+    Eigen::VectorXd d_eta, d_rate, d_u, d_u_rate;  // the end state's change per unit λ
+  };
+  std::vector<Unknown> unknowns;
+  std::vector<char> is_unknown(d_.droppers.size(), 0);
+  const auto add = [&](bool contact, std::size_t index, double lambda) {
+    Unknown x;
+    x.contact = contact;
+    x.index = index;
+    x.lambda = lambda;
+    const Eigen::ArrayXd w =
+        contact ? sites[index].psi.array()
+                : Eigen::ArrayXd(-D_.row(static_cast<Eigen::Index>(index)).transpose().array());
+    x.d_eta = (P.Gu1 * w).matrix();
+    x.d_rate = (P.Gv1 * w).matrix();
+    if (np > 0) {
+      if (contact) {
+        const Eigen::VectorXd g = Mp_inverse_ * (-d_.contacts[index].head);
+        x.d_u = P.pantograph.Gu1 * g;
+        x.d_u_rate = P.pantograph.Gv1 * g;
+      } else {
+        x.d_u = Eigen::VectorXd::Zero(np);
+        x.d_u_rate = Eigen::VectorXd::Zero(np);
+      }
+    }
+    unknowns.push_back(std::move(x));
+  };
+  for (std::size_t c = 0; c < nc; ++c)
+    if (sites[c].on_path) add(true, c, from.contact_force[c]);
+  for (std::size_t j = 0; j < d_.droppers.size(); ++j)
+    if (from.slack[j] > 0.0) {
+      add(false, j, from.slack[j]);
+      is_unknown[j] = 1;
+    }
+
+  ModalStepResult result;
+  Eigen::VectorXd eta, rate, u, u_rate, residual;
+  Eigen::MatrixXd J;
+  std::vector<Measures> measures(nc);
+  for (int it = 0;; ++it) {
+    eta = eta_free.matrix();
+    rate = rate_free.matrix();
+    u = u_free;
+    u_rate = u_rate_free;
+    for (const Unknown& x : unknowns) {
+      if (x.lambda == 0.0) continue;
+      eta += x.lambda * x.d_eta;
+      rate += x.lambda * x.d_rate;
+      if (np > 0) {
+        u += x.lambda * x.d_u;
+        u_rate += x.lambda * x.d_u_rate;
+      }
+    }
+    // The site forces of this iterate, for the static correction.
+    std::vector<double> forces(nc, 0.0), slack(d_.droppers.size(), 0.0);
+    for (const Unknown& x : unknowns) (x.contact ? forces : slack)[x.index] = x.lambda;
+    // Droppers turning slack join the unknowns (at λ = 0; their residual says by how much).
+    Eigen::VectorXd eps, eps_rate;
+    if (!d_.droppers.empty()) {
+      eps = elongations(eta, sites, forces, slack);
+      eps_rate = D_ * rate;
+      for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
+        const auto i = static_cast<Eigen::Index>(j);
+        if (!is_unknown[j] && dropper_tension_(i) + dropper_stiffness_(i) * eps(i) < 0.0) {
+          add(false, j, 0.0);
+          is_unknown[j] = 1;
+        }
+      }
+    }
+    const auto m = static_cast<Eigen::Index>(unknowns.size());
+    residual.resize(m);
+    std::vector<char> active(static_cast<std::size_t>(m), 0);
+    double worst = 0.0;
+    for (Eigen::Index l = 0; l < m; ++l) {
+      const Unknown& x = unknowns[static_cast<std::size_t>(l)];
+      double law = 0.0;
+      if (x.contact) {
+        const Site& at = sites[x.index];
+        double wire_residual = at.r_self * x.lambda + at.r_static;
+        if (at.r_dropper.size() > 0)
+          for (std::size_t j = 0; j < slack.size(); ++j)
+            wire_residual -= at.r_dropper(static_cast<Eigen::Index>(j)) * slack[j];
+        measures[x.index] = contact_measures(x.index, at, eta, rate, u, u_rate, wire_residual);
+        law = contact_law(x.index, measures[x.index]);
+        active[static_cast<std::size_t>(l)] = law > 0.0;
+      } else {
+        const auto i = static_cast<Eigen::Index>(x.index);
+        const double elastic = dropper_tension_(i) + dropper_stiffness_(i) * eps(i);
+        if (elastic < 0.0) {
+          law = -(elastic + dropper_damping_(i) * eps_rate(i));
+          active[static_cast<std::size_t>(l)] = 1;
+        }
+      }
+      residual(l) = x.lambda - law;
+      worst = std::max(worst, std::abs(residual(l)) / (1.0 + std::abs(x.lambda)));
+    }
+    if (worst <= kTolerance) {
+      result.converged = true;
+      result.iterations = it;
+      break;
+    }
+    if (it == kMaxIterations) {
+      std::ostringstream why;
+      why << "modal model: the contact and slack-dropper forces did not settle in "
+          << kMaxIterations << " iterations at t = " << to.t << " s (largest relative residual "
+          << worst << ")";
+      result.failure = why.str();
+      result.iterations = it;
+      return result;
+    }
+    // J = I − ∂law/∂λ over the unknowns (the active ones' rows).
+    J = Eigen::MatrixXd::Identity(m, m);
+    for (Eigen::Index l = 0; l < m; ++l) {
+      if (!active[static_cast<std::size_t>(l)]) continue;
+      const Unknown& x = unknowns[static_cast<std::size_t>(l)];
+      for (Eigen::Index k = 0; k < m; ++k) {
+        const Unknown& y = unknowns[static_cast<std::size_t>(k)];
+        double d_law = 0.0;
+        if (x.contact) {
+          const ModalContact& c = d_.contacts[x.index];
+          const Site& at = sites[x.index];
+          double d_delta = -at.psi.dot(y.d_eta);
+          double d_rate = -at.psi.dot(y.d_rate) - c.speed * at.dpsi.dot(y.d_eta);
+          if (np > 0) {
+            d_delta += c.head.dot(y.d_u);
+            d_rate += c.head.dot(y.d_u_rate);
+          }
+          // Static correction: the point's own residual flexibility, and a slack dropper's.
+          if (d_.static_correction)
+            d_delta -= y.contact ? (y.index == x.index ? at.r_self : 0.0)
+                                 : -at.r_dropper(static_cast<Eigen::Index>(y.index));
+          d_law = c.stiffness * d_delta + c.damping * d_rate;
+        } else {
+          const auto i = static_cast<Eigen::Index>(x.index);
+          const auto row = D_.row(i);
+          double d_eps = row.dot(y.d_eta);
+          if (d_.static_correction)
+            d_eps += y.contact ? sites[y.index].r_dropper(i)
+                               : -d_.dropper_residual(i, static_cast<Eigen::Index>(y.index));
+          d_law = -(dropper_stiffness_(i) * d_eps + dropper_damping_(i) * row.dot(y.d_rate));
+        }
+        J(l, k) -= d_law;
+      }
+    }
+    const Eigen::VectorXd step = J.partialPivLu().solve(-residual);
+    for (Eigen::Index l = 0; l < m; ++l) unknowns[static_cast<std::size_t>(l)].lambda += step(l);
+  }
+  to.eta = std::move(eta);
+  to.eta_dot = std::move(rate);
+  to.u = std::move(u);
+  to.u_dot = std::move(u_rate);
+  to.contact_force.assign(nc, 0.0);
+  to.slack.assign(d_.droppers.size(), 0.0);
+  for (const Unknown& x : unknowns)
+    (x.contact ? to.contact_force : to.slack)[x.index] = std::max(0.0, x.lambda);
+  return result;
+}
+
+}  // namespace catena::solvers
