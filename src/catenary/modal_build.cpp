@@ -289,13 +289,7 @@ ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, double
     dr.stiffness = bar.EA / l0;
     dr.tension = bar.EA * (length / l0 - 1.0);
     dr.damping = bar.damping;
-    if (dr.tension < 0.0)
-      throw InputError({m.source_file, 0, "analysis.structure"},
-                       "dropper (element " + std::to_string(el.id) +
-                           ") is slack in the static equilibrium (" + std::to_string(length) +
-                           " m, unstretched " + std::to_string(l0) +
-                           " m): the modal model linearises about taut droppers; use "
-                           "analysis.structure: linear or nonlinear");
+    dr.in_modes = length >= l0;  // TensionBar: slack (no force, no stiffness) when l < l0
     const Vec3 dir = chord / length;
     for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
       double s = 0.0;

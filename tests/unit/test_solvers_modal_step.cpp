@@ -11,7 +11,8 @@
 //    F = k_c (F0/k_p) / (1 + k_c/k_p + k_c/ω² + k_c r) (r: the static correction's residual
 //    flexibility, 0 and 1e-5 m/N); pulled down it loses contact (F = 0); a dropper pushed
 //    below its slack point settles where the linear structure without the dropper puts it,
-//    the tension it does not carry (its slack) the closed form's.
+//    the tension it does not carry (its slack) the closed form's; a dropper slack at rest
+//    (not in the mode) pulled taut carries the closed form's tension.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -159,6 +160,28 @@ TEST(ModalStepper, SlackDropperCarriesNoTension) {
   }
   EXPECT_NEAR(s.eta(0), -0.04, 1e-9);
   EXPECT_NEAR(s.slack[0], 30.0, 1e-6);
+}
+
+TEST(ModalStepper, DropperSlackAtRestTightensWhenPulled) {
+  // The dropper slack at q0 (tension −10 N: 1 cm short of taut at 1000 N/m) is not in the
+  // mode (ω² = 1000 s⁻² without it); a load of +50 N per unit modal mass pulls it taut:
+  // 1000 η = 50 − (−10 + 1000 η) gives η = 0.03 and the tension it then adds,
+  // −10 + 1000 η = 20 N.
+  cs::ModalDynamics d;
+  d.omega = {std::sqrt(1000.0)};
+  d.zeta = {0.2};
+  d.constant_load = {50.0};
+  d.f0p.resize(0);
+  d.droppers.push_back({{1.0}, -10.0, 1000.0, 0.0, false});
+  cs::ModalStepper stepper(d);
+  cs::ModalState s = stepper.rest(0.0), next;
+  EXPECT_EQ(s.slack[0], 0.0);
+  for (int k = 0; k < 20000; ++k) {
+    ASSERT_TRUE(stepper.step(s, 5e-4, next).converged);
+    s = next;
+  }
+  EXPECT_NEAR(s.eta(0), 0.03, 1e-9);
+  EXPECT_NEAR(s.slack[0], 20.0, 1e-6);
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 // path and each tension-only dropper's elongation per mode.
 //
 // Refused, with the reason: constraints (multipliers), moving loads, tension-only cables
-// (cable droppers: use the bar droppers), a tension-only bar slack at the equilibrium.
+// (cable droppers: use the bar droppers).
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/solvers/modal/modal_model.hpp"
 

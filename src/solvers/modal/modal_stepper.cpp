@@ -26,6 +26,7 @@ ModalStepper::ModalStepper(ModalDynamics dynamics) : d_(std::move(dynamics)) {
   dropper_tension_.resize(n_droppers);
   dropper_stiffness_.resize(n_droppers);
   dropper_damping_.resize(n_droppers);
+  dropper_sign_.resize(n_droppers);
   for (Eigen::Index j = 0; j < n_droppers; ++j) {
     const ModalDropper& dr = d_.droppers[static_cast<std::size_t>(j)];
     CATENA_ASSERT(static_cast<int>(dr.elongation.size()) == n, "a dropper row per mode");
@@ -33,6 +34,7 @@ ModalStepper::ModalStepper(ModalDynamics dynamics) : d_(std::move(dynamics)) {
     dropper_tension_(j) = dr.tension;
     dropper_stiffness_(j) = dr.stiffness;
     dropper_damping_(j) = dr.damping;
+    dropper_sign_(j) = dr.in_modes ? -1.0 : 1.0;
   }
   const int np = d_.n_pantograph_dofs();
   if (np > 0) {
@@ -121,6 +123,13 @@ Eigen::VectorXd ModalStepper::elongations(const Eigen::VectorXd& eta,
   return eps;
 }
 
+double ModalStepper::dropper_law(Eigen::Index j, double eps, double rate) const {
+  const double elastic = dropper_tension_(j) + dropper_stiffness_(j) * eps;
+  // Taut at q0 (sign −1): active while slack; slack at q0 (+1): active while taut.
+  if (dropper_sign_(j) * elastic <= 0.0) return 0.0;
+  return dropper_sign_(j) * (elastic + dropper_damping_(j) * rate);
+}
+
 double ModalStepper::penetration(const ModalState& s, std::size_t c) const {
   const Site at = site(c, s.t);
   if (!at.on_path) return 0.0;
@@ -163,8 +172,7 @@ void ModalStepper::settle_forces(ModalState& s) const {
   const Eigen::VectorXd rate = D_ * s.eta_dot;
   for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(j);
-    const double elastic = dropper_tension_(i) + dropper_stiffness_(i) * eps(i);
-    if (elastic < 0.0) s.slack[j] = -(elastic + dropper_damping_(i) * rate(i));
+    s.slack[j] = std::max(0.0, dropper_law(i, eps(i), rate(i)));
   }
 }
 
@@ -251,8 +259,9 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   std::vector<Site> sites(nc);
   for (std::size_t c = 0; c < nc; ++c) sites[c] = site(c, to.t);
 
-  // The unknowns: the contacts on their paths, and the droppers slack at the start or that
-  // turn slack during the iteration. Each has a modal load w and a pantograph load.
+  // The unknowns: the contacts on their paths, and the droppers whose correction is active
+  // at the start or turns active during the iteration. Each has a modal load w and a pantograph
+  // load.
   struct Unknown {
     bool contact = false;
     std::size_t index = 0;
@@ -312,14 +321,16 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     // The site forces of this iterate, for the static correction.
     std::vector<double> forces(nc, 0.0), slack(d_.droppers.size(), 0.0);
     for (const Unknown& x : unknowns) (x.contact ? forces : slack)[x.index] = x.lambda;
-    // Droppers turning slack join the unknowns (at λ = 0; their residual says by how much).
+    // Droppers whose correction turns active join the unknowns (at λ = 0; their residual
+    // says by how much).
     Eigen::VectorXd eps, eps_rate;
     if (!d_.droppers.empty()) {
       eps = elongations(eta, sites, forces, slack);
       eps_rate = D_ * rate;
       for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
         const auto i = static_cast<Eigen::Index>(j);
-        if (!is_unknown[j] && dropper_tension_(i) + dropper_stiffness_(i) * eps(i) < 0.0) {
+        if (!is_unknown[j] &&
+            dropper_sign_(i) * (dropper_tension_(i) + dropper_stiffness_(i) * eps(i)) > 0.0) {
           add(false, j, 0.0);
           is_unknown[j] = 1;
         }
@@ -344,8 +355,8 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
       } else {
         const auto i = static_cast<Eigen::Index>(x.index);
         const double elastic = dropper_tension_(i) + dropper_stiffness_(i) * eps(i);
-        if (elastic < 0.0) {
-          law = -(elastic + dropper_damping_(i) * eps_rate(i));
+        if (dropper_sign_(i) * elastic > 0.0) {
+          law = dropper_law(i, eps(i), eps_rate(i));
           active[static_cast<std::size_t>(l)] = 1;
         }
       }
@@ -395,7 +406,8 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
           if (d_.static_correction)
             d_eps += y.contact ? sites[y.index].r_dropper(i)
                                : -d_.dropper_residual(i, static_cast<Eigen::Index>(y.index));
-          d_law = -(dropper_stiffness_(i) * d_eps + dropper_damping_(i) * row.dot(y.d_rate));
+          d_law = dropper_sign_(i) *
+                  (dropper_stiffness_(i) * d_eps + dropper_damping_(i) * row.dot(y.d_rate));
         }
         J(l, k) -= d_law;
       }

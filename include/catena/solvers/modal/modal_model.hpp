@@ -12,8 +12,8 @@
 // with ψ_ci(s) = up·φ_i on the contact wire at the contact point s (the wire element's
 // Hermite shape functions), d_ji = e_j·(φ_i(B) − φ_i(A)) dropper j's elongation per unit η_i,
 // F_c the penalty contact force (model::MovingContact: F = max(0, k δ + c δ̇) while δ > 0)
-// and ΔT_j the tension a slack dropper does not carry (ΔT = −(T0 + k ε + c ε̇) while
-// T0 + k ε < 0, else 0; the linear part T0 + k ε + c ε̇ is in K and C). This struct is the
+// and ΔT_j the tension the modes get wrong for dropper j (ModalDropper: a dropper taut at q0
+// going slack, or one slack at q0 pulled taut). This struct is the
 // data; the catenary layer builds it (catenary/modal_build.hpp), ModalIntegrator steps it.
 #include <Eigen/Dense>
 #include <string>
@@ -44,12 +44,17 @@ struct ModalContact {
   double position(double t) const { return start + speed * t; }
 };
 
-// A tension-only dropper (bar), linearised along its static direction e.
+// A tension-only dropper (bar), linearised along its static direction e. Taut at q0, its
+// linear part T0 + k ε + c ε̇ is in the modes (K and C), and the correction takes it back
+// while it is slack (T0 + k ε < 0); slack at q0, nothing of it is in the modes, and the
+// correction adds its tension while it is taut. Either way the correction is
+// ΔT = T − T_modes ≥ 0, a tension along e.
 struct ModalDropper {
   std::vector<double> elongation;  // d_i = e·(φ_i(B) − φ_i(A)), m per unit η_i
-  double tension = 0.0;            // T0 at q0, N (≥ 0)
+  double tension = 0.0;            // T0 = EA (l/l0 − 1) at q0, N (< 0: slack there)
   double stiffness = 0.0;          // EA/l0, N/m
   double damping = 0.0;            // N·s/m, along the bar
+  bool in_modes = true;            // taut at q0 (T0 ≥ 0)
 };
 
 // Static correction of the truncated modes (the mode-acceleration method; Craig & Kurdila,

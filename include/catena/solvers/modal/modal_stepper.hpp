@@ -26,7 +26,8 @@ struct ModalState {
   Eigen::VectorXd eta, eta_dot;       // modal coordinates (kg^½ m) and their rates
   Eigen::VectorXd u, u_dot;           // pantograph DOFs' displacements from q0 and velocities
   std::vector<double> contact_force;  // N, per contact (≥ 0)
-  std::vector<double> slack;          // N, per dropper: the tension it does not carry (≥ 0)
+  // N, per dropper: the correction ΔT = T − T_modes (modal_model.hpp, ModalDropper), ≥ 0
+  std::vector<double> slack;
 };
 
 struct ModalStepResult {
@@ -78,7 +79,13 @@ class ModalStepper {
   Eigen::VectorXd elongations(const Eigen::VectorXd& eta, const std::vector<Site>& sites,
                               const std::vector<double>& contact_force,
                               const std::vector<double>& slack) const;
+  // The static correction's part of the droppers' elongations, added to eps.
+  void add_static_correction(Eigen::VectorXd& eps, const std::vector<Site>& sites,
+                             const std::vector<double>& contact_force,
+                             const std::vector<double>& slack) const;
   double contact_law(std::size_t c, const Measures& m) const;
+  // Dropper j's correction ΔT at elongation ε and rate ε̇, 0 when the modes have it right.
+  double dropper_law(Eigen::Index j, double eps, double rate) const;
   // Modal load p and the pantographs' M⁻¹ × load g at s (the sites at s.t).
   void loads(const ModalState& s, Eigen::VectorXd& p, Eigen::VectorXd& g) const;
   struct Propagator {
@@ -91,6 +98,7 @@ class ModalStepper {
   ModalDynamics d_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D_;  // droppers × modes
   Eigen::VectorXd dropper_tension_, dropper_stiffness_, dropper_damping_;
+  Eigen::VectorXd dropper_sign_;  // ∂ΔT/∂T_elastic where active: −1 in the modes, +1 not
   Eigen::MatrixXd Mp_inverse_;
   Eigen::VectorXd constant_g_;           // M_p⁻¹ (−f0_p)
   std::vector<Propagator> propagators_;  // the steps used so far (usually one or two)
