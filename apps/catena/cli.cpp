@@ -98,7 +98,8 @@ bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
   return true;
 }
 
-// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`; args[i] follows "stats".
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series S]`; args[i]
+// follows "stats".
 void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
   StatsArguments& st = cl.stats;
   for (; i < args.size(); ++i) {
@@ -127,10 +128,17 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
       if (!(st.cutoff_hz > 0.0))
         throw InputError({"", 0, "--cutoff"},
                          "the cutoff must be positive (got " + args[i] + " Hz)");
+    } else if (a == "--series") {
+      const std::string& series = value("--series");
+      if (series != "samples" && series != "steps")
+        throw InputError({"", 0, "--series"}, "unknown series '" + series +
+                                                  "'; accepted: samples (the default: "
+                                                  "/samples), steps (every step's contact force)");
+      st.steps = series == "steps";
     } else if (!a.empty() && a[0] == '-') {
       throw InputError({"", 0, "arguments"}, "unknown option '" + a +
                                                  "' for stats; accepted: --json, "
-                                                 "--section X0 X1, --cutoff HZ");
+                                                 "--section X0 X1, --cutoff HZ, --series S");
     } else if (st.file.empty()) {
       st.file = a;
     } else {
@@ -142,7 +150,7 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
   if (st.file.empty())
     throw InputError({"", 0, "OUT.h5"},
                      "no output file given; usage: catena stats OUT.h5 [--json] "
-                     "[--section X0 X1] [--cutoff HZ]");
+                     "[--section X0 X1] [--cutoff HZ] [--series samples|steps]");
 }
 }  // namespace
 

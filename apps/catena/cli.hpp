@@ -8,12 +8,13 @@
 
 namespace catena::app {
 
-// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`.
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series samples|steps]`.
 struct StatsArguments {
   std::string file;                              // a dynamic run's output
   bool json = false;                             // --json: JSON instead of the table
   std::optional<std::array<double, 2>> section;  // --section X0 X1 [m]; else the file's
   double cutoff_hz = 20.0;                       // --cutoff HZ: low-pass cutoff (−6 dB point)
+  bool steps = false;  // --series steps: the contact force of every step, not the samples'
 };
 
 // `catena elasticity SCENE [--set k=v ...] [--span N] [--step DX] [--force F] [--json]`.

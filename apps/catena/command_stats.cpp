@@ -84,9 +84,10 @@ void print_table(const std::string& path, const io::ContactRun& run,
                  const post::EvaluationSection& section, const StatsArguments& args) {
   std::printf("catena stats: %s\n", path.c_str());
   std::printf(
-      "  %zu samples every %g s (%g Hz); contact force low-pass filtered at %g Hz\n"
+      "  %zu %s every %g s (%g Hz); contact force low-pass filtered at %g Hz\n"
       "  (zero-phase 2nd-order Butterworth, forward and backward: -6 dB at %g Hz)\n",
-      run.n_samples, run.dt, 1.0 / run.dt, args.cutoff_hz, args.cutoff_hz);
+      run.n_samples, args.steps ? "steps (--series steps)" : "samples", run.dt, 1.0 / run.dt,
+      args.cutoff_hz, args.cutoff_hz);
   std::printf("  evaluation section [%g, %g] m along the path (%s)\n\n", section.x_start,
               section.x_end, args.section ? "--section" : "the run's evaluation section");
   int width = 10;
@@ -118,7 +119,8 @@ void print_table(const std::string& path, const io::ContactRun& run,
 // Rank 0's whole work: read, compute, print. Throws InputError for bad files/arguments.
 void stats_on_this_rank(const CommandLine& cl) {
   const StatsArguments& args = cl.stats;
-  const io::ContactRun run = io::read_contact_run(args.file);
+  const io::ContactRun run =
+      args.steps ? io::read_contact_run_steps(args.file) : io::read_contact_run(args.file);
   post::EvaluationSection section;
   if (args.section) {
     section = {(*args.section)[0], (*args.section)[1]};

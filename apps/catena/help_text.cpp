@@ -57,7 +57,9 @@ const CommandHelp* commands() {
            "  --ids                 also list the catenary's droppers and supports with their\n"
            "                        node and element ids (docs/catenary.md, \"Ids\")\n",
        false},
-      {"stats", "  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]\n",
+      {"stats",
+       "  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series "
+       "samples|steps]\n",
        R"(  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
           (serial: run it without mpirun)
 )",
@@ -67,6 +69,10 @@ const CommandHelp* commands() {
                         evaluation_start/evaluation_end; required if the run sets none)
   --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
                         at the cutoff; the sampling rate must be >= 10 x the cutoff)
+  --series S            samples (default): the output's samples; steps: the contact
+                        force of every step (fixed steps), the uplift from the samples
+                        interpolated: fine statistics from a run whose fields are written
+                        at a coarse output.interval
 )",
        false},
       {"modes",

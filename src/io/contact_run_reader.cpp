@@ -28,6 +28,8 @@ constexpr const char* positions_name = layout::positions.path;
 constexpr const char* pantographs_name = layout::pantographs_group;
 constexpr const char* node_positions_name = layout::node_positions.path;
 constexpr const char* registration_nodes_name = layout::registration_nodes.path;
+constexpr const char* step_time_name = layout::step_time.path;
+constexpr const char* step_contact_force_name = layout::step_contact_force.path;
 namespace root_attribute = layout::root_attribute;
 namespace pantograph_attribute = layout::pantograph_attribute;
 
@@ -198,17 +200,18 @@ void check_is_complete_dynamic_output(const Reader& r) {
            "the run's status is '" + status + "', not 'complete': statistics need a finished run");
 }
 
-double uniform_interval(const Reader& r, const std::vector<double>& t) {
-  if (t.size() < 2) r.fail(time_name, "fewer than 2 samples: no sampling interval");
+double uniform_interval(const Reader& r, const std::vector<double>& t,
+                        const char* name = time_name) {
+  if (t.size() < 2) r.fail(name, "fewer than 2 samples: no sampling interval");
   const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
-  if (!(dt > 0.0)) r.fail(time_name, "the sample times do not increase");
+  if (!(dt > 0.0)) r.fail(name, "the sample times do not increase");
   for (std::size_t k = 0; k + 1 < t.size(); ++k) {
     const double step = t[k + 1] - t[k];
     if (std::abs(step - dt) > sampling_tolerance * dt) {
       std::ostringstream os;
       os << "not uniformly sampled: samples " << k << " and " << k + 1 << " are " << step
          << " s apart, the mean interval is " << dt << " s";
-      r.fail(time_name, os.str());
+      r.fail(name, os.str());
     }
   }
   return dt;
@@ -347,6 +350,72 @@ ContactRun read_contact_run(const std::string& path) {
     for (std::size_t k = 0; k < run.n_samples; ++k) p.z[k] = z[k * nodes.size() + j];
     run.registration_points.push_back(std::move(p));
   }
+  return run;
+}
+
+namespace {
+
+// y (sampled at the ascending times t) at time x: linear between samples, extended by the
+// nearest pair beyond them.
+double interpolate(const std::vector<double>& t, const std::vector<double>& y, double x) {
+  const auto upper = std::upper_bound(t.begin(), t.end(), x);
+  std::size_t k = static_cast<std::size_t>(upper - t.begin());
+  k = std::clamp<std::size_t>(k, 1, t.size() - 1);
+  const double w = (x - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1.0 - w) * y[k - 1] + w * y[k];
+}
+
+}  // namespace
+
+ContactRun read_contact_run_steps(const std::string& path) {
+  ContactRun run = read_contact_run(path);
+  const Hdf5ErrorPrintingSuppressed quiet;
+  const Reader r(path);
+  const std::vector<double> sample_times = r.doubles(time_name, {run.n_samples});
+  for (const char* name : {step_time_name, step_contact_force_name})
+    if (!r.has_link(name)) r.fail(name, "missing: the run wrote no step records");
+  const std::vector<hsize_t> dims = r.dims(step_time_name);
+  if (dims.size() != 1) r.fail(step_time_name, "not one-dimensional");
+  const hsize_t n_steps = dims[0];
+  const auto n_pantographs = static_cast<hsize_t>(run.pantographs.size());
+  if (r.dims(step_contact_force_name) != std::vector<hsize_t>{n_steps, n_pantographs})
+    r.fail(step_contact_force_name, "not of shape (n_steps, n_pantographs)");
+  const std::vector<double> step_time = r.doubles(step_time_name, {n_steps});
+  const std::vector<double> step_force = r.doubles(step_contact_force_name, {n_steps, n_pantographs});
+  // The series: the first sample (the start), then every step after it.
+  std::vector<double> t{sample_times.front()};
+  std::vector<std::size_t> rows{0};
+  for (std::size_t k = 0; k < step_time.size(); ++k)
+    if (step_time[k] > t.front()) {
+      t.push_back(step_time[k]);
+      rows.push_back(k + 1);  // 0: the sample; k + 1: step k
+    }
+  // A last step cut short to land on the duration.
+  if (t.size() > 2) {
+    const double dt = t[1] - t[0], last = t.back() - t[t.size() - 2];
+    if (last < dt * (1.0 - 1e-6)) {
+      t.pop_back();
+      rows.pop_back();
+    }
+  }
+  run.dt = uniform_interval(r, t, step_time_name);
+  const std::size_t n = t.size();
+  for (std::size_t j = 0; j < run.pantographs.size(); ++j) {
+    post::PantographRecord& p = run.pantographs[j];
+    std::vector<double> force(n), position(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      force[k] = rows[k] == 0 ? p.force[0] : step_force[(rows[k] - 1) * n_pantographs + j];
+      position[k] = interpolate(sample_times, p.position, t[k]);
+    }
+    p.force = std::move(force);
+    p.position = std::move(position);
+  }
+  for (post::RegistrationPoint& point : run.registration_points) {
+    std::vector<double> z(n);
+    for (std::size_t k = 0; k < n; ++k) z[k] = interpolate(sample_times, point.z, t[k]);
+    point.z = std::move(z);
+  }
+  run.n_samples = n;
   return run;
 }
 

@@ -28,6 +28,15 @@ struct ContactRun {
 // pantographs, is not uniformly sampled or its datasets' shapes disagree.
 ContactRun read_contact_run(const std::string& path);
 
+// Not collective. As read_contact_run, on the time base of the accepted steps instead of the
+// samples (`catena stats --series steps`): the contact force of every step (/steps/
+// contact_force: a fixed-step run has it at every dt, whatever output.interval), the
+// sample at t = 0 first; the contact positions (linear in time) and the registration
+// points' heights interpolated linearly from the samples, so the uplift is as fine as the
+// output interval. A last step cut short to reach the duration is left out. Throws
+// InputError as above, and if the steps are not uniform (an adaptive run).
+ContactRun read_contact_run_steps(const std::string& path);
+
 // Not collective. The dataset ContactRun::dt comes from ("/time"), for messages naming it.
 const char* contact_run_times_dataset();
 
