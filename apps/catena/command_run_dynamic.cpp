@@ -360,9 +360,11 @@ std::unique_ptr<solvers::TimeIntegrator> make_modal_integrator(assembly::SecondO
     const std::vector<double>& f = model.frequency_hz;
     std::printf(
         "modal model: %zu modes (%.3f to %.3f Hz), %zu pantograph DOFs, %zu droppers that may "
-        "go slack; eigen-solve %.2f s (%d restarts, largest residual %.1e), build %.2f s\n",
+        "go slack; eigen-solve %.2f s (%d restarts, largest residual %.1e), static correction "
+        "%.2f s (%d solves), build %.2f s\n",
         f.size(), f.front(), f.back(), model.pantograph_dofs.size(), model.dynamics.droppers.size(),
-        report.eigen_seconds, report.krylov_restarts, report.worst_residual, report.seconds);
+        report.eigen_seconds, report.krylov_restarts, report.worst_residual,
+        report.correction_seconds, report.correction_solves, report.seconds);
     std::fflush(stdout);
   }
   return std::make_unique<solvers::ModalIntegrator>(std::move(model));
@@ -378,8 +380,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
   const model::DynamicOptions& dyn = m.dynamic_options;
+  const bool modal = dyn.structure == model::StructureModel::modal;
   std::unique_ptr<solvers::TimeIntegrator> integrator =
-      solvers::make_integrator(system, dyn.integrator);
+      modal ? nullptr : solvers::make_integrator(system, dyn.integrator);
   solvers::TransientOptions options;
   options.t_end = dyn.duration;
   options.sample_interval = m.output.interval;
@@ -388,11 +391,19 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   // The modal model is built about the static equilibrium before anything asks the
   // integrator's name (a checkpoint of another model, or of other modes, is refused).
   VecHandle modal_q0;
-  if (dyn.structure == model::StructureModel::modal) {
+  if (modal) {
     modal_q0 = system.create_vector();
     system.reference_state(modal_q0.get());
     solve_initial_statics(system, modal_q0.get(), cl, rank);
     integrator = make_modal_integrator(system, modal_q0.get(), dyn.modal_cutoff, rank);
+    if (rank == 0) {
+      std::printf(
+          "note: the modal model steps its modes and pantographs exactly; integrator.type "
+          "'%s' and its method settings are not used, integrator.dt and the step control "
+          "are\n",
+          dyn.integrator.type.c_str());
+      std::fflush(stdout);
+    }
   }
 
   std::optional<io::Checkpoint> resumed;

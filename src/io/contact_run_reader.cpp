@@ -381,7 +381,8 @@ ContactRun read_contact_run_steps(const std::string& path) {
   if (r.dims(step_contact_force_name) != std::vector<hsize_t>{n_steps, n_pantographs})
     r.fail(step_contact_force_name, "not of shape (n_steps, n_pantographs)");
   const std::vector<double> step_time = r.doubles(step_time_name, {n_steps});
-  const std::vector<double> step_force = r.doubles(step_contact_force_name, {n_steps, n_pantographs});
+  const std::vector<double> step_force =
+      r.doubles(step_contact_force_name, {n_steps, n_pantographs});
   // The series: the first sample (the start), then every step after it.
   std::vector<double> t{sample_times.front()};
   std::vector<std::size_t> rows{0};
