@@ -116,15 +116,9 @@ int add_static_correction(Mat K, Vec f0, const std::vector<PetscInt>& held,
   };
   const auto done = [](Vec x, const double* a) { CATENA_PETSC(VecRestoreArrayRead(x, &a)); };
   const auto dropper_row = [&](std::size_t j) { return d.droppers[j].elongation.data(); };
-
-  // Droppers' columns: R between each dropper and every site.
-  d.dropper_residual =
-      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nd));
-  for (std::size_t c = 0; c < d.contacts.size(); ++c)
-    d.contacts[c].residual_dropper.assign(contact_sites[c].node_sites.size() * nd, 0.0);
-  for (std::size_t j = 0; j < nd; ++j) {
-    Vec x = solver.solve(&dropper_sites[j]);
-    ++solves;
+  // Every site's load vector dotted with x (a solution): the droppers, then each contact's
+  // path sites, summed over the ranks.
+  const auto every_site = [&](Vec x) {
     const double* a = read(x);
     std::vector<double> dots;
     for (std::size_t i = 0; i < nd; ++i) dots.push_back(solver.local_dot(dropper_sites[i], a));
@@ -132,6 +126,17 @@ int add_static_correction(Mat K, Vec f0, const std::vector<PetscInt>& held,
       for (const SiteVector& s : cs.node_sites) dots.push_back(solver.local_dot(s, a));
     done(x, a);
     sum_all(dots, comm);
+    return dots;
+  };
+
+  // Droppers' columns: R between each dropper and every site.
+  d.dropper_residual =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nd));
+  for (std::size_t c = 0; c < d.contacts.size(); ++c)
+    d.contacts[c].residual_dropper.assign(contact_sites[c].node_sites.size() * nd, 0.0);
+  for (std::size_t j = 0; j < nd; ++j) {
+    const std::vector<double> dots = every_site(solver.solve(&dropper_sites[j]));
+    ++solves;
     std::size_t k = 0;
     for (std::size_t i = 0; i < nd; ++i, ++k)
       d.dropper_residual(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
@@ -207,15 +212,8 @@ int add_static_correction(Mat K, Vec f0, const std::vector<PetscInt>& held,
     CATENA_PETSC(VecAssemblyBegin(load.get()));
     CATENA_PETSC(VecAssemblyEnd(load.get()));
   }
-  Vec x = solver.solve(nullptr, load.get());
+  const std::vector<double> dots = every_site(solver.solve(nullptr, load.get()));
   ++solves;
-  const double* a = read(x);
-  std::vector<double> dots;
-  for (std::size_t i = 0; i < nd; ++i) dots.push_back(solver.local_dot(dropper_sites[i], a));
-  for (const ContactSites& cs : contact_sites)
-    for (const SiteVector& s : cs.node_sites) dots.push_back(solver.local_dot(s, a));
-  done(x, a);
-  sum_all(dots, comm);
   std::size_t k = 0;
   d.dropper_residual_static.resize(static_cast<Eigen::Index>(nd));
   for (std::size_t i = 0; i < nd; ++i, ++k)
