@@ -128,8 +128,8 @@ class OutputObserver : public solvers::TransientObserver {
 
   void step(const solvers::StepRecord& r) override {
     io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}};
-    if (integrator_.contact_forces_at(integrator_.time(), record.contact_force)) {
-    } else if (!system_.model().contacts.empty())
+    if (!integrator_.contact_forces_at(integrator_.time(), record.contact_force) &&
+        !system_.model().contacts.empty())
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);

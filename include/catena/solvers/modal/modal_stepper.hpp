@@ -10,8 +10,8 @@
 // after a few iterations with the exact answer of the discrete system: contact loss and
 // slack droppers are decided at the step's end, implicitly, so neither limits the step
 // (an explicit force with the dropper's 10⁵ N/m against a mode's mass would). A dropper
-// joins the iteration when its tension would turn negative; the others cost one product
-// D η per iteration (D: droppers × modes).
+// joins the iteration when its correction turns active; all of them cost two products,
+// D η and D η̇, per iteration (D: droppers × modes).
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -79,10 +79,6 @@ class ModalStepper {
   Eigen::VectorXd elongations(const Eigen::VectorXd& eta, const std::vector<Site>& sites,
                               const std::vector<double>& contact_force,
                               const std::vector<double>& slack) const;
-  // The static correction's part of the droppers' elongations, added to eps.
-  void add_static_correction(Eigen::VectorXd& eps, const std::vector<Site>& sites,
-                             const std::vector<double>& contact_force,
-                             const std::vector<double>& slack) const;
   double contact_law(std::size_t c, const Measures& m) const;
   // Dropper j's correction ΔT at elongation ε and rate ε̇, 0 when the modes have it right.
   double dropper_law(Eigen::Index j, double eps, double rate) const;
