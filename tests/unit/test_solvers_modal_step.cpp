@@ -16,8 +16,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
+#include "catena/elements/hermite.hpp"
 #include "catena/solvers/modal/exact_step.hpp"
 #include "catena/solvers/modal/modal_stepper.hpp"
 
@@ -185,3 +187,142 @@ TEST(ModalStepper, DropperSlackAtRestTightensWhenPulled) {
 }
 
 }  // namespace
+
+namespace site_laws {
+
+// A model with every kind of site at once: 12 modes, a two-DOF pantograph whose contact runs
+// over a three-element path, three droppers (one slack at rest), and a static correction
+// drawn from one symmetric positive definite R over all the sites, so that its parts agree.
+// Random but fixed (seeded) rows; the model is driven hard enough that the contact is lost
+// and regained and droppers slacken.
+struct Model {
+  cs::ModalDynamics d;
+  Eigen::MatrixXd R;  // over (path rows 0..7, droppers 8..10)
+};
+
+Model make_model() {
+  std::srand(7);
+  const auto uniform = [] { return 2.0 * std::rand() / RAND_MAX - 1.0; };
+  Model m;
+  cs::ModalDynamics& d = m.d;
+  const int n = 12, nodes = 4, nd = 3, sites = 2 * nodes + nd;
+  for (int i = 0; i < n; ++i) {
+    d.omega.push_back(2 * std::numbers::pi * (1.5 + 4.0 * i + uniform()));
+    d.zeta.push_back(0.01 + 0.005 * uniform());
+    d.constant_load.push_back(20.0 * uniform());
+  }
+  d.Mp = (MatrixXd(2, 2) << 8.0, 0.0, 0.0, 7.0).finished();
+  d.Kp = (MatrixXd(2, 2) << 3000.0, -3000.0, -3000.0, 3500.0).finished();
+  d.Cp = (MatrixXd(2, 2) << 40.0, -40.0, -40.0, 60.0).finished();
+  d.f0p = (Eigen::VectorXd(2) << 0.0, -140.0).finished();
+  cs::ModalContact c;
+  c.name = "test";
+  c.stations.start = {0.0, 3.0, 7.0, 10.0};
+  c.node_a = {0, 1, 2};
+  c.node_b = {1, 2, 3};
+  for (int r = 0; r < 2 * nodes * n; ++r) c.rows.push_back(0.05 * uniform());
+  for (int r = 0; r < 2 * nodes; ++r) c.reference.push_back(0.01 * uniform());
+  c.stiffness = 50000.0;
+  c.damping = 5.0;
+  c.speed = 2.0;
+  c.start = 0.5;
+  c.head = (Eigen::VectorXd(2) << 1.0, 0.0).finished();
+  c.head_reference = 0.0;
+  for (int j = 0; j < nd; ++j) {
+    cs::ModalDropper dr;
+    for (int i = 0; i < n; ++i) dr.elongation.push_back(0.02 * uniform());
+    dr.stiffness = 2000.0;
+    dr.damping = 2.0;
+    dr.tension = j == 2 ? -2.0 : 5.0;
+    dr.in_modes = j != 2;
+    d.droppers.push_back(dr);
+  }
+  const MatrixXd B = MatrixXd::NullaryExpr(sites, sites, uniform);
+  m.R = 1e-6 * (B.transpose() * B + 0.1 * MatrixXd::Identity(sites, sites));
+  d.static_correction = true;
+  for (int e = 0; e < 3; ++e) {
+    const int row[4] = {2 * e, 2 * e + 1, 2 * e + 2, 2 * e + 3};
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) c.residual.push_back(m.R(row[a], row[b]));
+  }
+  for (int r = 0; r < 2 * nodes; ++r) {
+    for (int j = 0; j < nd; ++j) c.residual_dropper.push_back(m.R(r, 2 * nodes + j));
+    c.residual_static.push_back(1e-4 * uniform());
+  }
+  d.dropper_residual = m.R.bottomRightCorner(nd, nd);
+  d.dropper_residual_static = Eigen::VectorXd::NullaryExpr(nd, [&] { return 1e-4 * uniform(); });
+  d.contacts.push_back(c);
+  return m;
+}
+
+TEST(ModalStepper, EveryStepEndsWithEverySiteOnItsLaw) {
+  // Each step's end state, evaluated here from the model's own data (not the stepper's),
+  // must put each site force on its law: F = max(0, k δ + c δ̇) while δ > 0 (else 0), and a
+  // dropper's correction ΔT = ∓(T0 + k ε + c ε̇) while ∓(T0 + k ε) > 0 (else 0; the bar's
+  // damping acts while its strain says taut, as in the element, so ΔT may be < 0), with
+  // ε and δ including the static correction of every site force.
+  const Model m = make_model();
+  const cs::ModalDynamics& d = m.d;
+  const cs::ModalContact& c = d.contacts[0];
+  const int n = d.n_modes(), nd = 3;
+  cs::ModalStepper stepper(d);
+  cs::ModalState s = stepper.rest(0.0), next;
+  s.eta(0) = 0.3;
+  s.eta_dot(1) = -4.0;
+  stepper.settle_forces(s);
+  int lost = 0, touching = 0, slack = 0, tightened = 0;
+  for (int k = 0; k < 8000; ++k) {  // 4 s: the contact crosses all three elements
+    ASSERT_TRUE(stepper.step(s, 5e-4, next).converged) << "step " << k;
+    s = next;
+    const double x = c.position(s.t);
+    if (!c.stations.contains(x)) break;
+    const std::size_t e = c.stations.element_at(x);
+    const auto h =
+        catena::elements::hermite_at(x - c.stations.start[e], c.stations.element_length(e));
+    Eigen::VectorXd psi = Eigen::VectorXd::Zero(n), dpsi = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd site_weights = Eigen::VectorXd::Zero(8 + nd);  // R's rows at the point
+    double w0 = 0.0, dw0 = 0.0;
+    for (int b = 0; b < 4; ++b) {
+      const int row = 2 * static_cast<int>(e) + b;  // nodes e, e + 1: rows 2e .. 2e + 3
+      const Eigen::Map<const Eigen::VectorXd> r(c.rows.data() + row * n, n);
+      psi += h.s[b] * r;
+      dpsi += h.ds[b] * r;
+      w0 += h.s[b] * c.reference[static_cast<std::size_t>(row)];
+      dw0 += h.ds[b] * c.reference[static_cast<std::size_t>(row)];
+      site_weights(row) = h.s[b];
+    }
+    // The static correction's forces: F at the point, −ΔT_j along each dropper.
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(8 + nd);
+    f += s.contact_force[0] * site_weights;
+    for (int j = 0; j < nd; ++j) f(8 + j) = -s.slack[static_cast<std::size_t>(j)];
+    const Eigen::VectorXd u_r = m.R * f;
+    double r_static = 0.0;
+    for (int b = 0; b < 4; ++b)
+      r_static += h.s[b] * c.residual_static[2 * e + static_cast<std::size_t>(b)];
+    const double delta = c.head.dot(s.u) - (w0 + psi.dot(s.eta) + site_weights.dot(u_r) + r_static);
+    const double rate =
+        c.head.dot(s.u_dot) - psi.dot(s.eta_dot) - c.speed * (dw0 + dpsi.dot(s.eta));
+    const double F = delta > 0.0 ? std::max(0.0, c.stiffness * delta + c.damping * rate) : 0.0;
+    ASSERT_NEAR(s.contact_force[0], F, 1e-7 * (1.0 + F)) << "t = " << s.t;
+    lost += F == 0.0;
+    touching += F > 0.0;
+    for (int j = 0; j < nd; ++j) {
+      const cs::ModalDropper& dr = d.droppers[static_cast<std::size_t>(j)];
+      const Eigen::Map<const Eigen::VectorXd> row(dr.elongation.data(), n);
+      const double eps = row.dot(s.eta) + u_r(8 + j) + d.dropper_residual_static(j);
+      const double elastic = dr.tension + dr.stiffness * eps, sign = dr.in_modes ? -1.0 : 1.0;
+      const double law =
+          sign * elastic > 0.0 ? sign * (elastic + dr.damping * row.dot(s.eta_dot)) : 0.0;
+      ASSERT_NEAR(s.slack[static_cast<std::size_t>(j)], law, 1e-7 * (1.0 + law))
+          << "dropper " << j << ", t = " << s.t;
+      if (law > 0.0) (dr.in_modes ? slack : tightened) += 1;
+    }
+  }
+  // The run went through every case (a law that was never active proves nothing).
+  EXPECT_GT(lost, 0);
+  EXPECT_GT(touching, 0);
+  EXPECT_GT(slack, 0);
+  EXPECT_GT(tightened, 0);
+}
+
+}  // namespace site_laws

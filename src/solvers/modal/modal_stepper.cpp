@@ -172,7 +172,7 @@ void ModalStepper::settle_forces(ModalState& s) const {
   const Eigen::VectorXd rate = D_ * s.eta_dot;
   for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(j);
-    s.slack[j] = std::max(0.0, dropper_law(i, eps(i), rate(i)));
+    s.slack[j] = dropper_law(i, eps(i), rate(i));
   }
 }
 
@@ -295,7 +295,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   for (std::size_t c = 0; c < nc; ++c)
     if (sites[c].on_path) add(true, c, from.contact_force[c]);
   for (std::size_t j = 0; j < d_.droppers.size(); ++j)
-    if (from.slack[j] > 0.0) {
+    if (from.slack[j] != 0.0) {
       add(false, j, from.slack[j]);
       is_unknown[j] = 1;
     }
@@ -421,8 +421,11 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   to.u_dot = std::move(u_rate);
   to.contact_force.assign(nc, 0.0);
   to.slack.assign(d_.droppers.size(), 0.0);
+  // A contact's force is ≥ 0 by its law (to round-off); a dropper's correction may be
+  // negative: a taut bar's damping can outweigh its elastic tension, as in the element.
   for (const Unknown& x : unknowns)
-    (x.contact ? to.contact_force : to.slack)[x.index] = std::max(0.0, x.lambda);
+    (x.contact ? to.contact_force : to.slack)[x.index] =
+        x.contact ? std::max(0.0, x.lambda) : x.lambda;
   return result;
 }
 

@@ -48,7 +48,8 @@ struct ModalContact {
 // linear part T0 + k ε + c ε̇ is in the modes (K and C), and the correction takes it back
 // while it is slack (T0 + k ε < 0); slack at q0, nothing of it is in the modes, and the
 // correction adds its tension while it is taut. Either way the correction is
-// ΔT = T − T_modes ≥ 0, a tension along e.
+// ΔT = T − T_modes, a tension along e, ≥ 0 but for the bar's damping (which acts while the
+// strain says taut, as in the element: a fast-shortening taut bar pushes).
 struct ModalDropper {
   std::vector<double> elongation;  // d_i = e·(φ_i(B) − φ_i(A)), m per unit η_i
   double tension = 0.0;            // T0 = EA (l/l0 − 1) at q0, N (< 0: slack there)

@@ -26,7 +26,8 @@ struct ModalState {
   Eigen::VectorXd eta, eta_dot;       // modal coordinates (kg^½ m) and their rates
   Eigen::VectorXd u, u_dot;           // pantograph DOFs' displacements from q0 and velocities
   std::vector<double> contact_force;  // N, per contact (≥ 0)
-  // N, per dropper: the correction ΔT = T − T_modes (modal_model.hpp, ModalDropper), ≥ 0
+  // N, per dropper: the correction ΔT = T − T_modes (modal_model.hpp, ModalDropper), 0 while
+  // the modes have it right
   std::vector<double> slack;
 };
 
