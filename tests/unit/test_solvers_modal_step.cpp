@@ -12,7 +12,10 @@
 //    flexibility, 0 and 1e-5 m/N); pulled down it loses contact (F = 0); a dropper pushed
 //    below its slack point settles where the linear structure without the dropper puts it,
 //    the tension it does not carry (its slack) the closed form's; a dropper slack at rest
-//    (not in the mode) pulled taut carries the closed form's tension.
+//    (not in the mode) pulled taut carries the closed form's tension; and on a model with
+//    every kind of site at once (12 modes, a two-DOF pantograph over three path elements,
+//    three droppers, a full static correction), every step's end state puts each site
+//    force on its law, evaluated from the model's data (not the stepper's bookkeeping).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -67,6 +67,9 @@ ModalStepper::Site ModalStepper::site(std::size_t c, double t) const {
   at.psi = Eigen::VectorXd::Zero(n);
   at.dpsi = Eigen::VectorXd::Zero(n);
   for (int b = 0; b < 4; ++b) {
+    at.rows[b] = row[b];
+    at.s[b] = h.s[b];
+    at.ds[b] = h.ds[b];
     const Eigen::Map<const Eigen::VectorXd> r(k.rows.data() + static_cast<std::size_t>(row[b]) * n,
                                               n);
     at.psi += h.s[b] * r;
@@ -90,17 +93,25 @@ ModalStepper::Site ModalStepper::site(std::size_t c, double t) const {
   return at;
 }
 
-ModalStepper::Measures ModalStepper::contact_measures(
-    std::size_t c, const Site& at, const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot,
-    const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot, double residual) const {
+ModalStepper::Measures ModalStepper::contact_measures(std::size_t c, const Site& at, double wire,
+                                                      double wire_rate, double wire_slope,
+                                                      double head, double head_rate,
+                                                      double residual) const {
   const ModalContact& k = d_.contacts[c];
   Measures m;
   // δ = up·r_head − w(s); δ̇ = up·ṙ_head − (∂w/∂t at the material point) − speed ∂w/∂s.
-  const double head = k.head_reference + (u.size() > 0 ? k.head.dot(u) : 0.0);
-  const double head_rate = u_dot.size() > 0 ? k.head.dot(u_dot) : 0.0;
-  m.delta = head - (at.w0 + at.psi.dot(eta) + residual);
-  m.rate = head_rate - at.psi.dot(eta_dot) - k.speed * (at.dw0 + at.dpsi.dot(eta));
+  m.delta = k.head_reference + head - (at.w0 + wire + residual);
+  m.rate = head_rate - wire_rate - k.speed * (at.dw0 + wire_slope);
   return m;
+}
+
+ModalStepper::Measures ModalStepper::contact_measures(std::size_t c, const Site& at,
+                                                      const ModalState& s, double residual) const {
+  const ModalContact& k = d_.contacts[c];
+  const bool pantograph = s.u.size() > 0;
+  return contact_measures(c, at, at.psi.dot(s.eta), at.psi.dot(s.eta_dot), at.dpsi.dot(s.eta),
+                          pantograph ? k.head.dot(s.u) : 0.0,
+                          pantograph ? k.head.dot(s.u_dot) : 0.0, residual);
 }
 
 double ModalStepper::contact_law(std::size_t c, const Measures& m) const {
@@ -109,11 +120,11 @@ double ModalStepper::contact_law(std::size_t c, const Measures& m) const {
   return std::max(0.0, k.stiffness * m.delta + k.damping * m.rate);
 }
 
-Eigen::VectorXd ModalStepper::elongations(const Eigen::VectorXd& eta,
+Eigen::VectorXd ModalStepper::elongations(const Eigen::VectorXd& modal,
                                           const std::vector<Site>& sites,
                                           const std::vector<double>& contact_force,
                                           const std::vector<double>& slack) const {
-  Eigen::VectorXd eps = D_ * eta;
+  Eigen::VectorXd eps = modal;
   if (!d_.static_correction) return eps;
   eps += d_.dropper_residual_static;
   for (std::size_t c = 0; c < sites.size(); ++c)
@@ -138,7 +149,7 @@ double ModalStepper::penetration(const ModalState& s, std::size_t c) const {
       (at.r_dropper.size() > 0 ? at.r_dropper.dot(Eigen::Map<const Eigen::VectorXd>(
                                      s.slack.data(), static_cast<Eigen::Index>(s.slack.size())))
                                : 0.0);
-  return contact_measures(c, at, s.eta, s.eta_dot, s.u, s.u_dot, residual).delta;
+  return contact_measures(c, at, s, residual).delta;
 }
 
 ModalState ModalStepper::rest(double t) const {
@@ -160,15 +171,14 @@ void ModalStepper::settle_forces(ModalState& s) const {
   for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
     sites[c] = site(c, s.t);
     if (!sites[c].on_path) continue;
-    const Measures m =
-        contact_measures(c, sites[c], s.eta, s.eta_dot, s.u, s.u_dot, sites[c].r_static);
+    const Measures m = contact_measures(c, sites[c], s, sites[c].r_static);
     const double k = d_.contacts[c].stiffness;
     const double F = contact_law(c, m) / (1.0 + k * sites[c].r_self);
     s.contact_force[c] = m.delta - sites[c].r_self * F > 0.0 ? F : 0.0;
   }
   s.slack.assign(d_.droppers.size(), 0.0);
   if (d_.droppers.empty()) return;
-  const Eigen::VectorXd eps = elongations(s.eta, sites, s.contact_force, s.slack);
+  const Eigen::VectorXd eps = elongations(D_ * s.eta, sites, s.contact_force, s.slack);
   const Eigen::VectorXd rate = D_ * s.eta_dot;
   for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(j);
@@ -206,8 +216,8 @@ void ModalStepper::accelerations(const ModalState& s, Eigen::VectorXd& eta_ddot,
     u_ddot.resize(0);
 }
 
-const ModalStepper::Propagator& ModalStepper::propagator(double h) {
-  for (const Propagator& p : propagators_)
+ModalStepper::Propagator& ModalStepper::propagator(double h) {
+  for (Propagator& p : propagators_)
     if (p.h == h) return p;
   // Fixed steps use dt and, once, the cut last step; adaptive runs would fill this without
   // end, so only the latest few are kept.
@@ -230,17 +240,41 @@ const ModalStepper::Propagator& ModalStepper::propagator(double h) {
     p.Gv0(i) = e.Gv0(0, 0);
     p.Gv1(i) = e.Gv1(0, 0);
   }
-  if (d_.n_pantograph_dofs() > 0)
+  p.dropper_u = D_ * p.Gu1.matrix().asDiagonal() * D_.transpose();
+  p.dropper_v = D_ * p.Gv1.matrix().asDiagonal() * D_.transpose();
+  p.row_u.resize(d_.contacts.size());
+  p.row_v.resize(d_.contacts.size());
+  for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
+    p.row_u[c].resize(d_.contacts[c].reference.size());
+    p.row_v[c].resize(d_.contacts[c].reference.size());
+  }
+  if (d_.n_pantograph_dofs() > 0) {
     p.pantograph = exact_step(Mp_inverse_ * d_.Kp, Mp_inverse_ * d_.Cp, h);
+    for (const ModalContact& c : d_.contacts) {
+      const Eigen::VectorXd g = Mp_inverse_ * (-c.head);
+      p.head_u.push_back(p.pantograph.Gu1 * g);
+      p.head_v.push_back(p.pantograph.Gv1 * g);
+    }
+  }
   propagators_.push_back(std::move(p));
   return propagators_.back();
 }
 
+void ModalStepper::row_products(Propagator& P, std::size_t c, int row) const {
+  if (P.row_u[c][static_cast<std::size_t>(row)].size() > 0 || D_.rows() == 0) return;
+  const int n = d_.n_modes();
+  const Eigen::Map<const Eigen::ArrayXd> r(
+      d_.contacts[c].rows.data() + static_cast<std::size_t>(row) * n, n);
+  P.row_u[c][static_cast<std::size_t>(row)] = D_ * (P.Gu1 * r).matrix();
+  P.row_v[c][static_cast<std::size_t>(row)] = D_ * (P.Gv1 * r).matrix();
+}
+
 ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState& to) {
-  const Propagator& P = propagator(h);
+  Propagator& P = propagator(h);
   const int n = d_.n_modes();
   const int np = d_.n_pantograph_dofs();
   const std::size_t nc = d_.contacts.size();
+  const Eigen::Index nd = D_.rows();
   Eigen::VectorXd p0, g0;
   loads(from, p0, g0);
   const Eigen::Map<const Eigen::ArrayXd> pc(d_.constant_load.data(), n);
@@ -256,41 +290,93 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     u_rate_free = E.Evu * from.u + E.Evv * from.u_dot + E.Gv0 * g0 + E.Gv1 * constant_g_;
   }
   to.t = from.t + h;
+
+  // Every measure the site laws read (each contact's wire height, rate and slope, its head's
+  // height and rate; each dropper's elongation and rate) is affine in the site forces λ:
+  // its free value plus Σ λ_y × its change per unit λ_y. These are formed once per step —
+  // the droppers' by the products D η_free and D η̇_free and, per unknown, from products D (G ∘ w)
+  // kept in the propagator — so the iteration itself never touches a modal vector.
+  struct ContactTerms {
+    double wire = 0.0, wire_rate = 0.0, wire_slope = 0.0;  // ψ·η, ψ·η̇, ψ'·η
+    double head = 0.0, head_rate = 0.0;                    // head·u, head·u̇
+  };
   std::vector<Site> sites(nc);
-  for (std::size_t c = 0; c < nc; ++c) sites[c] = site(c, to.t);
+  std::vector<ContactTerms> free(nc);
+  // Per contact on its path: D (Gu1 ∘ ψ), D (Gv1 ∘ ψ), D (Gu1 ∘ ψ').
+  std::vector<Eigen::VectorXd> dropper_u(nc), dropper_v(nc), dropper_slope(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    sites[c] = site(c, to.t);
+    if (!sites[c].on_path) continue;
+    const Site& at = sites[c];
+    free[c].wire = at.psi.dot(eta_free.matrix());
+    free[c].wire_rate = at.psi.dot(rate_free.matrix());
+    free[c].wire_slope = at.dpsi.dot(eta_free.matrix());
+    if (np > 0) {
+      free[c].head = d_.contacts[c].head.dot(u_free);
+      free[c].head_rate = d_.contacts[c].head.dot(u_rate_free);
+    }
+    if (nd == 0) continue;
+    dropper_u[c] = dropper_v[c] = dropper_slope[c] = Eigen::VectorXd::Zero(nd);
+    for (int b = 0; b < 4; ++b) {
+      const int row = at.rows[b];
+      row_products(P, c, row);
+      dropper_u[c] += at.s[b] * P.row_u[c][static_cast<std::size_t>(row)];
+      dropper_v[c] += at.s[b] * P.row_v[c][static_cast<std::size_t>(row)];
+      dropper_slope[c] += at.ds[b] * P.row_u[c][static_cast<std::size_t>(row)];
+    }
+  }
+  Eigen::VectorXd eps_free, eps_rate_free;
+  if (nd > 0) {
+    // Two matrix–vector products: as one product with two columns Eigen packs D anew each
+    // time (measured: more than the products themselves).
+    eps_free.noalias() = D_ * eta_free.matrix();
+    eps_rate_free.noalias() = D_ * rate_free.matrix();
+  }
 
   // The unknowns: the contacts on their paths, and the droppers whose correction is active
-  // at the start or turns active during the iteration. Each has a modal load w and a pantograph
-  // load.
+  // at the start or turns active during the iteration; per unit λ, the change of every
+  // measure above.
   struct Unknown {
     bool contact = false;
     std::size_t index = 0;
     double lambda = 0.0;
-    Eigen::VectorXd d_eta, d_rate, d_u, d_u_rate;  // the end state's change per unit λ
+    std::vector<ContactTerms> terms;  // per contact
+    Eigen::VectorXd eps, eps_rate;    // per dropper
   };
   std::vector<Unknown> unknowns;
   std::vector<char> is_unknown(d_.droppers.size(), 0);
   const auto add = [&](bool contact, std::size_t index, double lambda) {
-    Unknown x;
-    x.contact = contact;
-    x.index = index;
-    x.lambda = lambda;
-    const Eigen::ArrayXd w =
-        contact ? sites[index].psi.array()
-                : Eigen::ArrayXd(-D_.row(static_cast<Eigen::Index>(index)).transpose().array());
-    x.d_eta = (P.Gu1 * w).matrix();
-    x.d_rate = (P.Gv1 * w).matrix();
-    if (np > 0) {
+    Unknown y;
+    y.contact = contact;
+    y.index = index;
+    y.lambda = lambda;
+    y.terms.resize(nc);
+    const auto j = static_cast<Eigen::Index>(index);
+    for (std::size_t x = 0; x < nc; ++x) {
+      if (!sites[x].on_path) continue;
+      ContactTerms& t = y.terms[x];
       if (contact) {
-        const Eigen::VectorXd g = Mp_inverse_ * (-d_.contacts[index].head);
-        x.d_u = P.pantograph.Gu1 * g;
-        x.d_u_rate = P.pantograph.Gv1 * g;
+        // The modal load ψ_y: ψ_x·(G ∘ ψ_y) and ψ'_x·(G ∘ ψ_y); the head's load −head_y.
+        const Eigen::ArrayXd gu = P.Gu1 * sites[index].psi.array();
+        t.wire = (sites[x].psi.array() * gu).sum();
+        t.wire_rate = (sites[x].psi.array() * P.Gv1 * sites[index].psi.array()).sum();
+        t.wire_slope = (sites[x].dpsi.array() * gu).sum();
+        if (np > 0) {
+          t.head = d_.contacts[x].head.dot(P.head_u[index]);
+          t.head_rate = d_.contacts[x].head.dot(P.head_v[index]);
+        }
       } else {
-        x.d_u = Eigen::VectorXd::Zero(np);
-        x.d_u_rate = Eigen::VectorXd::Zero(np);
+        // The modal load −D_j: ψ_x·(G ∘ −D_j) = −(D (G ∘ ψ_x))_j.
+        t.wire = -dropper_u[x](j);
+        t.wire_rate = -dropper_v[x](j);
+        t.wire_slope = -dropper_slope[x](j);
       }
     }
-    unknowns.push_back(std::move(x));
+    if (nd > 0) {
+      y.eps = contact ? dropper_u[index] : Eigen::VectorXd(-P.dropper_u.col(j));
+      y.eps_rate = contact ? dropper_v[index] : Eigen::VectorXd(-P.dropper_v.col(j));
+    }
+    unknowns.push_back(std::move(y));
   };
   for (std::size_t c = 0; c < nc; ++c)
     if (sites[c].on_path) add(true, c, from.contact_force[c]);
@@ -301,32 +387,25 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     }
 
   ModalStepResult result;
-  Eigen::VectorXd eta, rate, u, u_rate, residual;
+  Eigen::VectorXd residual, eps, eps_rate;
   Eigen::MatrixXd J;
-  std::vector<Measures> measures(nc);
+  std::vector<double> forces(nc), slack(d_.droppers.size());
   for (int it = 0;; ++it) {
-    eta = eta_free.matrix();
-    rate = rate_free.matrix();
-    u = u_free;
-    u_rate = u_rate_free;
-    for (const Unknown& x : unknowns) {
-      if (x.lambda == 0.0) continue;
-      eta += x.lambda * x.d_eta;
-      rate += x.lambda * x.d_rate;
-      if (np > 0) {
-        u += x.lambda * x.d_u;
-        u_rate += x.lambda * x.d_u_rate;
-      }
-    }
     // The site forces of this iterate, for the static correction.
-    std::vector<double> forces(nc, 0.0), slack(d_.droppers.size(), 0.0);
-    for (const Unknown& x : unknowns) (x.contact ? forces : slack)[x.index] = x.lambda;
+    std::fill(forces.begin(), forces.end(), 0.0);
+    std::fill(slack.begin(), slack.end(), 0.0);
+    for (const Unknown& y : unknowns) (y.contact ? forces : slack)[y.index] = y.lambda;
     // Droppers whose correction turns active join the unknowns (at λ = 0; their residual
     // says by how much).
-    Eigen::VectorXd eps, eps_rate;
-    if (!d_.droppers.empty()) {
-      eps = elongations(eta, sites, forces, slack);
-      eps_rate = D_ * rate;
+    if (nd > 0) {
+      Eigen::VectorXd modal = eps_free;
+      eps_rate = eps_rate_free;
+      for (const Unknown& y : unknowns) {
+        if (y.lambda == 0.0) continue;
+        modal += y.lambda * y.eps;
+        eps_rate += y.lambda * y.eps_rate;
+      }
+      eps = elongations(modal, sites, forces, slack);
       for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
         const auto i = static_cast<Eigen::Index>(j);
         if (!is_unknown[j] &&
@@ -344,13 +423,23 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
       const Unknown& x = unknowns[static_cast<std::size_t>(l)];
       double law = 0.0;
       if (x.contact) {
+        ContactTerms now = free[x.index];
+        for (const Unknown& y : unknowns) {
+          const ContactTerms& t = y.terms[x.index];
+          now.wire += y.lambda * t.wire;
+          now.wire_rate += y.lambda * t.wire_rate;
+          now.wire_slope += y.lambda * t.wire_slope;
+          now.head += y.lambda * t.head;
+          now.head_rate += y.lambda * t.head_rate;
+        }
         const Site& at = sites[x.index];
         double wire_residual = at.r_self * x.lambda + at.r_static;
         if (at.r_dropper.size() > 0)
           for (std::size_t j = 0; j < slack.size(); ++j)
             wire_residual -= at.r_dropper(static_cast<Eigen::Index>(j)) * slack[j];
-        measures[x.index] = contact_measures(x.index, at, eta, rate, u, u_rate, wire_residual);
-        law = contact_law(x.index, measures[x.index]);
+        law = contact_law(x.index,
+                          contact_measures(x.index, at, now.wire, now.wire_rate, now.wire_slope,
+                                           now.head, now.head_rate, wire_residual));
         active[static_cast<std::size_t>(l)] = law > 0.0;
       } else {
         const auto i = static_cast<Eigen::Index>(x.index);
@@ -388,12 +477,9 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
         if (x.contact) {
           const ModalContact& c = d_.contacts[x.index];
           const Site& at = sites[x.index];
-          double d_delta = -at.psi.dot(y.d_eta);
-          double d_rate = -at.psi.dot(y.d_rate) - c.speed * at.dpsi.dot(y.d_eta);
-          if (np > 0) {
-            d_delta += c.head.dot(y.d_u);
-            d_rate += c.head.dot(y.d_u_rate);
-          }
+          const ContactTerms& t = y.terms[x.index];
+          double d_delta = t.head - t.wire;
+          const double d_rate = t.head_rate - t.wire_rate - c.speed * t.wire_slope;
           // Static correction: the point's own residual flexibility, and a slack dropper's.
           if (d_.static_correction)
             d_delta -= y.contact ? (y.index == x.index ? at.r_self : 0.0)
@@ -401,13 +487,12 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
           d_law = c.stiffness * d_delta + c.damping * d_rate;
         } else {
           const auto i = static_cast<Eigen::Index>(x.index);
-          const auto row = D_.row(i);
-          double d_eps = row.dot(y.d_eta);
+          double d_eps = y.eps(i);
           if (d_.static_correction)
             d_eps += y.contact ? sites[y.index].r_dropper(i)
                                : -d_.dropper_residual(i, static_cast<Eigen::Index>(y.index));
           d_law = dropper_sign_(i) *
-                  (dropper_stiffness_(i) * d_eps + dropper_damping_(i) * row.dot(y.d_rate));
+                  (dropper_stiffness_(i) * d_eps + dropper_damping_(i) * y.eps_rate(i));
         }
         J(l, k) -= d_law;
       }
@@ -415,17 +500,30 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     const Eigen::VectorXd step = J.partialPivLu().solve(-residual);
     for (Eigen::Index l = 0; l < m; ++l) unknowns[static_cast<std::size_t>(l)].lambda += step(l);
   }
-  to.eta = std::move(eta);
-  to.eta_dot = std::move(rate);
-  to.u = std::move(u);
-  to.u_dot = std::move(u_rate);
+  // The end state itself: the free one plus each site force's modal load through G.
+  Eigen::ArrayXd load = Eigen::ArrayXd::Zero(n);
+  to.u = u_free;
+  to.u_dot = u_rate_free;
   to.contact_force.assign(nc, 0.0);
   to.slack.assign(d_.droppers.size(), 0.0);
-  // A contact's force is ≥ 0 by its law (to round-off); a dropper's correction may be
-  // negative: a taut bar's damping can outweigh its elastic tension, as in the element.
-  for (const Unknown& x : unknowns)
-    (x.contact ? to.contact_force : to.slack)[x.index] =
-        x.contact ? std::max(0.0, x.lambda) : x.lambda;
+  for (const Unknown& y : unknowns) {
+    if (y.lambda == 0.0) continue;
+    if (y.contact) {
+      load += y.lambda * sites[y.index].psi.array();
+      if (np > 0) {
+        to.u += y.lambda * P.head_u[y.index];
+        to.u_dot += y.lambda * P.head_v[y.index];
+      }
+    } else {
+      load -= y.lambda * D_.row(static_cast<Eigen::Index>(y.index)).transpose().array();
+    }
+    // A contact's force is ≥ 0 by its law (to round-off); a dropper's correction may be
+    // negative: a taut bar's damping can outweigh its elastic tension, as in the element.
+    (y.contact ? to.contact_force : to.slack)[y.index] =
+        y.contact ? std::max(0.0, y.lambda) : y.lambda;
+  }
+  to.eta = (eta_free + P.Gu1 * load).matrix();
+  to.eta_dot = (rate_free + P.Gv1 * load).matrix();
   return result;
 }
 

@@ -10,8 +10,10 @@
 // after a few iterations with the exact answer of the discrete system: contact loss and
 // slack droppers are decided at the step's end, implicitly, so neither limits the step
 // (an explicit force with the dropper's 10⁵ N/m against a mode's mass would). A dropper
-// joins the iteration when its correction turns active; all of them cost two products,
-// D η and D η̇, per iteration (D: droppers × modes).
+// joins the iteration when its correction turns active. Every measure the laws read is
+// affine in λ, so its change per unit λ is formed once per step (from products D (G ∘ w)
+// kept per step size) and the iteration works on a few numbers per site: a step costs one
+// two products, D η_free and D η̇_free (D: droppers × modes), and O(modes) per site force.
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -61,6 +63,9 @@ class ModalStepper {
   struct Site {
     bool on_path = false;
     Eigen::VectorXd psi, dpsi;
+    // The path rows (ModalContact::rows) ψ and ψ' interpolate, with the Hermite weights.
+    int rows[4] = {0, 0, 0, 0};
+    double s[4] = {0, 0, 0, 0}, ds[4] = {0, 0, 0, 0};
     double w0 = 0.0, dw0 = 0.0;
     // Static correction (zero without): the residual flexibility of the point with itself
     // and with each dropper's elongation, and its residual static displacement.
@@ -71,13 +76,17 @@ class ModalStepper {
   struct Measures {
     double delta = 0.0, rate = 0.0;  // contact
   };
-  // `residual`: the wire's residual (static correction) displacement at the point.
-  Measures contact_measures(std::size_t c, const Site& at, const Eigen::VectorXd& eta,
-                            const Eigen::VectorXd& eta_dot, const Eigen::VectorXd& u,
-                            const Eigen::VectorXd& u_dot, double residual) const;
-  // The droppers' elongations at η with the static correction's part for the site forces
-  // (contact forces per contact, slack per dropper).
-  Eigen::VectorXd elongations(const Eigen::VectorXd& eta, const std::vector<Site>& sites,
+  // From the wire's modal height ψ·η, rate ψ·η̇ and slope ψ'·η at the point, the head's
+  // height head·u and rate head·u̇; `residual`: the wire's residual (static correction)
+  // displacement at the point.
+  Measures contact_measures(std::size_t c, const Site& at, double wire, double wire_rate,
+                            double wire_slope, double head, double head_rate,
+                            double residual) const;
+  Measures contact_measures(std::size_t c, const Site& at, const ModalState& s,
+                            double residual) const;
+  // The droppers' elongations from their modal part D η with the static correction's part
+  // for the site forces (contact forces per contact, slack per dropper).
+  Eigen::VectorXd elongations(const Eigen::VectorXd& modal, const std::vector<Site>& sites,
                               const std::vector<double>& contact_force,
                               const std::vector<double>& slack) const;
   double contact_law(std::size_t c, const Measures& m) const;
@@ -89,8 +98,16 @@ class ModalStepper {
     double h = 0.0;
     Eigen::ArrayXd Euu, Euv, Evu, Evv, Gu0, Gu1, Gv0, Gv1;  // per mode
     ExactStep pantograph;
+    // The droppers' end elongations and rates per unit modal load: per unit load on each
+    // dropper, D diag(Gu1) Dᵀ and D diag(Gv1) Dᵀ; per contact and path row r (filled when the
+    // contact first reaches r), D (Gu1 ∘ row_r) and D (Gv1 ∘ row_r).
+    Eigen::MatrixXd dropper_u, dropper_v;
+    std::vector<std::vector<Eigen::VectorXd>> row_u, row_v;
+    // Per contact: the pantographs' end state per unit contact force (load −head).
+    std::vector<Eigen::VectorXd> head_u, head_v;
   };
-  const Propagator& propagator(double h);
+  Propagator& propagator(double h);
+  void row_products(Propagator& P, std::size_t c, int row) const;
 
   ModalDynamics d_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D_;  // droppers × modes
