@@ -141,11 +141,8 @@ detail::SiteVector site_vector(const assembly::DofMap& dofs, int node, bool slop
 
 }  // namespace
 
-ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, double cutoff,
-                             ModalBuildReport* report) {
-  const double start = MPI_Wtime();
+ModalStructure modal_structure(assembly::SecondOrderSystem& system, Vec q0) {
   const model::Model& m = system.model();
-  MPI_Comm comm = system.comm();
   if (system.has_constraints())
     throw InputError({m.source_file, 0, "analysis.structure"},
                      "the modal model needs a structure without constraints (Lagrange "
@@ -156,30 +153,32 @@ ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, double
                      "the modal model couples pantographs, not moving loads; use "
                      "analysis.structure: linear or nonlinear with moving_loads");
   const assembly::DofMap& dofs = system.dof_map();
-  const std::vector<int> bars = tension_only_bars(m);
-
-  ModalModel out;
-  out.cutoff_hz = cutoff;
-  CATENA_PETSC(VecDuplicate(q0, out.q0.out()));
-  CATENA_PETSC(VecCopy(q0, out.q0.get()));
-  assembly::SecondOrderSystem::StructureMatrices S = system.structure_matrices(q0);
-
+  ModalStructure out{system.structure_matrices(q0), {}, {}};
   // The pantographs' DOFs, and the catenary's: every other owned free DOF.
-  const std::set<int> pantograph = pantograph_nodes(m);
-  for (int n : pantograph)
+  for (int n : pantograph_nodes(m))
     for (int k = 0; k < dofs.node_dofs(n); ++k)
       if (const PetscInt g = dofs.global_dof(n, k); g >= 0) out.pantograph_dofs.push_back(g);
   std::sort(out.pantograph_dofs.begin(), out.pantograph_dofs.end());
-  std::vector<PetscInt> catenary;
-  {
-    const std::set<PetscInt> held(out.pantograph_dofs.begin(), out.pantograph_dofs.end());
-    for (PetscInt g = dofs.first_owned(); g < dofs.first_owned() + dofs.n_owned(); ++g)
-      if (!held.count(g)) catenary.push_back(g);
-  }
-  const double eigen_start = MPI_Wtime();
-  solvers::Modes modes = solvers::compute_modes_below(S.K.get(), S.M.get(), catenary, cutoff, q0,
-                                                      m.source_file, "analysis.modal_cutoff");
-  const double eigen_seconds = MPI_Wtime() - eigen_start;
+  const std::set<PetscInt> held(out.pantograph_dofs.begin(), out.pantograph_dofs.end());
+  for (PetscInt g = dofs.first_owned(); g < dofs.first_owned() + dofs.n_owned(); ++g)
+    if (!held.count(g)) out.catenary_dofs.push_back(g);
+  return out;
+}
+
+ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, ModalStructure structure,
+                             solvers::Modes modes, double cutoff, ModalBuildReport* report) {
+  const double start = MPI_Wtime();
+  const model::Model& m = system.model();
+  MPI_Comm comm = system.comm();
+  const assembly::DofMap& dofs = system.dof_map();
+  const std::vector<int> bars = tension_only_bars(m);
+  assembly::SecondOrderSystem::StructureMatrices& S = structure.matrices;
+
+  ModalModel out;
+  out.cutoff_hz = cutoff;
+  out.pantograph_dofs = std::move(structure.pantograph_dofs);
+  CATENA_PETSC(VecDuplicate(q0, out.q0.out()));
+  CATENA_PETSC(VecCopy(q0, out.q0.get()));
 
   // Per mode: ω, ζ = φᵀ C φ / 2ω, the constant load −φᵀ f0.
   const auto n = static_cast<PetscInt>(modes.shape.size());
@@ -311,12 +310,8 @@ ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, double
   out.M = std::move(S.M);
   if (report) {
     report->seconds = MPI_Wtime() - start;
-    report->eigen_seconds = eigen_seconds;
-    report->krylov_restarts = modes.n_iterations;
     report->correction_seconds = MPI_Wtime() - correction_start;
     report->correction_solves = solves;
-    report->worst_residual = 0.0;
-    for (double r : modes.residual) report->worst_residual = std::max(report->worst_residual, r);
   }
   return out;
 }

@@ -20,6 +20,7 @@
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
 #include "hdf5_parallel_write.hpp"
+#include "hdf5_reader.hpp"
 #include "row_redistribution.hpp"
 
 namespace catena::io {
@@ -68,99 +69,9 @@ std::int64_t count_of(const model::Model& m, const char* what) {
   return static_cast<std::int64_t>(m.constraints.size());
 }
 
-// Serial reads of a checkpoint (every rank opens the file read-only).
-class Reader {
- public:
-  explicit Reader(const std::string& path) : path_(path) {
-    file_ = FileHandle(
-        checked_hdf5_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "H5Fopen", path));
-  }
-  double real(const char* name) const {
-    double value = 0.0;
-    read_attribute(name, H5T_NATIVE_DOUBLE, &value);
-    return value;
-  }
-  std::int64_t integer(const char* name) const {
-    std::int64_t value = 0;
-    read_attribute(name, H5T_NATIVE_INT64, &value);
-    return value;
-  }
-  bool has_attribute(const char* name) const { return H5Aexists(file_.get(), name) > 0; }
-  std::string text(const char* name) const {
-    const AttributeHandle a(
-        checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen", path_, name));
-    const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, name));
-    char* value = nullptr;
-    check_hdf5_status(H5Aread(a.get(), type.get(), &value), "H5Aread", path_, name);
-    std::string out = value ? value : "";
-    H5free_memory(value);
-    return out;
-  }
-  bool has(const char* name) const { return H5Lexists(file_.get(), name, H5P_DEFAULT) > 0; }
-  // Names of the objects in group `name`, in HDF5's name order.
-  std::vector<std::string> members(const char* name) const {
-    std::vector<std::string> out;
-    check_hdf5_status(H5Literate_by_name(file_.get(), name, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-                                         collect_link, &out, H5P_DEFAULT),
-                      "H5Literate_by_name", path_, name);
-    return out;
-  }
-  // The numeric attributes of group `name`: floating point as reals, integers as integers.
-  void numbers(const char* name, std::map<std::string, double>& reals,
-               std::map<std::string, std::int64_t>& integers) const {
-    const GroupHandle g(
-        checked_hdf5_id(H5Gopen2(file_.get(), name, H5P_DEFAULT), "H5Gopen2", path_, name));
-    std::vector<std::string> names;
-    check_hdf5_status(
-        H5Aiterate2(g.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute, &names),
-        "H5Aiterate2", path_, name);
-    for (const std::string& n : names) {
-      const AttributeHandle a(
-          checked_hdf5_id(H5Aopen(g.get(), n.c_str(), H5P_DEFAULT), "H5Aopen", path_, n));
-      const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, n));
-      if (H5Tget_class(type.get()) == H5T_FLOAT)
-        check_hdf5_status(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &reals[n]), "H5Aread", path_, n);
-      else
-        check_hdf5_status(H5Aread(a.get(), H5T_NATIVE_INT64, &integers[n]), "H5Aread", path_, n);
-    }
-  }
-  std::vector<double> values(const char* name, std::size_t expected) const {
-    std::vector<double> out(expected);
-    const DatasetHandle d(
-        checked_hdf5_id(H5Dopen2(file_.get(), name, H5P_DEFAULT), "H5Dopen2", path_, name));
-    const DataspaceHandle space(
-        checked_hdf5_id(H5Dget_space(d.get()), "H5Dget_space", path_, name));
-    if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != expected)
-      throw Error(path_ + ": dataset " + name +
-                  " has the wrong size (not this model's checkpoint)");
-    if (expected > 0)
-      check_hdf5_status(
-          H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "H5Dread",
-          path_, name);
-    return out;
-  }
-
- private:
-  void read_attribute(const char* name, hid_t type, void* value) const {
-    const AttributeHandle a(
-        checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen", path_, name));
-    check_hdf5_status(H5Aread(a.get(), type, value), "H5Aread", path_, name);
-  }
-  static herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* out) {
-    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
-    return 0;
-  }
-  static herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* out) {
-    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
-    return 0;
-  }
-  std::string path_;
-  FileHandle file_;
-};
-
 // Why the checkpoint open in r was written for another model than `model` (its node,
 // element or constraint count differs), or "".
-std::string other_model(const Reader& r, const model::Model& model) {
+std::string other_model(const Hdf5Reader& r, const model::Model& model) {
   for (const char* count : {"n_nodes", "n_elements", "n_constraints"})
     if (r.integer(count) != count_of(model, count))
       return std::string(count) + " = " + std::to_string(r.integer(count)) +
@@ -177,7 +88,7 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
     fail(
         "no such file (a run writes <output>.chk at its checkpoints, at SIGTERM/SIGINT "
         "and at the end)");
-  const Reader r(path);
+  const Hdf5Reader r(path);
   const std::string format = r.text("format");
   if (!known_format(format)) fail("not a Catena checkpoint (format " + format + ")");
   if (const std::string why = other_model(r, model); !why.empty()) fail(why);
@@ -332,7 +243,7 @@ bool checkpoint_of_another_model(MPI_Comm comm, const std::string& path,
   try {
     return run_collective_phase(comm, [&] {
       if (!fs::is_regular_file(path)) return false;
-      const Reader r(path);
+      const Hdf5Reader r(path);
       return known_format(r.text("format")) && !other_model(r, model).empty();
     });
   } catch (const Error&) {

@@ -130,4 +130,25 @@ std::vector<double> RowRedistribution::to_block(std::span<const double> owned_va
   return block_values;
 }
 
+std::vector<double> RowRedistribution::from_block(std::span<const double> block_values,
+                                                  int n_columns) const {
+  CATENA_ASSERT(n_columns >= 1, "a row has at least one value");
+  CATENA_ASSERT(block_values.size() ==
+                    static_cast<std::size_t>(block_.count) * static_cast<std::size_t>(n_columns),
+                "one row of values per block row");
+  const CommittedDatatype row_type(n_columns, MPI_DOUBLE);
+  const auto columns = static_cast<std::size_t>(n_columns);
+  // The rows each peer sent to_block, in the order it sent them, go back to it.
+  std::vector<double> sent(block_slot_.size() * columns);
+  for (std::size_t k = 0; k < block_slot_.size(); ++k)
+    std::copy_n(block_values.begin() +
+                    static_cast<std::ptrdiff_t>(static_cast<std::size_t>(block_slot_[k]) * columns),
+                columns, sent.begin() + static_cast<std::ptrdiff_t>(k * columns));
+  std::vector<double> owned(static_cast<std::size_t>(send_offsets_.back() + send_counts_.back()) *
+                            columns);
+  MPI_Alltoallv(sent.data(), receive_counts_.data(), receive_offsets_.data(), row_type.get(),
+                owned.data(), send_counts_.data(), send_offsets_.data(), row_type.get(), comm_);
+  return owned;
+}
+
 }  // namespace catena::io

@@ -48,6 +48,9 @@ class RowRedistribution {
   // Collective. `owned_values` holds n_columns values per owned row, in owned_rows order;
   // returns n_columns values per row of block(), in row order.
   std::vector<double> to_block(std::span<const double> owned_values, int n_columns) const;
+  // Collective. The inverse, for reading: `block_values` holds n_columns values per row of
+  // block(), in row order; returns n_columns values per owned row, in owned_rows order.
+  std::vector<double> from_block(std::span<const double> block_values, int n_columns) const;
 
  private:
   MPI_Comm comm_;

@@ -55,7 +55,7 @@ AnalysisType read_analysis(const Field& analysis, StaticOptions& options) {
   if (!analysis.present()) return AnalysisType::static_equilibrium;
   analysis.expect_map("analysis settings {type, duration, initial, load_steps, newton}");
   analysis.check_keys({"type", "duration", "initial", "load_steps", "newton",
-                       "elastic_catenary_guess", "structure", "modal_cutoff"});
+                       "elastic_catenary_guess", "structure", "modal_cutoff", "modal_basis"});
   const AnalysisType type = read_analysis_type(analysis.child("type"));
   options.elastic_catenary_guess =
       analysis.child("elastic_catenary_guess").boolean_or(options.elastic_catenary_guess);

@@ -224,12 +224,18 @@ void read_structure(const Field& analysis, Model& model) {
     structure.fail("a " + name +
                    " structure is linearised about the static equilibrium, so it starts there: "
                    "set analysis.initial.from: static (or leave 'from' out), not reference");
-  const Field cutoff = analysis.child("modal_cutoff");
+  const Field cutoff = analysis.child("modal_cutoff"), basis = analysis.child("modal_basis");
   if (o.structure != StructureModel::modal) {
     fail_if_present(cutoff, "'modal_cutoff' applies to analysis.structure: modal");
+    fail_if_present(basis, "'modal_basis' applies to analysis.structure: modal");
     return;
   }
   o.modal_cutoff = cutoff.real_or(kDefaultModalCutoff, RealRange::positive("Hz"));
+  o.modal_basis = basis.text_or("");
+  if (basis.present() && o.modal_basis.empty())
+    basis.fail(
+        "empty file name; expected the HDF5 file that holds (or is to hold) the catenary's "
+        "modes, e.g. modal_basis: line_modes.h5");
 }
 
 // A fixed step longer than the run would be one step over the whole duration, with
@@ -259,6 +265,7 @@ void read_dynamics(const Field& scene, Model& model) {
     fail_if_present(analysis.child("structure"),
                     "'structure'" + why + " (statics solves the nonlinear equilibrium)");
     fail_if_present(analysis.child("modal_cutoff"), "'modal_cutoff'" + why);
+    fail_if_present(analysis.child("modal_basis"), "'modal_basis'" + why);
     fail_if_present(scene.child("integrator"),
                     "integrator settings apply to analysis.type: dynamic");
     for (const char* key : {"interval", "flush_wall_seconds", "checkpoint_wall_seconds"})

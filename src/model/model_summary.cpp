@@ -220,7 +220,12 @@ std::string describe(const Model& model, int n_ranks_running) {
                     format_number(model.dynamic_options.modal_cutoff) +
                     " Hz (analysis.modal_cutoff; higher modes and large motions left out), "
                     "the pantographs in their own DOFs; contact and slack droppers nonlinear "
-                    "(as forces at their points)"
+                    "(as forces at their points)" +
+                    (model.dynamic_options.modal_basis.empty()
+                         ? std::string()
+                         : "; modes from " + model.dynamic_options.modal_basis +
+                               " when it holds this structure's, else computed and written "
+                               "there (analysis.modal_basis)")
           : model.dynamic_options.structure == StructureModel::linear
               ? "linear: cables and beams linearised about the initial static equilibrium "
                 "(constant stiffness and damping; large motions and the stiffness the "

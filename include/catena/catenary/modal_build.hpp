@@ -10,20 +10,32 @@
 // (cable droppers: use the bar droppers).
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/solvers/modal/modal_model.hpp"
+#include "catena/solvers/modes/modal_analysis.hpp"
 
 namespace catena::catenary {
 
 struct ModalBuildReport {
-  double seconds = 0.0;        // wall time of the whole build, the eigen-solve included
-  double eigen_seconds = 0.0;  // the eigen-solve alone
-  int krylov_restarts = 0;
+  double seconds = 0.0;             // wall time of the build from the modes on
   double correction_seconds = 0.0;  // the static correction (a solve per site)
   int correction_solves = 0;
-  double worst_residual = 0.0;  // largest relative eigen-residual
 };
 
-// Collective. q0: the static equilibrium. cutoff: Hz (> 0).
-solvers::ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, double cutoff,
+// The structure about q0 and how its DOFs divide: the pantographs' (kept as they are) and
+// the catenary's (in modes).
+struct ModalStructure {
+  assembly::SecondOrderSystem::StructureMatrices matrices;
+  std::vector<PetscInt> pantograph_dofs;  // global, ascending, the same list on every rank
+  std::vector<PetscInt> catenary_dofs;    // this rank's owned, ascending
+};
+
+// Collective. q0: the static equilibrium. Throws InputError for what the model refuses.
+ModalStructure modal_structure(assembly::SecondOrderSystem& system, Vec q0);
+
+// Collective. The model from the structure and the catenary's modes below cutoff (Hz):
+// solvers::compute_modes_below over structure.catenary_dofs, or a stored basis that
+// solvers::modes_mismatch accepted.
+solvers::ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0,
+                                      ModalStructure structure, solvers::Modes modes, double cutoff,
                                       ModalBuildReport* report = nullptr);
 
 }  // namespace catena::catenary

@@ -229,6 +229,10 @@ struct DynamicOptions {
   double duration = 0.0;  // s, > 0
   StructureModel structure = StructureModel::nonlinear;
   double modal_cutoff = 0.0;  // Hz, analysis.modal_cutoff (structure: modal)
+  // analysis.modal_basis (structure: modal): a file that holds the catenary's modes
+  // (io/modal_basis.hpp), read if it is there and holds this structure's modes, else
+  // written by the run; "" computes the modes and keeps nothing.
+  std::string modal_basis;
   IntegratorOptions integrator;
   InitialConditions initial;
 };
