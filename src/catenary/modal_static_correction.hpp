@@ -1,7 +1,8 @@
 #pragma once
 // The modal model's static correction (solvers/modal/modal_model.hpp, "Static correction"):
-// R = K⁻¹ − Σ φ φᵀ/ω² between the sites, from one LDLᵀ factorisation of the catenary's
-// stiffness and a solve per site (catenary/modal_build.cpp builds the sites).
+// R = K⁻¹ − Σ φ φᵀ/ω² between the sites, from one factorisation of the catenary's
+// stiffness and a solve per site, in blocks of right-hand sides (catenary/modal_build.cpp
+// builds the sites).
 #include <petscmat.h>
 
 #include <vector>
