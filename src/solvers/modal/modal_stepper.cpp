@@ -93,6 +93,17 @@ ModalStepper::Site ModalStepper::site(std::size_t c, double t) const {
   return at;
 }
 
+const ModalStepper::Site& ModalStepper::cached_site(std::size_t c, double t) const {
+  if (site_cache_.size() != d_.contacts.size()) site_cache_.resize(d_.contacts.size());
+  std::array<CachedSite, 2>& slots = site_cache_[c];
+  for (CachedSite& slot : slots)
+    if (slot.t == t) return slot.site;
+  CachedSite& older = slots[0].t < slots[1].t ? slots[0] : slots[1];
+  older.t = t;
+  older.site = site(c, t);
+  return older.site;
+}
+
 ModalStepper::Measures ModalStepper::contact_measures(std::size_t c, const Site& at, double wire,
                                                       double wire_rate, double wire_slope,
                                                       double head, double head_rate,
@@ -192,7 +203,7 @@ void ModalStepper::loads(const ModalState& s, Eigen::VectorXd& p, Eigen::VectorX
   Eigen::VectorXd head_load = Eigen::VectorXd::Zero(d_.n_pantograph_dofs());
   for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
     if (s.contact_force[c] == 0.0) continue;
-    const Site at = site(c, s.t);
+    const Site& at = cached_site(c, s.t);
     if (!at.on_path) continue;
     p += s.contact_force[c] * at.psi;
     head_load -= s.contact_force[c] * d_.contacts[c].head;
@@ -294,7 +305,8 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   // Every measure the site laws read (each contact's wire height, rate and slope, its head's
   // height and rate; each dropper's elongation and rate) is affine in the site forces λ:
   // its free value plus Σ λ_y × its change per unit λ_y. These are formed once per step —
-  // the droppers' by the products D η_free and D η̇_free and, per unknown, from products D (G ∘ w)
+  // the droppers' elongations by the product D η_free (their rates row by row, for the
+  // droppers in the iteration only) and, per unknown, from products D (G ∘ w)
   // kept in the propagator — so the iteration itself never touches a modal vector.
   struct ContactTerms {
     double wire = 0.0, wire_rate = 0.0, wire_slope = 0.0;  // ψ·η, ψ·η̇, ψ'·η
@@ -305,7 +317,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   // Per contact on its path: D (Gu1 ∘ ψ), D (Gv1 ∘ ψ), D (Gu1 ∘ ψ').
   std::vector<Eigen::VectorXd> dropper_u(nc), dropper_v(nc), dropper_slope(nc);
   for (std::size_t c = 0; c < nc; ++c) {
-    sites[c] = site(c, to.t);
+    sites[c] = cached_site(c, to.t);
     if (!sites[c].on_path) continue;
     const Site& at = sites[c];
     free[c].wire = at.psi.dot(eta_free.matrix());
@@ -325,13 +337,10 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
       dropper_slope[c] += at.ds[b] * P.row_u[c][static_cast<std::size_t>(row)];
     }
   }
-  Eigen::VectorXd eps_free, eps_rate_free;
-  if (nd > 0) {
-    // Two matrix–vector products: as one product with two columns Eigen packs D anew each
-    // time (measured: more than the products themselves).
-    eps_free.noalias() = D_ * eta_free.matrix();
-    eps_rate_free.noalias() = D_ * rate_free.matrix();
-  }
+  // Every dropper's elongation, to find those whose correction turns active; the rates
+  // only of the droppers in the iteration (their damping), one row each.
+  Eigen::VectorXd eps_free;
+  if (nd > 0) eps_free.noalias() = D_ * eta_free.matrix();
 
   // The unknowns: the contacts on their paths, and the droppers whose correction is active
   // at the start or turns active during the iteration; per unit λ, the change of every
@@ -342,6 +351,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     double lambda = 0.0;
     std::vector<ContactTerms> terms;  // per contact
     Eigen::VectorXd eps, eps_rate;    // per dropper
+    double rate_free = 0.0;           // a dropper's: its free elongation rate D_j η̇_free
   };
   std::vector<Unknown> unknowns;
   std::vector<char> is_unknown(d_.droppers.size(), 0);
@@ -376,6 +386,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
       y.eps = contact ? dropper_u[index] : Eigen::VectorXd(-P.dropper_u.col(j));
       y.eps_rate = contact ? dropper_v[index] : Eigen::VectorXd(-P.dropper_v.col(j));
     }
+    if (!contact) y.rate_free = D_.row(j).dot(rate_free.matrix());
     unknowns.push_back(std::move(y));
   };
   for (std::size_t c = 0; c < nc; ++c)
@@ -387,7 +398,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     }
 
   ModalStepResult result;
-  Eigen::VectorXd residual, eps, eps_rate;
+  Eigen::VectorXd residual, eps;
   Eigen::MatrixXd J;
   std::vector<double> forces(nc), slack(d_.droppers.size());
   for (int it = 0;; ++it) {
@@ -399,12 +410,8 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     // says by how much).
     if (nd > 0) {
       Eigen::VectorXd modal = eps_free;
-      eps_rate = eps_rate_free;
-      for (const Unknown& y : unknowns) {
-        if (y.lambda == 0.0) continue;
-        modal += y.lambda * y.eps;
-        eps_rate += y.lambda * y.eps_rate;
-      }
+      for (const Unknown& y : unknowns)
+        if (y.lambda != 0.0) modal += y.lambda * y.eps;
       eps = elongations(modal, sites, forces, slack);
       for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
         const auto i = static_cast<Eigen::Index>(j);
@@ -445,7 +452,9 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
         const auto i = static_cast<Eigen::Index>(x.index);
         const double elastic = dropper_tension_(i) + dropper_stiffness_(i) * eps(i);
         if (dropper_sign_(i) * elastic > 0.0) {
-          law = dropper_law(i, eps(i), eps_rate(i));
+          double rate = x.rate_free;
+          for (const Unknown& y : unknowns) rate += y.lambda * y.eps_rate(i);
+          law = dropper_law(i, eps(i), rate);
           active[static_cast<std::size_t>(l)] = 1;
         }
       }

@@ -12,9 +12,10 @@
 // (an explicit force with the dropper's 10⁵ N/m against a mode's mass would). A dropper
 // joins the iteration when its correction turns active. Every measure the laws read is
 // affine in λ, so its change per unit λ is formed once per step (from products D (G ∘ w)
-// kept per step size) and the iteration works on a few numbers per site: a step costs one
-// two products, D η_free and D η̇_free (D: droppers × modes), and O(modes) per site force.
+// kept per step size) and the iteration works on a few numbers per site: a step costs
+// one product, D η_free (D: droppers × modes), and O(modes) per site force.
 #include <Eigen/Dense>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,9 @@ class ModalStepper {
     Eigen::VectorXd r_dropper;
   };
   Site site(std::size_t c, double t) const;
+  // site(c, t), kept for the last two times asked (a step's start is the previous step's
+  // end): a site is a function of the time only.
+  const Site& cached_site(std::size_t c, double t) const;
   struct Measures {
     double delta = 0.0, rate = 0.0;  // contact
   };
@@ -116,6 +120,11 @@ class ModalStepper {
   Eigen::MatrixXd Mp_inverse_;
   Eigen::VectorXd constant_g_;           // M_p⁻¹ (−f0_p)
   std::vector<Propagator> propagators_;  // the steps used so far (usually one or two)
+  struct CachedSite {
+    double t = -1.0;
+    Site site;
+  };
+  mutable std::vector<std::array<CachedSite, 2>> site_cache_;  // per contact
 };
 
 }  // namespace catena::solvers
