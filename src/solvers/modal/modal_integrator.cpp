@@ -26,6 +26,18 @@ std::string ModalIntegrator::name() const {
   return s.str();
 }
 
+Eigen::VectorXd ModalIntegrator::project(Vec w) const {
+  const double* a = nullptr;
+  CATENA_PETSC(VecGetArrayRead(w, &a));
+  Eigen::VectorXd x =
+      model_.shapes.transpose() * Eigen::Map<const Eigen::VectorXd>(a, model_.shapes.rows());
+  CATENA_PETSC(VecRestoreArrayRead(w, &a));
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(w));
+  if (x.size() > 0)
+    MPI_Allreduce(MPI_IN_PLACE, x.data(), static_cast<int>(x.size()), MPI_DOUBLE, MPI_SUM, comm);
+  return x;
+}
+
 Eigen::VectorXd ModalIntegrator::pantograph_values(Vec v) const {
   Eigen::VectorXd y = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(owned_pantograph_.size()));
   const double* a = nullptr;
@@ -41,38 +53,58 @@ Eigen::VectorXd ModalIntegrator::pantograph_values(Vec v) const {
 
 void ModalIntegrator::rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y, bool rates,
                               Vec out) const {
-  if (rates)
-    CATENA_PETSC(VecSet(out, 0.0));
-  else
-    CATENA_PETSC(VecCopy(model_.q0.get(), out));
-  std::vector<Vec> shapes;
-  shapes.reserve(model_.shapes.size());
-  for (const VecHandle& s : model_.shapes) shapes.push_back(s.get());
-  CATENA_PETSC(VecMAXPY(out, static_cast<PetscInt>(shapes.size()), x.data(), shapes.data()));
+  const double* base = nullptr;
   double* a = nullptr;
+  if (!rates) CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
   CATENA_PETSC(VecGetArray(out, &a));
-  for (std::size_t k = 0; k < owned_pantograph_.size(); ++k)
-    if (owned_pantograph_[k] >= 0) a[owned_pantograph_[k]] += y(static_cast<Eigen::Index>(k));
+  const auto& Phi = model_.shapes;
+  for (Eigen::Index r = 0; r < Phi.rows(); ++r) a[r] = (base ? base[r] : 0.0) + Phi.row(r).dot(x);
+  add_pantographs(y, a);
   CATENA_PETSC(VecRestoreArray(out, &a));
+  if (!rates) CATENA_PETSC(VecRestoreArrayRead(model_.q0.get(), &base));
+}
+
+void ModalIntegrator::rebuild_state(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot,
+                                    const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot, Vec q,
+                                    Vec v) const {
+  const double* base = nullptr;
+  double *a = nullptr, *b = nullptr;
+  CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
+  CATENA_PETSC(VecGetArray(q, &a));
+  CATENA_PETSC(VecGetArray(v, &b));
+  // Row by row, each row (one DOF's values in every mode) dotted with both coordinate
+  // vectors while it is in cache: the shapes, the model's largest array, are read once for
+  // the pair (a field sample's cost is that read).
+  const auto& Phi = model_.shapes;
+  for (Eigen::Index r = 0; r < Phi.rows(); ++r) {
+    const auto row = Phi.row(r);
+    a[r] = base[r] + row.dot(eta);
+    b[r] = row.dot(eta_dot);
+  }
+  add_pantographs(u, a);
+  add_pantographs(u_dot, b);
+  CATENA_PETSC(VecRestoreArray(v, &b));
+  CATENA_PETSC(VecRestoreArray(q, &a));
+  CATENA_PETSC(VecRestoreArrayRead(model_.q0.get(), &base));
+}
+
+void ModalIntegrator::add_pantographs(const Eigen::VectorXd& y, double* values) const {
+  for (std::size_t k = 0; k < owned_pantograph_.size(); ++k)
+    if (owned_pantograph_[k] >= 0) values[owned_pantograph_[k]] += y(static_cast<Eigen::Index>(k));
 }
 
 void ModalIntegrator::set_state(double t, Vec q, Vec v, Vec) {
   // η = Φᵀ M (q − q0), η̇ = Φᵀ M v (unit modal masses); the pantographs' DOFs as they are.
-  std::vector<Vec> shapes;
-  for (const VecHandle& s : model_.shapes) shapes.push_back(s.get());
-  const auto n = static_cast<PetscInt>(shapes.size());
   ModalState s;
   s.t = t;
-  s.eta.resize(n);
-  s.eta_dot.resize(n);
   CATENA_PETSC(VecWAXPY(work_.get(), -1.0, model_.q0.get(), q));
   s.u = pantograph_values(work_.get());
   CATENA_PETSC(MatMult(model_.M.get(), work_.get(), a_.get()));
-  CATENA_PETSC(VecMDot(a_.get(), n, shapes.data(), s.eta.data()));
+  s.eta = project(a_.get());
   if (v) {
     s.u_dot = pantograph_values(v);
     CATENA_PETSC(MatMult(model_.M.get(), v, a_.get()));
-    CATENA_PETSC(VecMDot(a_.get(), n, shapes.data(), s.eta_dot.data()));
+    s.eta_dot = project(a_.get());
   } else {
     s.u_dot = Eigen::VectorXd::Zero(s.u.size());
     s.eta_dot.setZero();
@@ -113,15 +145,17 @@ bool ModalIntegrator::contact_forces_at(double t, std::vector<double>& out) cons
   return true;
 }
 
+// q and v are rebuilt together: one pass over the shapes costs little more than one, and
+// whoever asks for one (output, a checkpoint) asks for the other.
 Vec ModalIntegrator::q() const {
-  if (!q_fresh_) rebuild(current_.eta, current_.u, false, q_.get());
-  q_fresh_ = true;
+  if (!q_fresh_ || !v_fresh_)
+    rebuild_state(current_.eta, current_.eta_dot, current_.u, current_.u_dot, q_.get(), v_.get());
+  q_fresh_ = v_fresh_ = true;
   return q_.get();
 }
 
 Vec ModalIntegrator::v() const {
-  if (!v_fresh_) rebuild(current_.eta_dot, current_.u_dot, true, v_.get());
-  v_fresh_ = true;
+  q();
   return v_.get();
 }
 
@@ -136,10 +170,9 @@ Vec ModalIntegrator::a() const {
 }
 
 Vec ModalIntegrator::pending_q() const {
-  if (!pending_fresh_) {
-    rebuild(pending_.eta, pending_.u, false, pending_q_.get());
-    rebuild(pending_.eta_dot, pending_.u_dot, true, pending_v_.get());
-  }
+  if (!pending_fresh_)
+    rebuild_state(pending_.eta, pending_.eta_dot, pending_.u, pending_.u_dot, pending_q_.get(),
+                  pending_v_.get());
   pending_fresh_ = true;
   return pending_q_.get();
 }
@@ -155,23 +188,25 @@ void ModalIntegrator::interpolate(double t, Vec q, Vec v) {
   const double s = h > 0.0 ? (t - previous_.t) / h : 1.0;
   const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
   const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+  Eigen::VectorXd eta, u, eta_dot, u_dot;
   if (q) {
-    const Eigen::VectorXd eta = h00 * previous_.eta + h10 * h * previous_.eta_dot +
-                                h01 * current_.eta + h11 * h * current_.eta_dot;
-    const Eigen::VectorXd u =
-        h00 * previous_.u + h10 * h * previous_.u_dot + h01 * current_.u + h11 * h * current_.u_dot;
-    rebuild(eta, u, false, q);
+    eta = h00 * previous_.eta + h10 * h * previous_.eta_dot + h01 * current_.eta +
+          h11 * h * current_.eta_dot;
+    u = h00 * previous_.u + h10 * h * previous_.u_dot + h01 * current_.u + h11 * h * current_.u_dot;
   }
   if (v) {
     Eigen::VectorXd e0, e1, u0, u1;
     stepper_.accelerations(previous_, e0, u0);
     stepper_.accelerations(current_, e1, u1);
-    const Eigen::VectorXd eta_dot =
-        h00 * previous_.eta_dot + h10 * h * e0 + h01 * current_.eta_dot + h11 * h * e1;
-    const Eigen::VectorXd u_dot =
-        h00 * previous_.u_dot + h10 * h * u0 + h01 * current_.u_dot + h11 * h * u1;
-    rebuild(eta_dot, u_dot, true, v);
+    eta_dot = h00 * previous_.eta_dot + h10 * h * e0 + h01 * current_.eta_dot + h11 * h * e1;
+    u_dot = h00 * previous_.u_dot + h10 * h * u0 + h01 * current_.u_dot + h11 * h * u1;
   }
+  if (q && v)
+    rebuild_state(eta, eta_dot, u, u_dot, q, v);
+  else if (q)
+    rebuild(eta, u, false, q);
+  else if (v)
+    rebuild(eta_dot, u_dot, true, v);
 }
 
 }  // namespace catena::solvers

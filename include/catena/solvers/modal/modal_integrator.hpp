@@ -45,9 +45,15 @@ class ModalIntegrator final : public TimeIntegrator {
   const ModalState& state() const { return current_; }
 
  private:
-  // Collective. q0 + Σ φ_i x_i with the pantographs' DOFs set to q0 + y (displacements), or
-  // Σ φ_i x_i and y itself (rates) when `rates`.
+  // Not collective (each rank its rows). q0 + Σ φ_i x_i with the pantographs' DOFs set to
+  // q0 + y (displacements), or Σ φ_i x_i and y itself (rates) when `rates`.
   void rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y, bool rates, Vec out) const;
+  // Not collective. q from (η, u) and v from (η̇, u̇) together: one pass over the shapes.
+  void rebuild_state(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot,
+                     const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot, Vec q, Vec v) const;
+  void add_pantographs(const Eigen::VectorXd& y, double* values) const;
+  // Collective. Φᵀ w over all ranks' rows (w: a vector laid out as q).
+  Eigen::VectorXd project(Vec w) const;
   // Collective. The pantographs' entries of a global vector, on every rank.
   Eigen::VectorXd pantograph_values(Vec v) const;
 

@@ -92,9 +92,12 @@ struct ModalModel {
   ModalDynamics dynamics;
   std::vector<double> frequency_hz;  // per mode
   double cutoff_hz = 0.0;
-  std::vector<VecHandle> shapes;  // per mode, over the free DOFs (0 on pantographs')
-  VecHandle q0;                   // the static equilibrium (global)
-  MatHandle M;                    // mass matrix, to project a state onto the modes
+  // The modes over this rank's owned free DOFs (0 on the pantographs'), a row per DOF in
+  // the vectors' local order and a column per mode: one block, so that rebuilding a state
+  // reads it once (it is the largest thing the model holds: DOFs × modes).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> shapes;
+  VecHandle q0;  // the static equilibrium (global)
+  MatHandle M;   // mass matrix, to project a state onto the modes
   // The pantographs' DOFs: global indices, ascending, the same list on every rank.
   std::vector<PetscInt> pantograph_dofs;
 };
