@@ -46,18 +46,18 @@ solvers::Modes compute(const catenary::ModalStructure& s, Vec q0, const model::M
 solvers::Modes read_checked(MPI_Comm comm, const catenary::ModalStructure& s, Vec q0,
                             const model::Model& m, const assembly::NodeOrder& order, double cutoff,
                             const std::string& path) {
-  const io::ModalBasis basis =
-      io::read_modal_basis(comm, path, m, {order.n_rows, order.owned}, cutoff);
+  io::ModalBasis basis = io::read_modal_basis(comm, path, m, {order.n_rows, order.owned}, cutoff);
   solvers::Modes modes;
   modes.frequency = basis.frequency;
   std::vector<Vec> shapes;
-  for (const std::vector<double>& values : basis.shapes) {
+  for (std::vector<double>& values : basis.shapes) {
     VecHandle v;
     CATENA_PETSC(VecDuplicate(q0, v.out()));
     double* a = nullptr;
     CATENA_PETSC(VecGetArray(v.get(), &a));
     std::copy(values.begin(), values.end(), a);
     CATENA_PETSC(VecRestoreArray(v.get(), &a));
+    std::vector<double>().swap(values);  // not held twice
     shapes.push_back(v.get());
     modes.shape.push_back(std::move(v));
   }
