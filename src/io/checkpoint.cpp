@@ -205,13 +205,7 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
     });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  fsync_once_per_node(comm, temporary_path);
-  run_collective_phase(comm, [&] {
-    if (!is_root) return;
-    rename_into_place(temporary->path(), path);
-    temporary->release();
-    fsync_path(fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path("."));
-  });
+  publish_written_file(comm, temporary_path, temporary, fs::path(path));
 }
 
 }  // namespace

@@ -41,4 +41,16 @@ void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path) {
   });
 }
 
+void publish_written_file(MPI_Comm comm, const std::filesystem::path& temporary_path,
+                          std::optional<TemporaryFile>& temporary,
+                          const std::filesystem::path& path) {
+  fsync_once_per_node(comm, temporary_path);
+  run_collective_phase(comm, [&] {
+    if (!temporary) return;
+    rename_into_place(temporary->path(), path);
+    temporary->release();
+    fsync_path(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
+  });
+}
+
 }  // namespace catena::io

@@ -23,6 +23,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "atomic_file.hpp"
 #include "catena/io/output_error.hpp"
 
 namespace catena::io {
@@ -80,5 +81,13 @@ std::invoke_result_t<Phase> run_output_phase(MPI_Comm comm, Phase&& phase) {
 // Collective. fsyncs `path` once per node: the page cache is per node, and each rank's
 // MPI-IO writes sit in its own node's cache, so one fsync per node makes the file durable.
 void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path);
+
+// Collective. Makes a file the ranks wrote in parallel under `temporary_path` durable
+// (fsync_once_per_node), then rank 0 renames it over `path` and syncs the directory:
+// readers see the old complete file or the new one. `temporary` is engaged on rank 0 only
+// (it owns the temporary name) and released once renamed.
+void publish_written_file(MPI_Comm comm, const std::filesystem::path& temporary_path,
+                          std::optional<TemporaryFile>& temporary,
+                          const std::filesystem::path& path);
 
 }  // namespace catena::io

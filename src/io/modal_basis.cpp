@@ -71,13 +71,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  fsync_once_per_node(comm, temporary_path);
-  run_collective_phase(comm, [&] {
-    if (!root) return;
-    rename_into_place(temporary->path(), path);
-    temporary->release();
-    fsync_path(path.parent_path().empty() ? fs::path(".") : path.parent_path());
-  });
+  publish_written_file(comm, temporary_path, temporary, path);
 }
 
 // This rank's reading: the file's facts checked against the model and the request, then

@@ -130,7 +130,9 @@ INSTANTIATE_TEST_SUITE_P(Catena, EveryMethod, testing::ValuesIn(catena::test::ev
 }  // namespace
 
 TEST(Irk, GaussConservesTheEnergyOfALinearSystem) {
-  // Gauss methods conserve quadratic invariants exactly: 10^5 steps of 1/50 period.
+  // Gauss methods conserve quadratic invariants exactly: 2·10^4 steps of 1/50 period (400
+  // periods; a method that damps or excites, Radau IIA or a non-symplectic explicit one,
+  // is off by orders of magnitude more than 1e-10 long before).
   catena::test::ensure_petsc();
   const catena::model::Model m = catena::test::oscillator(kMass, kOmega);
   catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
@@ -142,7 +144,7 @@ TEST(Irk, GaussConservesTheEnergyOfALinearSystem) {
   irk.set_state(0.0, q.get(), v.get(), nullptr);
   const double k = kMass * kOmega * kOmega, e0 = 0.5 * k * kX0 * kX0;
   double worst = 0.0;
-  const int n = 100000;
+  const int n = 20000;
   for (int i = 0; i < n; ++i) {
     catena::test::advance_fixed(irk, 1.0 / 50, 1);
     if (i % 100 != 99) continue;
@@ -152,7 +154,7 @@ TEST(Irk, GaussConservesTheEnergyOfALinearSystem) {
   }
   const auto& c = irk.counters();
   std::printf(
-      "  gauss_2, 1e5 steps: worst relative energy error %.2e; %ld factorisations, "
+      "  gauss_2, 2e4 steps: worst relative energy error %.2e; %ld factorisations, "
       "%ld Newton iterations\n",
       worst, c.factorizations, c.newton_iterations);
   EXPECT_LT(worst, 1e-10);
