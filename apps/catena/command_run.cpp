@@ -113,6 +113,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
                      "analysis is static (analysis.type: static)");
   // Before any solving: a run must not end by finding that it cannot write its results.
   check_output_path(comm, m, cl.output.has_value());
+  check_modal_basis_path(comm, m);
   // One run at a time per output name (and its checkpoint and partial output).
   const io::OutputLock lock(comm, m.output.file);
   if (rank == 0) io::remove_abandoned_checkpoint_temporaries(m.output.file);

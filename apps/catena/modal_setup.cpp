@@ -115,10 +115,7 @@ Source modes_for(assembly::SecondOrderSystem& system, const catenary::ModalStruc
     out.how = line;
     return out;
   }
-  if (!path.empty() && rank == 0)
-    if (const std::string problem = output_path_problem(path); !problem.empty())
-      throw InputError({m.source_file, 0, "analysis.modal_basis"},
-                       "cannot write the modal basis '" + path + "': " + problem);
+  // (Whether the file can be written was checked before any solving: check_modal_basis_path.)
   std::snprintf(line, sizeof line, "modal model: modes below %g Hz (spectrum slicing)...", cutoff);
   print(rank, line);
   Source out{compute(s, q0, m, cutoff), {}};

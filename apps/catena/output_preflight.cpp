@@ -87,4 +87,23 @@ void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_l
                        m.output.file + ".chk' goes beside it)");
 }
 
+void check_modal_basis_path(MPI_Comm comm, const model::Model& m) {
+  const std::string& path = m.dynamic_options.modal_basis;
+  if (m.analysis != model::AnalysisType::dynamic || path.empty()) return;
+  std::string problem;
+  if (mpi_rank(comm) == 0) {
+    std::error_code error;
+    if (fs::exists(path, error))
+      problem = fs::is_regular_file(path, error) ? "" : "it exists but is not a regular file";
+    else
+      problem = output_path_problem(path);
+  }
+  broadcast_string(comm, problem);
+  if (problem.empty()) return;
+  throw InputError({m.source_file, 0, "analysis.modal_basis"},
+                   "cannot use the modal basis '" + path + "': " + problem +
+                       "; expected an existing basis file or a path in an existing, writable "
+                       "directory where the run writes one");
+}
+
 }  // namespace catena::app

@@ -21,4 +21,9 @@ std::string output_path_problem(const std::string& path);
 // .xmf (the XDMF companion's) is refused for every analysis.
 void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_line);
 
+// Collective. The modal basis a modal run names (analysis.modal_basis), if any: a file to
+// read, or one the run can create when it is not there yet (as output_path_problem);
+// every rank throws the same InputError naming the key, the path and the reason.
+void check_modal_basis_path(MPI_Comm comm, const model::Model& m);
+
 }  // namespace catena::app
