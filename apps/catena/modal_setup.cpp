@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <span>
+#include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "catena/assembly/node_order.hpp"
@@ -47,6 +49,12 @@ solvers::Modes read_checked(MPI_Comm comm, const catenary::ModalStructure& s, Ve
                             const model::Model& m, const assembly::NodeOrder& order, double cutoff,
                             const std::string& path) {
   io::ModalBasis basis = io::read_modal_basis(comm, path, m, {order.n_rows, order.owned}, cutoff);
+  if (basis.frequency.empty()) {
+    std::ostringstream why;
+    why << "this modal basis holds no mode below " << cutoff
+        << " Hz (analysis.modal_cutoff); raise the cut-off frequency";
+    throw InputError({path, 0, "analysis.modal_basis"}, why.str());
+  }
   solvers::Modes modes;
   modes.frequency = basis.frequency;
   std::vector<Vec> shapes;
@@ -102,7 +110,8 @@ Source modes_for(assembly::SecondOrderSystem& system, const catenary::ModalStruc
   const std::string& path = m.dynamic_options.modal_basis;
   char line[256];
   const double start = MPI_Wtime();
-  int exists = path.empty() ? 0 : std::filesystem::exists(path) ? 1 : 0;
+  std::error_code unreadable;  // an unreadable path counts as absent; the write then says why
+  int exists = path.empty() ? 0 : std::filesystem::exists(path, unreadable) ? 1 : 0;
   MPI_Bcast(&exists, 1, MPI_INT, 0, comm);
   if (exists) {
     std::snprintf(line, sizeof line, "modal model: modes below %g Hz from %s...", cutoff,

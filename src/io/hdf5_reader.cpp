@@ -43,11 +43,19 @@ std::string Hdf5Reader::text(const char* name) const {
   const AttributeHandle a(
       checked_hdf5_id(H5Aopen(file_.get(), name, H5P_DEFAULT), "H5Aopen", path_, name));
   const DatatypeHandle type(checked_hdf5_id(H5Aget_type(a.get()), "H5Aget_type", path_, name));
-  char* value = nullptr;
-  check_hdf5_status(H5Aread(a.get(), type.get(), &value), "H5Aread", path_, name);
-  std::string out = value ? value : "";
-  H5free_memory(value);
-  return out;
+  if (H5Tget_class(type.get()) != H5T_STRING)
+    throw Error(path_ + ": attribute " + name + " is not a string");
+  if (H5Tis_variable_str(type.get()) > 0) {
+    char* value = nullptr;
+    check_hdf5_status(H5Aread(a.get(), type.get(), &value), "H5Aread", path_, name);
+    std::string out = value ? value : "";
+    H5free_memory(value);
+    return out;
+  }
+  // A fixed-length string (written by another tool): its size in bytes, maybe unterminated.
+  std::string out(H5Tget_size(type.get()), '\0');
+  check_hdf5_status(H5Aread(a.get(), type.get(), out.data()), "H5Aread", path_, name);
+  return out.substr(0, out.find('\0'));
 }
 
 bool Hdf5Reader::has(const char* name) const {
@@ -87,8 +95,8 @@ DatasetHandle Hdf5Reader::open_sized(const char* name, std::size_t expected) con
   const DataspaceHandle space(checked_hdf5_id(H5Dget_space(d.get()), "H5Dget_space", path_, name));
   if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())) != expected)
     throw Error(path_ + ": dataset " + name + " has " +
-                std::to_string(H5Sget_simple_extent_npoints(space.get())) + " values, not the " +
-                std::to_string(expected) + " this model needs");
+                std::to_string(H5Sget_simple_extent_npoints(space.get())) + " values, expected " +
+                std::to_string(expected));
   return d;
 }
 

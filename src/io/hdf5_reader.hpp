@@ -2,7 +2,7 @@
 // Serial reads of a Catena HDF5 file: every rank that needs it opens the file read-only on
 // its own (no MPI-IO), reads attributes and datasets, and gets catena::Error naming the
 // file and the object when a call fails. Used for checkpoints and modal bases, whose
-// readers decide what to do with such an error (a restart refused, a basis recomputed).
+// readers turn such an error into the user's (a restart or a basis refused, and why).
 #include <cstdint>
 #include <map>
 #include <string>

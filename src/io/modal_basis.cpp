@@ -132,10 +132,20 @@ void write_modal_basis(MPI_Comm comm, const std::string& path, const model::Mode
 ModalBasis read_modal_basis(MPI_Comm comm, const std::string& path, const model::Model& model,
                             const BasisRows& rows, double cutoff_hz) {
   const Hdf5ErrorPrintingSuppressed quiet_hdf5;
+  const RowRedistribution blocks(comm, rows.n_rows, rows.owned, "BasisRows::owned");
   try {
-    const RowRedistribution blocks(comm, rows.n_rows, rows.owned, "BasisRows::owned");
     const BlockRead read = run_collective_phase(
         comm, [&] { return read_blocks(path, model, rows, blocks.block(), cutoff_hz); });
+    // Every rank read the file on its own: had it been replaced in between (another run
+    // writing the same basis), the ranks would disagree on the modes, and on how many
+    // exchanges follow.
+    long kept[2] = {static_cast<long>(read.frequency.size()),
+                    -static_cast<long>(read.frequency.size())};
+    MPI_Allreduce(MPI_IN_PLACE, kept, 2, MPI_LONG, MPI_MAX, comm);
+    if (kept[0] != -kept[1])
+      throw Error(
+          "the ranks read different numbers of modes from it (the file was replaced "
+          "while it was read); run again");
     ModalBasis basis;
     basis.cutoff_hz = read.cutoff_hz;
     basis.frequency = read.frequency;

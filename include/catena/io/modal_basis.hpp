@@ -4,14 +4,15 @@
 // pantographs, a restart — skip the eigen-solve (analysis.modal_basis: FILE;
 // docs/output.md, "Modal basis"). The file holds the modes only; what depends on more
 // than K and M (damping, loads, sites, static correction) every run derives anew, and
-// every run checks the modes against its own K and M before it uses them (catenary/
-// modal_build.hpp).
+// every run checks the modes against its own K and M before it uses them
+// (solvers/modes/modes_check.hpp, called by the app's modal set-up).
 //
 // HDF5, format "catena-modal-basis-1", written by all ranks through MPI-IO and renamed
 // into place (atomic):
 //   /frequency          n_modes, Hz, ascending: every mode below cutoff_hz
-//   /shapes/mode_<k>    n_rows each (k = 1 .. n_modes): mode k (unit modal mass, m/√kg and
-//                       1/√kg for slopes) at the free unknowns in node order — nodes
+//   /shapes/mode_<k>    n_rows each (k = 1 .. n_modes): mode k (unit modal mass: 1/√kg
+//                       for positions, 1/(√kg·m) for slopes) at the free unknowns in node
+//                       order — nodes
 //                       ascending, each node's unknowns in its kind's layout
 //                       (model/unknown_kinds.hpp), a slope held in direction once — so the
 //                       file does not depend on the number of ranks

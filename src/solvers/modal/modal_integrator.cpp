@@ -107,7 +107,7 @@ void ModalIntegrator::set_state(double t, Vec q, Vec v, Vec) {
     s.eta_dot = project(a_.get());
   } else {
     s.u_dot = Eigen::VectorXd::Zero(s.u.size());
-    s.eta_dot.setZero();
+    s.eta_dot = Eigen::VectorXd::Zero(s.eta.size());
   }
   stepper_.settle_forces(s);
   current_ = previous_ = pending_ = s;

@@ -98,7 +98,10 @@ const ModalStepper::Site& ModalStepper::cached_site(std::size_t c, double t) con
   std::array<CachedSite, 2>& slots = site_cache_[c];
   for (CachedSite& slot : slots)
     if (slot.t == t) return slot.site;
-  CachedSite& older = slots[0].t < slots[1].t ? slots[0] : slots[1];
+  CachedSite& older = std::isnan(slots[0].t)    ? slots[0]
+                      : std::isnan(slots[1].t)  ? slots[1]
+                      : slots[0].t < slots[1].t ? slots[0]
+                                                : slots[1];
   older.t = t;
   older.site = site(c, t);
   return older.site;

@@ -59,6 +59,18 @@ std::string modes_mismatch(Mat K, Mat M, const std::vector<PetscInt>& keep, doub
     CATENA_PETSC(VecDuplicate(shapes.front(), Mx.out()));
     CATENA_PETSC(VecDuplicate(shapes.front(), Kx.out()));
     for (std::size_t i = 0; i < shapes.size(); ++i) {
+      // M-orthogonal to the mode before (the next lower frequency): a mode stored twice,
+      // which would pass the residual and the count, is not.
+      if (i > 0) {
+        CATENA_PETSC(MatMult(M, shapes[i - 1], Mx.get()));
+        PetscScalar overlap = 0.0;
+        CATENA_PETSC(VecDot(shapes[i], Mx.get(), &overlap));
+        if (!(std::abs(PetscRealPart(overlap)) <= tolerance)) {
+          why << "modes " << i << " and " << i + 1
+              << " are not M-orthogonal (φᵀ M φ' = " << PetscRealPart(overlap) << ")";
+          return why.str();
+        }
+      }
       const double omega = 2.0 * std::numbers::pi * frequency[i];
       const double lambda = omega * omega;
       CATENA_PETSC(MatMult(M, shapes[i], Mx.get()));

@@ -16,6 +16,7 @@
 // one product, D η_free (D: droppers × modes), and O(modes) per site force.
 #include <Eigen/Dense>
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -74,8 +75,9 @@ class ModalStepper {
     Eigen::VectorXd r_dropper;
   };
   Site site(std::size_t c, double t) const;
-  // site(c, t), kept for the last two times asked (a step's start is the previous step's
-  // end): a site is a function of the time only.
+  // site(c, t), kept for two times (the later one replaced by a newer time, the earlier
+  // one first: a step's start is the previous step's end); a site is a function of the
+  // time only.
   const Site& cached_site(std::size_t c, double t) const;
   struct Measures {
     double delta = 0.0, rate = 0.0;  // contact
@@ -121,7 +123,7 @@ class ModalStepper {
   Eigen::VectorXd constant_g_;           // M_p⁻¹ (−f0_p)
   std::vector<Propagator> propagators_;  // the steps used so far (usually one or two)
   struct CachedSite {
-    double t = -1.0;
+    double t = std::numeric_limits<double>::quiet_NaN();  // NaN: empty (equals no time)
     Site site;
   };
   mutable std::vector<std::array<CachedSite, 2>> site_cache_;  // per contact
