@@ -1,7 +1,6 @@
 #include "catena/io/checkpoint.hpp"
 
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -165,15 +164,10 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
 // Collective. write_checkpoint without the error's context.
 void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const model::Model& model,
                                  const CheckpointFacts& facts, const CheckpointShare& share) {
-  const bool is_root = mpi_rank(comm) == 0;
-  long long root_pid = static_cast<long long>(::getpid());
-  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
-  const fs::path temporary_path = temporary_sibling(path, static_cast<pid_t>(root_pid));
-  std::optional<TemporaryFile> temporary;
-  if (is_root) temporary.emplace(temporary_path);
+  CollectiveTemporary temporary(comm, path);
   {
     ParallelHdf5File file =
-        run_collective_phase(comm, [&] { return ParallelHdf5File(comm, temporary_path.string()); });
+        run_collective_phase(comm, [&] { return ParallelHdf5File(comm, temporary.path.string()); });
     const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
     const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
     const RowRedistribution nodes(comm, n_nodes, share.nodes, "checkpoint nodes");
@@ -205,7 +199,7 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
     });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  publish_written_file(comm, temporary_path, temporary, fs::path(path));
+  publish_written_file(comm, temporary, fs::path(path));
 }
 
 }  // namespace

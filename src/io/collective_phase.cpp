@@ -1,5 +1,7 @@
 #include "collective_phase.hpp"
 
+#include <unistd.h>
+
 #include "atomic_file.hpp"
 
 #include "catena/core/error.hpp"
@@ -41,14 +43,28 @@ void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path) {
   });
 }
 
-void publish_written_file(MPI_Comm comm, const std::filesystem::path& temporary_path,
-                          std::optional<TemporaryFile>& temporary,
+namespace {
+
+std::filesystem::path root_named_sibling(MPI_Comm comm, const std::filesystem::path& target) {
+  long long root_pid = static_cast<long long>(::getpid());
+  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
+  return temporary_sibling(target, static_cast<pid_t>(root_pid));
+}
+
+}  // namespace
+
+CollectiveTemporary::CollectiveTemporary(MPI_Comm comm, const std::filesystem::path& target)
+    : path(root_named_sibling(comm, target)) {
+  if (mpi_rank(comm) == 0) owner.emplace(path);
+}
+
+void publish_written_file(MPI_Comm comm, CollectiveTemporary& temporary,
                           const std::filesystem::path& path) {
-  fsync_once_per_node(comm, temporary_path);
+  fsync_once_per_node(comm, temporary.path);
   run_collective_phase(comm, [&] {
-    if (!temporary) return;
-    rename_into_place(temporary->path(), path);
-    temporary->release();
+    if (!temporary.owner) return;
+    rename_into_place(temporary.owner->path(), path);
+    temporary.owner->release();
     fsync_path(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
   });
 }

@@ -82,12 +82,22 @@ std::invoke_result_t<Phase> run_output_phase(MPI_Comm comm, Phase&& phase) {
 // MPI-IO writes sit in its own node's cache, so one fsync per node makes the file durable.
 void fsync_once_per_node(MPI_Comm comm, const std::filesystem::path& path);
 
-// Collective. Makes a file the ranks wrote in parallel under `temporary_path` durable
-// (fsync_once_per_node), then rank 0 renames it over `path` and syncs the directory:
-// readers see the old complete file or the new one. `temporary` is engaged on rank 0 only
-// (it owns the temporary name) and released once renamed.
-void publish_written_file(MPI_Comm comm, const std::filesystem::path& temporary_path,
-                          std::optional<TemporaryFile>& temporary,
+// A temporary sibling the ranks write together (atomic_file.hpp): named by rank 0's
+// process id, so unique per run and the same on every rank; owned by rank 0, which removes
+// it unless it is published. Declare it before the file written into it, so that on
+// failure the file is closed before its removal.
+struct CollectiveTemporary {
+  // Collective. The temporary sibling of `target`.
+  CollectiveTemporary(MPI_Comm comm, const std::filesystem::path& target);
+
+  std::filesystem::path path;
+  std::optional<TemporaryFile> owner;  // rank 0 only
+};
+
+// Collective. Makes the file the ranks wrote into `temporary` durable (fsync_once_per_node),
+// then rank 0 renames it over `path` and syncs the directory: readers see the old complete
+// file or the new one.
+void publish_written_file(MPI_Comm comm, CollectiveTemporary& temporary,
                           const std::filesystem::path& path);
 
 }  // namespace catena::io

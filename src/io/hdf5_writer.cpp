@@ -13,8 +13,6 @@
 // Until 5 succeeds, the temporary files are removed on failure and `path` is untouched.
 #include "catena/io/hdf5_writer.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -336,20 +334,11 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
   const SolutionRows rows = plan_solution_rows(comm, model, result);
   const FileAttributes attributes = broadcast_file_attributes(comm, model, result, info);
 
-  // Rank 0's pid makes the temporary names unique per run and the same on every rank.
-  long long root_pid = static_cast<long long>(::getpid());
-  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
-  // Declared before the file, so that on failure the file is closed before its removal.
-  std::optional<TemporaryFile> hdf5_temporary, xdmf_temporary;
-  if (is_root) {
-    hdf5_temporary.emplace(temporary_sibling(path, static_cast<pid_t>(root_pid)));
-    xdmf_temporary.emplace(temporary_sibling(xdmf_path, static_cast<pid_t>(root_pid)));
-  }
-  const fs::path hdf5_temporary_path = temporary_sibling(path, static_cast<pid_t>(root_pid));
+  CollectiveTemporary hdf5_temporary(comm, path), xdmf_temporary(comm, xdmf_path);
 
   {
     ParallelHdf5File file = run_collective_phase(
-        comm, [&] { return ParallelHdf5File(comm, hdf5_temporary_path.string()); });
+        comm, [&] { return ParallelHdf5File(comm, hdf5_temporary.path.string()); });
     run_collective_phase(comm, [&] {
       create_group(file, layout::mesh_group);
       create_group(file, layout::static_group);
@@ -361,18 +350,18 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     run_collective_phase(comm, [&] { write_attributes(file, attributes); });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  fsync_once_per_node(comm, hdf5_temporary_path);
+  fsync_once_per_node(comm, hdf5_temporary.path);
 
   run_collective_phase(comm, [&] {
     if (!is_root) return;
     const XdmfStaticGrid grid{path.filename().string(),
                               static_cast<std::int64_t>(model.nodes.size()),
                               static_cast<std::int64_t>(model.elements.size())};
-    write_file_durably(xdmf_temporary->path(), static_result_xdmf(grid));
+    write_file_durably(xdmf_temporary.path, static_result_xdmf(grid));
   });
   run_collective_phase(comm, [&] {
     if (!is_root) return;
-    publish_with_xdmf(*hdf5_temporary, path, *xdmf_temporary, xdmf_path);
+    publish_with_xdmf(*hdf5_temporary.owner, path, *xdmf_temporary.owner, xdmf_path);
   });
 }
 

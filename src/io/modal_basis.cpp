@@ -4,8 +4,6 @@
 // rows to their owners.
 #include "catena/io/modal_basis.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -37,15 +35,11 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
                       const std::vector<std::span<const double>>& shapes,
                       const std::string& code_version) {
   const bool root = mpi_rank(comm) == 0;
-  long long root_pid = static_cast<long long>(::getpid());
-  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
-  const fs::path temporary_path = temporary_sibling(path, static_cast<pid_t>(root_pid));
-  std::optional<TemporaryFile> temporary;
-  if (root) temporary.emplace(temporary_path);
+  CollectiveTemporary temporary(comm, path);
   const auto n_modes = static_cast<std::int64_t>(frequency.size());
   {
     ParallelHdf5File file =
-        run_collective_phase(comm, [&] { return ParallelHdf5File(comm, temporary_path.string()); });
+        run_collective_phase(comm, [&] { return ParallelHdf5File(comm, temporary.path.string()); });
     const RowRedistribution blocks(comm, rows.n_rows, rows.owned, "BasisRows::owned");
     std::vector<double> root_frequency;
     if (root) root_frequency = frequency;
@@ -71,7 +65,7 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  publish_written_file(comm, temporary_path, temporary, path);
+  publish_written_file(comm, temporary, path);
 }
 
 // This rank's reading: the file's facts checked against the model and the request, then

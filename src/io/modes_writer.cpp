@@ -1,7 +1,6 @@
 // write_modes: the modes as one HDF5 file written by all ranks through MPI-IO (the node
 // rows moved to balanced blocks first, row_redistribution.hpp) and an XDMF file, both
 // renamed into place at the end (atomic_file.hpp). Layout: docs/output.md, "Modes".
-#include <unistd.h>
 
 #include <filesystem>
 #include <optional>
@@ -91,19 +90,12 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
                       const ModesResult& r, const RunInfo& info) {
   const bool root = mpi_rank(comm) == 0;
   const fs::path xdmf = xdmf_path_for(path);
-  long long root_pid = static_cast<long long>(::getpid());
-  MPI_Bcast(&root_pid, 1, MPI_LONG_LONG, 0, comm);
-  const fs::path h5_temporary_path = temporary_sibling(path, static_cast<pid_t>(root_pid));
-  std::optional<TemporaryFile> h5_temporary, xdmf_temporary;
-  if (root) {
-    h5_temporary.emplace(h5_temporary_path);
-    xdmf_temporary.emplace(temporary_sibling(xdmf, static_cast<pid_t>(root_pid)));
-  }
+  CollectiveTemporary h5_temporary(comm, path), xdmf_temporary(comm, xdmf);
   const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
   const auto n_modes = static_cast<std::int64_t>(r.frequency.size());
   {
     ParallelHdf5File file = run_collective_phase(
-        comm, [&] { return ParallelHdf5File(comm, h5_temporary_path.string()); });
+        comm, [&] { return ParallelHdf5File(comm, h5_temporary.path.string()); });
     write_mesh(file, model);
     const RowRedistribution rows(comm, n_nodes, r.owned_nodes, "ModesResult::owned_nodes");
     create_group(file, kModesGroup);
@@ -130,13 +122,13 @@ void write_atomically(MPI_Comm comm, const fs::path& path, const model::Model& m
     });
     run_collective_phase(comm, [&] { file.close(); });
   }
-  fsync_once_per_node(comm, h5_temporary_path);
+  fsync_once_per_node(comm, h5_temporary.path);
   run_collective_phase(comm, [&] {
     if (!root) return;
-    write_file_durably(xdmf_temporary->path(),
+    write_file_durably(xdmf_temporary.path,
                        modes_xdmf(path.filename().string(), n_nodes,
                                   static_cast<std::int64_t>(model.elements.size()), r.frequency));
-    publish_with_xdmf(*h5_temporary, path, *xdmf_temporary, xdmf);
+    publish_with_xdmf(*h5_temporary.owner, path, *xdmf_temporary.owner, xdmf);
   });
 }
 

@@ -135,14 +135,14 @@ double ModalStepper::contact_law(std::size_t c, const Measures& m) const {
 }
 
 Eigen::VectorXd ModalStepper::elongations(const Eigen::VectorXd& modal,
-                                          const std::vector<Site>& sites,
+                                          const std::vector<const Site*>& sites,
                                           const std::vector<double>& contact_force,
                                           const std::vector<double>& slack) const {
   Eigen::VectorXd eps = modal;
   if (!d_.static_correction) return eps;
   eps += d_.dropper_residual_static;
   for (std::size_t c = 0; c < sites.size(); ++c)
-    if (sites[c].on_path && contact_force[c] != 0.0) eps += contact_force[c] * sites[c].r_dropper;
+    if (sites[c]->on_path && contact_force[c] != 0.0) eps += contact_force[c] * sites[c]->r_dropper;
   for (std::size_t j = 0; j < slack.size(); ++j)
     if (slack[j] != 0.0) eps -= slack[j] * d_.dropper_residual.col(static_cast<Eigen::Index>(j));
   return eps;
@@ -180,15 +180,15 @@ ModalState ModalStepper::rest(double t) const {
 void ModalStepper::settle_forces(ModalState& s) const {
   // Each contact alone with its own static correction (F = k δ with δ = δ_modes − r F, the
   // coupling through other sites' residual flexibility left out), then the droppers.
-  std::vector<Site> sites(d_.contacts.size());
+  std::vector<const Site*> sites(d_.contacts.size());
   s.contact_force.assign(d_.contacts.size(), 0.0);
   for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
-    sites[c] = site(c, s.t);
-    if (!sites[c].on_path) continue;
-    const Measures m = contact_measures(c, sites[c], s, sites[c].r_static);
+    sites[c] = &cached_site(c, s.t);
+    if (!sites[c]->on_path) continue;
+    const Measures m = contact_measures(c, *sites[c], s, sites[c]->r_static);
     const double k = d_.contacts[c].stiffness;
-    const double F = contact_law(c, m) / (1.0 + k * sites[c].r_self);
-    s.contact_force[c] = m.delta - sites[c].r_self * F > 0.0 ? F : 0.0;
+    const double F = contact_law(c, m) / (1.0 + k * sites[c]->r_self);
+    s.contact_force[c] = m.delta - sites[c]->r_self * F > 0.0 ? F : 0.0;
   }
   s.slack.assign(d_.droppers.size(), 0.0);
   if (d_.droppers.empty()) return;
@@ -315,14 +315,14 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     double wire = 0.0, wire_rate = 0.0, wire_slope = 0.0;  // ψ·η, ψ·η̇, ψ'·η
     double head = 0.0, head_rate = 0.0;                    // head·u, head·u̇
   };
-  std::vector<Site> sites(nc);
+  std::vector<const Site*> sites(nc);
   std::vector<ContactTerms> free(nc);
   // Per contact on its path: D (Gu1 ∘ ψ), D (Gv1 ∘ ψ), D (Gu1 ∘ ψ').
   std::vector<Eigen::VectorXd> dropper_u(nc), dropper_v(nc), dropper_slope(nc);
   for (std::size_t c = 0; c < nc; ++c) {
-    sites[c] = cached_site(c, to.t);
-    if (!sites[c].on_path) continue;
-    const Site& at = sites[c];
+    sites[c] = &cached_site(c, to.t);
+    if (!sites[c]->on_path) continue;
+    const Site& at = *sites[c];
     free[c].wire = at.psi.dot(eta_free.matrix());
     free[c].wire_rate = at.psi.dot(rate_free.matrix());
     free[c].wire_slope = at.dpsi.dot(eta_free.matrix());
@@ -366,14 +366,14 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     y.terms.resize(nc);
     const auto j = static_cast<Eigen::Index>(index);
     for (std::size_t x = 0; x < nc; ++x) {
-      if (!sites[x].on_path) continue;
+      if (!sites[x]->on_path) continue;
       ContactTerms& t = y.terms[x];
       if (contact) {
         // The modal load ψ_y: ψ_x·(G ∘ ψ_y) and ψ'_x·(G ∘ ψ_y); the head's load −head_y.
-        const Eigen::ArrayXd gu = P.Gu1 * sites[index].psi.array();
-        t.wire = (sites[x].psi.array() * gu).sum();
-        t.wire_rate = (sites[x].psi.array() * P.Gv1 * sites[index].psi.array()).sum();
-        t.wire_slope = (sites[x].dpsi.array() * gu).sum();
+        const Eigen::ArrayXd gu = P.Gu1 * sites[index]->psi.array();
+        t.wire = (sites[x]->psi.array() * gu).sum();
+        t.wire_rate = (sites[x]->psi.array() * P.Gv1 * sites[index]->psi.array()).sum();
+        t.wire_slope = (sites[x]->dpsi.array() * gu).sum();
         if (np > 0) {
           t.head = d_.contacts[x].head.dot(P.head_u[index]);
           t.head_rate = d_.contacts[x].head.dot(P.head_v[index]);
@@ -393,7 +393,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     unknowns.push_back(std::move(y));
   };
   for (std::size_t c = 0; c < nc; ++c)
-    if (sites[c].on_path) add(true, c, from.contact_force[c]);
+    if (sites[c]->on_path) add(true, c, from.contact_force[c]);
   for (std::size_t j = 0; j < d_.droppers.size(); ++j)
     if (from.slack[j] != 0.0) {
       add(false, j, from.slack[j]);
@@ -442,7 +442,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
           now.head += y.lambda * t.head;
           now.head_rate += y.lambda * t.head_rate;
         }
-        const Site& at = sites[x.index];
+        const Site& at = *sites[x.index];
         double wire_residual = at.r_self * x.lambda + at.r_static;
         if (at.r_dropper.size() > 0)
           for (std::size_t j = 0; j < slack.size(); ++j)
@@ -488,7 +488,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
         double d_law = 0.0;
         if (x.contact) {
           const ModalContact& c = d_.contacts[x.index];
-          const Site& at = sites[x.index];
+          const Site& at = *sites[x.index];
           const ContactTerms& t = y.terms[x.index];
           double d_delta = t.head - t.wire;
           const double d_rate = t.head_rate - t.wire_rate - c.speed * t.wire_slope;
@@ -501,7 +501,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
           const auto i = static_cast<Eigen::Index>(x.index);
           double d_eps = y.eps(i);
           if (d_.static_correction)
-            d_eps += y.contact ? sites[y.index].r_dropper(i)
+            d_eps += y.contact ? sites[y.index]->r_dropper(i)
                                : -d_.dropper_residual(i, static_cast<Eigen::Index>(y.index));
           d_law = dropper_sign_(i) *
                   (dropper_stiffness_(i) * d_eps + dropper_damping_(i) * y.eps_rate(i));
@@ -521,7 +521,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
   for (const Unknown& y : unknowns) {
     if (y.lambda == 0.0) continue;
     if (y.contact) {
-      load += y.lambda * sites[y.index].psi.array();
+      load += y.lambda * sites[y.index]->psi.array();
       if (np > 0) {
         to.u += y.lambda * P.head_u[y.index];
         to.u_dot += y.lambda * P.head_v[y.index];

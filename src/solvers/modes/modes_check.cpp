@@ -59,21 +59,20 @@ std::string modes_mismatch(Mat K, Mat M, const std::vector<PetscInt>& keep, doub
     CATENA_PETSC(VecDuplicate(shapes.front(), Mx.out()));
     CATENA_PETSC(VecDuplicate(shapes.front(), Kx.out()));
     for (std::size_t i = 0; i < shapes.size(); ++i) {
+      const double omega = 2.0 * std::numbers::pi * frequency[i];
+      const double lambda = omega * omega;
+      CATENA_PETSC(MatMult(M, shapes[i], Mx.get()));
       // M-orthogonal to the mode before (the next lower frequency): a mode stored twice,
       // which would pass the residual and the count, is not.
       if (i > 0) {
-        CATENA_PETSC(MatMult(M, shapes[i - 1], Mx.get()));
         PetscScalar overlap = 0.0;
-        CATENA_PETSC(VecDot(shapes[i], Mx.get(), &overlap));
+        CATENA_PETSC(VecDot(shapes[i - 1], Mx.get(), &overlap));
         if (!(std::abs(PetscRealPart(overlap)) <= tolerance)) {
           why << "modes " << i << " and " << i + 1
               << " are not M-orthogonal (φᵀ M φ' = " << PetscRealPart(overlap) << ")";
           return why.str();
         }
       }
-      const double omega = 2.0 * std::numbers::pi * frequency[i];
-      const double lambda = omega * omega;
-      CATENA_PETSC(MatMult(M, shapes[i], Mx.get()));
       CATENA_PETSC(MatMult(K, shapes[i], Kx.get()));
       PetscScalar modal_mass = 0.0;
       PetscReal mass_norm = 0.0, miss = 0.0;

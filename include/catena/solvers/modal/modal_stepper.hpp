@@ -92,7 +92,7 @@ class ModalStepper {
                             double residual) const;
   // The droppers' elongations from their modal part D η with the static correction's part
   // for the site forces (contact forces per contact, slack per dropper).
-  Eigen::VectorXd elongations(const Eigen::VectorXd& modal, const std::vector<Site>& sites,
+  Eigen::VectorXd elongations(const Eigen::VectorXd& modal, const std::vector<const Site*>& sites,
                               const std::vector<double>& contact_force,
                               const std::vector<double>& slack) const;
   double contact_law(std::size_t c, const Measures& m) const;
