@@ -25,6 +25,12 @@ namespace {
 constexpr size_t kBlock = model::kMaxBlockUnknowns;
 }  // namespace
 
+StateView::StateView(const SecondOrderSystem& system) : system_(system) {
+  for (size_t i = 0; i < system.couplings_.size(); ++i)
+    if (dynamic_cast<const couplings::PantographContact*>(system.couplings_[i].get()))
+      contact_couplings_.push_back(i);
+}
+
 void StateView::section_results(const EvalPoint& p, std::vector<int>& element_indices,
                                 std::vector<elements::SectionResult>& results) const {
   const SecondOrderSystem& sys = system_;
@@ -149,9 +155,8 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
     const LocalArrayRead q(sys.q_work_.get());
     std::unique_ptr<LocalArrayRead> v;
     if (p.v) v = std::make_unique<LocalArrayRead>(sys.v_work_.get());
-    for (size_t i = 0; i < sys.couplings_.size(); ++i) {
-      const auto* c = dynamic_cast<const couplings::PantographContact*>(sys.couplings_[i].get());
-      if (!c) continue;
+    for (const size_t i : contact_couplings_) {
+      const auto* c = static_cast<const couplings::PantographContact*>(sys.couplings_[i].get());
       const size_t k = static_cast<size_t>(c->index());
       const bool on = c->on_path(p.t);
       double delta = 0.0, F = 0.0;

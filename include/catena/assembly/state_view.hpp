@@ -31,7 +31,7 @@ struct ContactState {
 
 class StateView {
  public:
-  explicit StateView(const SecondOrderSystem& system) : system_(system) {}
+  explicit StateView(const SecondOrderSystem& system);
 
   // Collective. Every contact's state at p (identical on every rank).
   std::vector<ContactState> contact_states(const EvalPoint& p) const;
@@ -67,6 +67,9 @@ class StateView {
   void gather_owned_nodes(Vec q, std::vector<double>& positions, std::vector<double>& slopes,
                           bool fixed_at_reference) const;
   const SecondOrderSystem& system_;
+  // The couplings that are pantograph contacts, found once: contact_states runs every step,
+  // and a type test of every coupling there cost more than the contacts themselves.
+  std::vector<size_t> contact_couplings_;
 };
 
 }  // namespace catena::assembly
