@@ -22,8 +22,10 @@ enum class JacobianSymmetry { symmetric, general };
 // it does not pivot: a zero pivot fails the factorisation (the Newton solve then fails and
 // the caller cuts the step). `not_needed` is for matrices whose diagonal cannot vanish:
 // the HHT Newton matrix M + c_C C + c_K K of a system without Lagrange multipliers (no
-// zero diagonal block). The options database still decides last
-// (-<prefix>pc_factor_mat_solver_type mumps).
+// zero diagonal block). On more than one rank such a matrix is solved by its partition
+// interface instead (interface_schur.hpp: each rank's interior with PETSc's LU, the few
+// interface rows' Schur complement redundantly), not by MUMPS. The options database still
+// decides last (-<prefix>pc_type lu or -<prefix>pc_factor_mat_solver_type mumps: MUMPS).
 enum class Pivoting { needed, not_needed };
 
 // Logically collective on the SNES.
@@ -36,6 +38,10 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 // enable_mumps_exact_inertia) before calling.
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
                             Pivoting pivoting = Pivoting::needed);
+
+// Not collective. Sets -<prefix><option> to `value` in the options database unless it is
+// there already: Catena's solver defaults, which the command line overrides.
+void set_default_option(const std::string& prefix, const std::string& option, const char* value);
 
 // Relative Newton update at which an iterate is converged to round-off (SNES stol).
 inline constexpr double kNewtonStepTolerance = 1e-12;
