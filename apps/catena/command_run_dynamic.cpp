@@ -65,7 +65,8 @@ class OutputObserver : public solvers::TransientObserver {
         integrator_(integrator),
         schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}),
         progress_(progress),
-        realtime_(realtime) {}
+        realtime_(realtime),
+        registration_(view_.position_rows(system.model().registration_nodes, 2)) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
@@ -126,12 +127,13 @@ class OutputObserver : public solvers::TransientObserver {
   }
 
   void step(const solvers::StepRecord& r) override {
-    io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}};
+    io::StepRecord record{r.time, r.dt, r.newton_iterations, r.error, r.rejected, {}, {}};
     if (!integrator_.contact_forces_at(integrator_.time(), record.contact_force) &&
         !system_.model().contacts.empty())
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
+    registration_heights(record.registration_height);
     {
       const LogStage stage("Output");
       writer_.append_step(record);
@@ -153,6 +155,26 @@ class OutputObserver : public solvers::TransientObserver {
   }
 
   bool stop_requested() override { return StopSignal::requested(); }
+
+  // Collective. z of every registration node at the current state (rank 0 writes them).
+  void registration_heights(std::vector<double>& heights) const {
+    const std::size_t n = system_.model().registration_nodes.size();
+    if (n == 0) return;
+    std::vector<double> local(n, 0.0), entries;
+    if (!integrator_.current_entries(registration_.row, entries)) {
+      const double* q = nullptr;
+      CATENA_PETSC(VecGetArrayRead(integrator_.q(), &q));
+      for (const PetscInt row : registration_.row) entries.push_back(row >= 0 ? q[row] : 0.0);
+      CATENA_PETSC(VecRestoreArrayRead(integrator_.q(), &q));
+    }
+    for (std::size_t k = 0; k < registration_.slot.size(); ++k)
+      local[static_cast<std::size_t>(registration_.slot[k])] =
+          registration_.row[k] >= 0 ? registration_.coefficient[k] * entries[k]
+                                    : registration_.fixed[k];
+    heights.assign(n, 0.0);
+    MPI_Allreduce(local.data(), heights.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM,
+                  system_.comm());
+  }
 
   // Rank 0 warns once, at the first cut; the count follows at the end of the run
   // (warn_fixed_steps_cut).
@@ -180,6 +202,8 @@ class OutputObserver : public solvers::TransientObserver {
   WallClockSchedule schedule_;
   DynamicProgress progress_;
   RealtimeMonitor& realtime_;
+  // Where the registration nodes' heights lie in q (/steps/registration_height).
+  assembly::StateView::ComponentRows registration_;
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;

@@ -80,6 +80,26 @@ void StateView::gather_owned_nodes(Vec q_global, std::vector<double>& positions,
   }
 }
 
+StateView::ComponentRows StateView::position_rows(const std::vector<int>& nodes,
+                                                  int component) const {
+  const SecondOrderSystem& sys = system_;
+  const int rank = mpi_rank(sys.comm_);
+  ComponentRows out;
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    const int n = nodes[j];
+    if (sys.dofs_.node_owner(n) != rank) continue;
+    const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
+    CATENA_ASSERT(kind.position >= 0, "position_rows: a node without a position");
+    const int k = kind.position + component;
+    out.slot.push_back(static_cast<int>(j));
+    out.row.push_back(sys.dofs_.local_dof(n, k));  // owned: its row in the owned part
+    CATENA_ASSERT(out.row.back() < sys.dofs_.n_owned(), "position_rows: an owned node's DOF");
+    out.coefficient.push_back(out.row.back() >= 0 ? sys.dofs_.coefficient(n, k) : 0.0);
+    out.fixed.push_back(sys.node_reference_[kBlock * n + k]);
+  }
+  return out;
+}
+
 Reactions StateView::reactions(const EvalPoint& p) const {
   const SecondOrderSystem& sys = system_;
   const model::Model& m = *sys.model_;

@@ -30,6 +30,7 @@ constexpr const char* node_positions_name = layout::node_positions.path;
 constexpr const char* registration_nodes_name = layout::registration_nodes.path;
 constexpr const char* step_time_name = layout::step_time.path;
 constexpr const char* step_contact_force_name = layout::step_contact_force.path;
+constexpr const char* step_registration_height_name = layout::step_registration_height.path;
 namespace root_attribute = layout::root_attribute;
 namespace pantograph_attribute = layout::pantograph_attribute;
 
@@ -411,9 +412,21 @@ ContactRun read_contact_run_steps(const std::string& path) {
     p.force = std::move(force);
     p.position = std::move(position);
   }
-  for (post::RegistrationPoint& point : run.registration_points) {
+  // The registration points' heights of every step where the run wrote them; a file
+  // without them (an older Catena) gives them interpolated from the samples.
+  const auto n_points = static_cast<hsize_t>(run.registration_points.size());
+  std::vector<double> step_heights;
+  if (n_points > 0 && r.has_link(step_registration_height_name)) {
+    if (r.dims(step_registration_height_name) != std::vector<hsize_t>{n_steps, n_points})
+      r.fail(step_registration_height_name, "not of shape (n_steps, n_registration_nodes)");
+    step_heights = r.doubles(step_registration_height_name, {n_steps, n_points});
+  }
+  for (std::size_t j = 0; j < run.registration_points.size(); ++j) {
+    post::RegistrationPoint& point = run.registration_points[j];
     std::vector<double> z(n);
-    for (std::size_t k = 0; k < n; ++k) z[k] = interpolate(sample_times, point.z, t[k]);
+    for (std::size_t k = 0; k < n; ++k)
+      z[k] = rows[k] == 0 || step_heights.empty() ? interpolate(sample_times, point.z, t[k])
+                                                  : step_heights[(rows[k] - 1) * n_points + j];
     point.z = std::move(z);
   }
   run.n_samples = n;

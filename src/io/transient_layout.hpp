@@ -73,6 +73,10 @@ inline constexpr Dataset step_newton_iterations{"/steps/newton_iterations", null
 inline constexpr Dataset step_rejected{"/steps/rejected", nullptr};
 // (n_steps, n_pantographs) float64. Only with pantographs.
 inline constexpr Dataset step_contact_force{"/steps/contact_force", "N"};
+// (n_steps, n_registration_nodes) float64: z of each registration node (/mesh/
+// registration_nodes, in that order) at the step's end, for the uplift at the supports
+// from every step. Only with registration nodes.
+inline constexpr Dataset step_registration_height{"/steps/registration_height", "m"};
 
 // ---- Pantographs: a group /pantographs/<name> each (the scene's name). ----
 inline constexpr const char* pantographs_group = "/pantographs";

@@ -185,9 +185,10 @@ struct TransientWriter::Impl {
   RowRedistribution supports;
   bool has_supports = false;
   hsize_t n_contacts = 0;
+  hsize_t n_registration = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
   Series reaction_force, reaction_moment;
-  Series contact_force, contact_position, step_contact_force;
+  Series contact_force, contact_position, step_contact_force, step_registration_height;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
   std::vector<StepRecord> pending_steps;
   // Samples buffered until kSamplesPerWrite of them, or flush(): one H5Dwrite per dataset
@@ -221,7 +222,8 @@ struct TransientWriter::Impl {
         supports(c, static_cast<std::int64_t>(supported.size()), support_rows(supported, own_nodes),
                  "owned support nodes"),
         has_supports(!supported.empty()),
-        n_contacts(static_cast<hsize_t>(m.contacts.size())) {
+        n_contacts(static_cast<hsize_t>(m.contacts.size())),
+        n_registration(static_cast<hsize_t>(m.registration_nodes.size())) {
     MPI_Comm_rank(c, &rank);
   }
 
@@ -289,6 +291,17 @@ struct TransientWriter::Impl {
       contact_position = series(layout::contact_position, {n_contacts}, real, samples);
       step_contact_force = series(layout::step_contact_force, {n_contacts}, real, steps);
     }
+    if (n_registration > 0) {
+      if (resume)
+        run_collective_phase(comm, [&] {
+          if (H5Lexists(file.id(), layout::step_registration_height.path, H5P_DEFAULT) <= 0)
+            throw InputError({path, 0, layout::step_registration_height.path},
+                             "missing: written by an older Catena, without the registration "
+                             "points' heights per step; run afresh (without --restart)");
+        });
+      step_registration_height =
+          series(layout::step_registration_height, {n_registration}, real, steps);
+    }
     time = series(layout::time, {}, real, samples);
     positions = series(layout::positions, {n_nodes, 3}, real, samples);
     velocities = series(layout::velocities, {n_nodes, 3}, real, samples);
@@ -304,8 +317,9 @@ struct TransientWriter::Impl {
   std::vector<Series*> all_series() {
     return {&time,          &positions,         &velocities,         &slopes,
             &axial,         &constraint_forces, &reaction_force,     &reaction_moment,
-            &contact_force, &contact_position,  &step_contact_force, &step_time,
-            &step_dt,       &step_iterations,   &step_error,         &step_rejected};
+            &contact_force, &contact_position,  &step_contact_force, &step_registration_height,
+            &step_time,     &step_dt,           &step_iterations,    &step_error,
+            &step_rejected};
   }
 
   // Collective. Closes every dataset, then the file.
@@ -544,6 +558,16 @@ void TransientWriter::flush() {
             forces.push_back(i < r.contact_force.size() ? r.contact_force[i] : 0.0);
         const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
         s.step_contact_force.append(x, n, all, forces.data());
+      }
+      if (s.n_registration > 0) {
+        std::vector<double> heights;
+        for (const StepRecord& r : s.pending_steps) {
+          CATENA_ASSERT(r.registration_height.size() == s.n_registration,
+                        "one height per registration node");
+          heights.insert(heights.end(), r.registration_height.begin(), r.registration_height.end());
+        }
+        const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_registration) : 0};
+        s.step_registration_height.append(x, n, all, heights.data());
       }
       s.pending_steps.clear();
     }

@@ -7,7 +7,9 @@ FINE.h5 and COARSE.h5 are the same fixed-step run with output.interval = dt and 
 coarse output.interval. The steps of a fixed-step run do not depend on the output interval,
 so the statistics of COARSE.h5's steps (--series steps) are those of FINE.h5's samples, and
 of FINE.h5's steps, to round-off in the filter (1e-9 relative), while COARSE.h5's own samples
-cannot be evaluated at the 20 Hz cut-off (too coarse: the command refuses them).
+cannot be evaluated at the 20 Hz cut-off (too coarse: the command refuses them). On a
+catenary the uplift at the supports is among the numbers: from every step's registration
+heights, it must not depend on the output interval either.
 """
 import json
 import subprocess

@@ -70,6 +70,9 @@ std::vector<int> my_rows(int n_rows) {
 
 double height(int node, int sample) { return 0.001 * sample * (node + 1); }
 double contact_force(int sample) { return 100.0 + sample; }
+// The steps' heights differ from the samples', so that a reader taking one for the other
+// is caught.
+double step_height(int node, int step) { return 0.5 + height(node, step); }
 
 // Collective. Writes n_samples samples of made-up values and closes with "complete".
 void write_run(const fs::path& path, const catena::model::Model& model) {
@@ -88,7 +91,9 @@ void write_run(const fs::path& path, const catena::model::Model& model) {
     for (const int element : my_rows(n_elements)) axial.push_back(1000.0 + element);
     const catena::io::ContactSample contacts{{contact_force(k)}, {start + speed * t}};
     writer.append_sample(t, positions, zeros, zeros, axial, {}, contacts);
-    writer.append_step({t, interval, 2, -1.0, 0, {contact_force(k)}});
+    std::vector<double> step_heights;
+    for (const int node : registration) step_heights.push_back(step_height(node, k));
+    writer.append_step({t, interval, 2, -1.0, 0, {contact_force(k)}, step_heights});
   }
   writer.close("complete", {{"steps_accepted", double(n_samples)}});
 }
@@ -191,6 +196,7 @@ TEST_F(TransientWriterTest, WritesTheDocumentedObjectsAndRootAttributes) {
                                               "steps/error",
                                               "steps/rejected",
                                               "steps/contact_force",
+                                              "steps/registration_height",
                                               "pantographs",
                                               "pantographs/leading"}));
     std::set<std::string> attributes;
@@ -238,6 +244,15 @@ TEST_F(TransientWriterTest, TheRunReaderReadsTheWritersFile) {
       ASSERT_EQ(run.registration_points[j].z.size(), std::size_t(n_samples));
       for (int k = 0; k < n_samples; ++k)
         EXPECT_EQ(run.registration_points[j].z[k], height(registration[j], k));
+    }
+    // From the steps: the first sample, then every step after it (/steps/registration_height).
+    const catena::io::ContactRun steps = catena::io::read_contact_run_steps(path.string());
+    ASSERT_EQ(steps.registration_points.size(), registration.size());
+    for (std::size_t j = 0; j < registration.size(); ++j) {
+      ASSERT_EQ(steps.registration_points[j].z.size(), std::size_t(n_samples));
+      EXPECT_EQ(steps.registration_points[j].z[0], height(registration[j], 0));
+      for (int k = 1; k < n_samples; ++k)
+        EXPECT_EQ(steps.registration_points[j].z[k], step_height(registration[j], k));
     }
   }
   MPI_Barrier(MPI_COMM_WORLD);

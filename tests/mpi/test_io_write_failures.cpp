@@ -181,7 +181,7 @@ TEST_F(WriteFailureTest, StepFlushFailingOnOneRankFailsOnEveryRank) {
   const fs::path path = directory_ / "run.h5";
   const auto writer = transient_writer(path);
   append_sample(*writer, 0.0);
-  for (int k = 1; k <= 3; ++k) writer->append_step({0.01 * k, 0.01, 2, -1.0, 0, {}});
+  for (int k = 1; k <= 3; ++k) writer->append_step({0.01 * k, 0.01, 2, -1.0, 0, {}, {}});
   inject(1, "/steps/dt");
   expect_same_error_on_every_rank(
       output_error_of([&] { writer->flush(); }),

@@ -52,6 +52,18 @@ class StateView {
   void owned_constraint_forces(Vec q, std::vector<int>& constraints,
                                std::vector<double>& forces) const;
 
+  // Not collective. Where one component (0 x, 1 y, 2 z) of the position of each of `nodes`
+  // owned here lies in a state vector: `slot` the node's place in `nodes`, `row` its local
+  // row in the vector's owned part (−1 for a fixed DOF, whose value is `fixed`), the value
+  // the DOF's `coefficient` times the row's entry. For a few nodes every step (the
+  // registration points' heights), without gathering every node as owned_node_values does.
+  struct ComponentRows {
+    std::vector<int> slot;
+    std::vector<PetscInt> row;
+    std::vector<double> coefficient, fixed;
+  };
+  ComponentRows position_rows(const std::vector<int>& nodes, int component) const;
+
   // Not collective. x's free DOFs of the owned nodes in their kinds' layouts, padded to
   // model::kMaxBlockUnknowns values per node of dof_map().owned_nodes() (fixed and absent
   // components 0), and this rank's

@@ -31,9 +31,11 @@ ContactRun read_contact_run(const std::string& path);
 // Not collective. As read_contact_run, on the time base of the accepted steps instead of the
 // samples (`catena stats --series steps`): the contact force of every step (/steps/
 // contact_force: a fixed-step run has it at every dt, whatever output.interval), the
-// sample at t = 0 first; the contact positions (linear in time) and the registration
-// points' heights interpolated linearly from the samples, so the uplift is as fine as the
-// output interval. A last step cut short to reach the duration is left out. Throws
+// sample at t = 0 first; the contact positions (linear in time) interpolated from the
+// samples; the registration points' heights of every step (/steps/registration_height), or
+// interpolated from the samples in a file without them (an older Catena), whose uplift is
+// then only as fine as its output interval. A last step cut short to reach the duration is
+// left out. Throws
 // InputError as above, and if the steps are not uniform (an adaptive run).
 ContactRun read_contact_run_steps(const std::string& path);
 

@@ -44,6 +44,8 @@ struct StepRecord {
   double error = -1.0;
   int rejected = 0;
   std::vector<double> contact_force;  // N, one per model::MovingContact, at the step end
+  // m, z of each model::Model::registration_nodes entry (in order) at the step end.
+  std::vector<double> registration_height;
 };
 
 // Reactions at a sample: 3 values each per owned supported node, ascending (the order of

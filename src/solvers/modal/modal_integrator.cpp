@@ -93,6 +93,21 @@ void ModalIntegrator::add_pantographs(const Eigen::VectorXd& y, double* values) 
     if (owned_pantograph_[k] >= 0) values[owned_pantograph_[k]] += y(static_cast<Eigen::Index>(k));
 }
 
+bool ModalIntegrator::current_entries(const std::vector<PetscInt>& rows,
+                                      std::vector<double>& out) const {
+  const double* base = nullptr;
+  CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
+  out.resize(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const PetscInt r = rows[k];
+    out[k] = base[r] + model_.shapes.row(r).dot(current_.eta);
+    for (std::size_t p = 0; p < owned_pantograph_.size(); ++p)
+      if (owned_pantograph_[p] == r) out[k] += current_.u(static_cast<Eigen::Index>(p));
+  }
+  CATENA_PETSC(VecRestoreArrayRead(model_.q0.get(), &base));
+  return true;
+}
+
 void ModalIntegrator::set_state(double t, Vec q, Vec v, Vec) {
   // η = Φᵀ M (q − q0), η̇ = Φᵀ M v (unit modal masses); the pantographs' DOFs as they are.
   ModalState s;

@@ -40,6 +40,9 @@ class ModalIntegrator final : public TimeIntegrator {
   const IntegratorCounters& counters() const override { return counters_; }
   // Linear between the step's ends (the loads' own interpolation).
   bool contact_forces_at(double t, std::vector<double>& out) const override;
+  // A row's value from its mode shapes alone (q0 + φ_row·η, or the pantograph DOF): the
+  // static correction is left out, as in q().
+  bool current_entries(const std::vector<PetscInt>& rows, std::vector<double>& out) const override;
 
   const ModalModel& model() const { return model_; }
   const ModalState& state() const { return current_; }

@@ -115,6 +115,15 @@ class TimeIntegrator {
     return false;
   }
 
+  // Not collective. After accept(): the current q's entries at `rows` (local rows of its
+  // owned part) into `out`, when the integrator has them cheaper than q() (the modal model
+  // rebuilds q from every mode); false: the caller reads q().
+  virtual bool current_entries(const std::vector<PetscInt>& rows, std::vector<double>& out) const {
+    (void)rows;
+    (void)out;
+    return false;
+  }
+
   // Restarts (resume_state.hpp). Not collective. After accept(): what this integrator
   // carries to its next step beyond (t, q, v, a), its counters included; the vectors are
   // its own, valid until the next attempt. Default: nothing (a restart then starts afresh).
