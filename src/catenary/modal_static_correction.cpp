@@ -26,7 +26,7 @@ constexpr PetscInt kBlock = 64;
 // rank PETSc's LU (nested dissection; K is positive definite, no pivoting needed; 4–5 times
 // faster than MUMPS on lines, docs/performance.md); on more, the same LU on each rank's
 // interior and the partition interface's Schur complement (solvers/newton/interface_schur:
-// 2.6 s for EN 50318's 4893 site solves at np 2, against 10.3 s with MUMPS's LDLᵀ).
+// 1.85 s for EN 50318's 4893 site solves at np 2, against 10.3 s with MUMPS's LDLᵀ).
 class CatenarySolver {
  public:
   CatenarySolver(Mat K, const std::vector<PetscInt>& held) {
@@ -47,7 +47,7 @@ class CatenarySolver {
         size == 1 ? solvers::JacobianSymmetry::general : solvers::JacobianSymmetry::symmetric,
         solvers::Pivoting::not_needed);
     CATENA_PETSC(KSPSetOperators(ksp_.get(), K_.get(), K_.get()));
-    if (size > 1) solvers::use_interface_schur(ksp_.get(), K_.get(), "modal_correction_");
+    if (size > 1) solvers::use_interface_schur(ksp_.get(), K_.get());
     CATENA_PETSC(KSPSetUp(ksp_.get()));
     check("factor");
     first_ = first;

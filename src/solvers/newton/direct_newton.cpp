@@ -63,7 +63,7 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
   if (use_interface_split(snes, prefix, pivoting)) {
     Mat J = nullptr;
     CATENA_PETSC(SNESGetJacobian(snes, &J, nullptr, nullptr, nullptr));
-    use_interface_schur(ksp, J, prefix);
+    use_interface_schur(ksp, J);
   }
   CATENA_PETSC(SNESSetFromOptions(snes));
 }

@@ -1,73 +1,36 @@
 #include "catena/solvers/newton/interface_schur.hpp"
 
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
 #include <vector>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/petsc_handle.hpp"
-#include "catena/solvers/newton/direct_newton.hpp"
 
 namespace catena::solvers {
 namespace {
 
-constexpr const char* kInteriorKey = "catena_interior_rows";
-constexpr const char* kInterfaceKey = "catena_interface_rows";
-
-// The PC as the interface split of the composed index sets, S formed explicitly.
-void set_splits(PC pc) {
-  PetscObject interior = nullptr, interface = nullptr;
-  CATENA_PETSC(PetscObjectQuery(reinterpret_cast<PetscObject>(pc), kInteriorKey, &interior));
-  CATENA_PETSC(PetscObjectQuery(reinterpret_cast<PetscObject>(pc), kInterfaceKey, &interface));
-  CATENA_PETSC(PCSetType(pc, PCFIELDSPLIT));
-  CATENA_PETSC(PCFieldSplitSetIS(pc, "interior", reinterpret_cast<IS>(interior)));
-  CATENA_PETSC(PCFieldSplitSetIS(pc, "interface", reinterpret_cast<IS>(interface)));
-  CATENA_PETSC(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
-  CATENA_PETSC(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL));
-  CATENA_PETSC(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_FULL, nullptr));
-}
-
-}  // namespace
-
-void refresh_interface_schur(KSP ksp) {
-  PC old = nullptr;
-  CATENA_PETSC(KSPGetPC(ksp, &old));
-  PetscObject interior = nullptr, interface = nullptr;
-  CATENA_PETSC(PetscObjectQuery(reinterpret_cast<PetscObject>(old), kInteriorKey, &interior));
-  CATENA_PETSC(PetscObjectQuery(reinterpret_cast<PetscObject>(old), kInterfaceKey, &interface));
-  if (!interior) return;
-  // PETSc 3.18 keeps the explicit S of the first set-up when the matrix changes (the
-  // solve is then no longer exact: tests/mpi/test_solvers_interface_schur.cpp), and a
-  // PCReset leaves the split unusable: a fresh PC forms S again with the new factors.
-  MPI_Comm comm = MPI_COMM_NULL;
-  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(old), &comm));
-  const char* prefix = nullptr;
-  CATENA_PETSC(PCGetOptionsPrefix(old, &prefix));
-  Mat A = nullptr, P = nullptr;
-  CATENA_PETSC(PCGetOperators(old, &A, &P));
-  PC pc = nullptr;
-  CATENA_PETSC(PCCreate(comm, &pc));
-  CATENA_PETSC(PCSetOptionsPrefix(pc, prefix));
-  CATENA_PETSC(PetscObjectCompose(reinterpret_cast<PetscObject>(pc), kInteriorKey, interior));
-  CATENA_PETSC(PetscObjectCompose(reinterpret_cast<PetscObject>(pc), kInterfaceKey, interface));
-  set_splits(pc);
-  CATENA_PETSC(PCSetFromOptions(pc));
-  CATENA_PETSC(PCSetOperators(pc, A, P));
-  CATENA_PETSC(KSPSetPC(ksp, pc));  // the KSP takes a reference; the old PC goes
-  CATENA_PETSC(PCDestroy(&pc));
-}
+PetscInt petsc(Eigen::Index n) { return static_cast<PetscInt>(n); }
 
 // Rows coupled to more than this many unknowns of other ranks are hubs: a pantograph's,
 // whose contact can reach any element of its contact wire (the pattern holds them all).
 // A hub joins the interface alone; its neighbours need not.
 constexpr PetscInt kHubColumns = 64;
 
-long use_interface_schur(KSP ksp, Mat J, const std::string& prefix) {
-  MPI_Comm comm = MPI_COMM_NULL;
-  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(J), &comm));
+// This rank's rows of J (global numbers, ascending): interior and interface.
+struct RowSplit {
+  std::vector<PetscInt> interior, interface;
+};
+
+// Collective. The off-process block's pattern (garray: its columns' global numbers) holds
+// every coupling between ranks, in the row of one rank or the other; the interface must
+// hold one end of each: the hubs, and every other row with an entry to a non-hub.
+RowSplit split_rows(Mat J) {
   PetscInt first = 0, end = 0;
   CATENA_PETSC(MatGetOwnershipRange(J, &first, &end));
-  // The off-process block's pattern (garray: its columns' global numbers). Every coupling
-  // between ranks is an entry there, in the row of one rank or the other; the interface
-  // must hold one end of each: the hubs, and every other row with an entry to a non-hub.
   Mat diagonal = nullptr, off = nullptr;
   const PetscInt* garray = nullptr;
   CATENA_PETSC(MatMPIAIJGetSeqAIJ(J, &diagonal, &off, &garray));
@@ -88,18 +51,18 @@ long use_interface_schur(KSP ksp, Mat J, const std::string& prefix) {
   VecHandle column_hubs;
   CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, n_columns, column_hubs.out()));
   {
-    IS from = nullptr;
-    CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, n_columns, garray, PETSC_USE_POINTER, &from));
+    IsHandle from;
+    CATENA_PETSC(
+        ISCreateGeneral(PETSC_COMM_SELF, n_columns, garray, PETSC_USE_POINTER, from.out()));
     VecScatter scatter = nullptr;
-    CATENA_PETSC(VecScatterCreate(hubs.get(), from, column_hubs.get(), nullptr, &scatter));
+    CATENA_PETSC(VecScatterCreate(hubs.get(), from.get(), column_hubs.get(), nullptr, &scatter));
     CATENA_PETSC(
         VecScatterBegin(scatter, hubs.get(), column_hubs.get(), INSERT_VALUES, SCATTER_FORWARD));
     CATENA_PETSC(
         VecScatterEnd(scatter, hubs.get(), column_hubs.get(), INSERT_VALUES, SCATTER_FORWARD));
     CATENA_PETSC(VecScatterDestroy(&scatter));
-    CATENA_PETSC(ISDestroy(&from));
   }
-  std::vector<PetscInt> interior, interface;
+  RowSplit split;
   {
     const PetscScalar *h = nullptr, *column_hub = nullptr;
     CATENA_PETSC(VecGetArrayRead(hubs.get(), &h));
@@ -107,37 +70,275 @@ long use_interface_schur(KSP ksp, Mat J, const std::string& prefix) {
     for (PetscInt i = 0; i < n_rows; ++i) {
       bool shared = h[i] > 0.0;
       for (PetscInt k = ia[i]; k < ia[i + 1] && !shared; ++k) shared = column_hub[ja[k]] == 0.0;
-      (shared ? interface : interior).push_back(first + i);
+      (shared ? split.interface : split.interior).push_back(first + i);
     }
     CATENA_PETSC(VecRestoreArrayRead(column_hubs.get(), &column_hub));
     CATENA_PETSC(VecRestoreArrayRead(hubs.get(), &h));
   }
   CATENA_PETSC(MatRestoreRowIJ(off, 0, PETSC_FALSE, PETSC_FALSE, &n_rows, &ia, &ja, &done));
-  IS is_interior = nullptr, is_interface = nullptr;
-  CATENA_PETSC(ISCreateGeneral(comm, static_cast<PetscInt>(interior.size()), interior.data(),
-                               PETSC_COPY_VALUES, &is_interior));
-  CATENA_PETSC(ISCreateGeneral(comm, static_cast<PetscInt>(interface.size()), interface.data(),
-                               PETSC_COPY_VALUES, &is_interface));
+  return split;
+}
+
+// The solve. Per factorisation: this rank's interior block A_II (PETSc's LU, nested
+// dissection, the symbolic part once), W = A_II⁻¹ A_IΓ for the interface columns its
+// interior touches, and S = A_ΓΓ − Σ_ranks A_ΓI W, summed on every rank and factored there
+// (partial pivoting). Per solve: y = A_II⁻¹ b_I, x_Γ = S⁻¹ (b_Γ − Σ A_ΓI y), x_I = y − W x_Γ:
+// one interior solve, a product with W's few columns and one allreduce of n_Γ numbers.
+class InterfaceSchur {
+ public:
+  InterfaceSchur(MPI_Comm comm, const RowSplit& split, PetscInt first) : comm_(comm) {
+    for (PetscInt row : split.interior) interior_local_.push_back(row - first);
+    int size = 1;
+    MPI_Comm_size(comm, &size);
+    // Every rank's interface rows; ranks own ascending ranges, so rank order is ascending.
+    const int n_mine = static_cast<int>(split.interface.size());
+    std::vector<int> counts(static_cast<std::size_t>(size)), offsets(counts.size(), 0);
+    MPI_Allgather(&n_mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+    std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
+    interface_.resize(static_cast<std::size_t>(offsets.back() + counts.back()));
+    MPI_Allgatherv(split.interface.data(), n_mine, MPIU_INT, interface_.data(), counts.data(),
+                   offsets.data(), MPIU_INT, comm);
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    for (int k = 0; k < n_mine; ++k) {
+      owned_local_.push_back(split.interface[static_cast<std::size_t>(k)] - first);
+      owned_position_.push_back(offsets[static_cast<std::size_t>(rank)] + k);
+    }
+    CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(split.interior.size()),
+                                 split.interior.data(), PETSC_COPY_VALUES, interior_.out()));
+    CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(interface_.size()),
+                                 interface_.data(), PETSC_COPY_VALUES, interface_is_.out()));
+  }
+
+  ~InterfaceSchur() {
+    if (blocks_) MatDestroySubMatrices(4, &blocks_);
+  }
+
+  long interface_size() const { return static_cast<long>(interface_.size()); }
+
+  // Collective. Factors A (same pattern at every call); false if a pivot vanished.
+  bool setup(Mat A) {
+    // The four blocks, one call: A_II, A_IΓ (this rank's rows), A_ΓI, A_ΓΓ (every interface
+    // row, fetched from its owner).
+    IS rows[4] = {interior_.get(), interior_.get(), interface_is_.get(), interface_is_.get()};
+    IS cols[4] = {interior_.get(), interface_is_.get(), interior_.get(), interface_is_.get()};
+    CATENA_PETSC(MatCreateSubMatrices(A, 4, rows, cols,
+                                      blocks_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &blocks_));
+    const Mat Aii = blocks_[0], Aig = blocks_[1], Agi = blocks_[2], Agg = blocks_[3];
+    const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
+    const auto n_g = static_cast<Eigen::Index>(interface_.size());
+    bool ok = true;
+    if (n_i > 0) {
+      MatFactorInfo info;
+      CATENA_PETSC(MatFactorInfoInitialize(&info));
+      if (!factor_) {
+        CATENA_PETSC(MatGetFactor(Aii, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
+        CATENA_PETSC(MatGetOrdering(Aii, MATORDERINGND, row_order_.out(), column_order_.out()));
+        CATENA_PETSC(
+            MatLUFactorSymbolic(factor_.get(), Aii, row_order_.get(), column_order_.get(), &info));
+        touched_ = touched_columns(Aig);
+        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), b_interior_.out()));
+        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), y_interior_.out()));
+        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_g), t_interface_.out()));
+      }
+      CATENA_PETSC(MatLUFactorNumeric(factor_.get(), Aii, &info));
+      MatFactorError error = MAT_FACTOR_NOERROR;
+      CATENA_PETSC(MatFactorGetError(factor_.get(), &error));
+      ok = error == MAT_FACTOR_NOERROR;
+    }
+    int all_ok = ok ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &all_ok, 1, MPI_INT, MPI_MIN, comm_);
+    if (!all_ok) return false;
+    // W = A_II⁻¹ A_IΓ on the touched columns, and this rank's part of S.
+    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n_g, n_g);
+    const auto n_t = static_cast<Eigen::Index>(touched_.size());
+    W_.resize(n_i, n_t);
+    if (n_i > 0 && n_t > 0) {
+      MatHandle B, X;
+      CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), nullptr, B.out()));
+      CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), W_.data(), X.out()));
+      {
+        PetscScalar* b = nullptr;
+        CATENA_PETSC(MatDenseGetArrayWrite(B.get(), &b));
+        std::fill(b, b + n_i * n_t, 0.0);
+        std::vector<Eigen::Index> column_of(static_cast<std::size_t>(n_g), -1);
+        for (Eigen::Index k = 0; k < n_t; ++k) column_of[static_cast<std::size_t>(touched_[k])] = k;
+        for (PetscInt i = 0; i < n_i; ++i) {
+          PetscInt n = 0;
+          const PetscInt* c = nullptr;
+          const PetscScalar* v = nullptr;
+          CATENA_PETSC(MatGetRow(Aig, i, &n, &c, &v));
+          for (PetscInt k = 0; k < n; ++k)
+            b[column_of[static_cast<std::size_t>(c[k])] * n_i + i] = v[k];
+          CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, &v));
+        }
+        CATENA_PETSC(MatDenseRestoreArrayWrite(B.get(), &b));
+      }
+      CATENA_PETSC(MatMatSolve(factor_.get(), B.get(), X.get()));
+      // −A_ΓI W, column by column (into the touched columns of S).
+      VecHandle w;
+      CATENA_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, petsc(n_i), nullptr, w.out()));
+      for (Eigen::Index k = 0; k < n_t; ++k) {
+        CATENA_PETSC(VecPlaceArray(w.get(), W_.col(k).data()));
+        CATENA_PETSC(MatMult(Agi, w.get(), t_interface_.get()));
+        CATENA_PETSC(VecResetArray(w.get()));
+        const PetscScalar* t = nullptr;
+        CATENA_PETSC(VecGetArrayRead(t_interface_.get(), &t));
+        for (Eigen::Index r = 0; r < n_g; ++r) S(r, touched_[k]) -= t[r];
+        CATENA_PETSC(VecRestoreArrayRead(t_interface_.get(), &t));
+      }
+    }
+    // A_ΓΓ once (rank 0's copy), then the sum over ranks.
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    if (rank == 0)
+      for (PetscInt r = 0; r < n_g; ++r) {
+        PetscInt n = 0;
+        const PetscInt* c = nullptr;
+        const PetscScalar* v = nullptr;
+        CATENA_PETSC(MatGetRow(Agg, r, &n, &c, &v));
+        for (PetscInt k = 0; k < n; ++k) S(r, c[k]) += v[k];
+        CATENA_PETSC(MatRestoreRow(Agg, r, &n, &c, &v));
+      }
+    MPI_Allreduce(MPI_IN_PLACE, S.data(), static_cast<int>(S.size()), MPI_DOUBLE, MPI_SUM, comm_);
+    if (n_g > 0) {
+      schur_.compute(S);
+      // Partial pivoting reports no singularity by itself: a vanishing reciprocal condition
+      // number (the same on every rank: S is) fails the factorisation.
+      const double rcond = schur_.rcond();
+      if (!(rcond > 1e3 * std::numeric_limits<double>::epsilon())) return false;
+    }
+    return true;
+  }
+
+  // Collective. x = A⁻¹ b.
+  void apply(Vec b, Vec x) const {
+    const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
+    const auto n_g = static_cast<Eigen::Index>(interface_.size());
+    const PetscScalar* bb = nullptr;
+    CATENA_PETSC(VecGetArrayRead(b, &bb));
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(n_g);
+    for (std::size_t k = 0; k < owned_local_.size(); ++k)
+      r(owned_position_[k]) = bb[owned_local_[k]];
+    PetscScalar* y = nullptr;
+    if (n_i > 0) {
+      PetscScalar* bi = nullptr;
+      CATENA_PETSC(VecGetArrayWrite(b_interior_.get(), &bi));
+      for (Eigen::Index k = 0; k < n_i; ++k)
+        bi[k] = bb[interior_local_[static_cast<std::size_t>(k)]];
+      CATENA_PETSC(VecRestoreArrayWrite(b_interior_.get(), &bi));
+      CATENA_PETSC(MatSolve(factor_.get(), b_interior_.get(), y_interior_.get()));
+      CATENA_PETSC(MatMult(blocks_[2], y_interior_.get(), t_interface_.get()));
+      const PetscScalar* t = nullptr;
+      CATENA_PETSC(VecGetArrayRead(t_interface_.get(), &t));
+      r -= Eigen::Map<const Eigen::VectorXd>(t, n_g);
+      CATENA_PETSC(VecRestoreArrayRead(t_interface_.get(), &t));
+    }
+    CATENA_PETSC(VecRestoreArrayRead(b, &bb));
+    MPI_Allreduce(MPI_IN_PLACE, r.data(), static_cast<int>(n_g), MPI_DOUBLE, MPI_SUM, comm_);
+    const Eigen::VectorXd x_interface = n_g > 0 ? Eigen::VectorXd(schur_.solve(r)) : r;
+    PetscScalar* xx = nullptr;
+    CATENA_PETSC(VecGetArray(x, &xx));
+    if (n_i > 0) {
+      CATENA_PETSC(VecGetArray(y_interior_.get(), &y));
+      Eigen::Map<Eigen::VectorXd> yi(y, n_i);
+      if (W_.cols() > 0) yi.noalias() -= W_ * x_interface(touched_);
+      for (Eigen::Index k = 0; k < n_i; ++k)
+        xx[interior_local_[static_cast<std::size_t>(k)]] = yi(k);
+      CATENA_PETSC(VecRestoreArray(y_interior_.get(), &y));
+    }
+    for (std::size_t k = 0; k < owned_local_.size(); ++k)
+      xx[owned_local_[k]] = x_interface(owned_position_[k]);
+    CATENA_PETSC(VecRestoreArray(x, &xx));
+  }
+
+ private:
+  // The interface columns (positions) A_IΓ has entries in, ascending.
+  static std::vector<Eigen::Index> touched_columns(Mat Aig) {
+    PetscInt n_rows = 0, n_columns = 0;
+    CATENA_PETSC(MatGetSize(Aig, &n_rows, &n_columns));
+    std::vector<char> touched(static_cast<std::size_t>(n_columns), 0);
+    for (PetscInt i = 0; i < n_rows; ++i) {
+      PetscInt n = 0;
+      const PetscInt* c = nullptr;
+      CATENA_PETSC(MatGetRow(Aig, i, &n, &c, nullptr));
+      for (PetscInt k = 0; k < n; ++k) touched[static_cast<std::size_t>(c[k])] = 1;
+      CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, nullptr));
+    }
+    std::vector<Eigen::Index> out;
+    for (std::size_t k = 0; k < touched.size(); ++k)
+      if (touched[k]) out.push_back(static_cast<Eigen::Index>(k));
+    return out;
+  }
+
+  MPI_Comm comm_;
+  std::vector<PetscInt> interior_local_;      // this rank's interior rows, local numbers
+  std::vector<PetscInt> interface_;           // every rank's interface rows, global, ascending
+  std::vector<PetscInt> owned_local_;         // this rank's interface rows, local numbers
+  std::vector<Eigen::Index> owned_position_;  // ... and their places in interface_
+  IsHandle interior_, interface_is_;          // sequential index sets of global rows
+  Mat* blocks_ = nullptr;                     // A_II, A_IΓ, A_ΓI, A_ΓΓ
+  MatHandle factor_;
+  IsHandle row_order_, column_order_;
+  std::vector<Eigen::Index> touched_;
+  Eigen::MatrixXd W_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+  VecHandle b_interior_, y_interior_, t_interface_;
+};
+
+InterfaceSchur& context(PC pc) {
+  void* c = nullptr;
+  CATENA_PETSC(PCShellGetContext(pc, &c));
+  return *static_cast<InterfaceSchur*>(c);
+}
+
+// A C++ exception must not cross PETSc's C frames: it becomes a PETSc error with its text.
+template <class Fn>
+PetscErrorCode guarded(PC pc, Fn&& fn) noexcept {
+  try {
+    fn();
+    return 0;
+  } catch (const std::exception& e) {
+    return PetscError(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), __LINE__,
+                      "interface_schur", __FILE__, PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s",
+                      e.what());
+  }
+}
+
+PetscErrorCode setup_shell(PC pc) {
+  return guarded(pc, [&] {
+    Mat A = nullptr, P = nullptr;
+    CATENA_PETSC(PCGetOperators(pc, &A, &P));
+    if (!context(pc).setup(P)) CATENA_PETSC(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
+  });
+}
+
+PetscErrorCode apply_shell(PC pc, Vec b, Vec x) {
+  return guarded(pc, [&] { context(pc).apply(b, x); });
+}
+
+PetscErrorCode destroy_shell(PC pc) {
+  return guarded(pc, [&] { delete &context(pc); });
+}
+
+}  // namespace
+
+long use_interface_schur(KSP ksp, Mat J) {
+  MPI_Comm comm = MPI_COMM_NULL;
+  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(J), &comm));
+  PetscInt first = 0, end = 0;
+  CATENA_PETSC(MatGetOwnershipRange(J, &first, &end));
+  auto solver = std::make_unique<InterfaceSchur>(comm, split_rows(J), first);
+  const long n_interface = solver->interface_size();
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp, &pc));
-  // The splits stay with the PC (composed), for refresh_interface_schur.
-  CATENA_PETSC(PetscObjectCompose(reinterpret_cast<PetscObject>(pc), kInteriorKey,
-                                  reinterpret_cast<PetscObject>(is_interior)));
-  CATENA_PETSC(PetscObjectCompose(reinterpret_cast<PetscObject>(pc), kInterfaceKey,
-                                  reinterpret_cast<PetscObject>(is_interface)));
-  CATENA_PETSC(ISDestroy(&is_interior));
-  CATENA_PETSC(ISDestroy(&is_interface));
-  set_default_option(prefix, "fieldsplit_interior_ksp_type", "preonly");
-  set_default_option(prefix, "fieldsplit_interior_pc_type", "bjacobi");
-  set_default_option(prefix, "fieldsplit_interior_sub_pc_type", "lu");
-  set_default_option(prefix, "fieldsplit_interface_ksp_type", "preonly");
-  set_default_option(prefix, "fieldsplit_interface_pc_type", "redundant");
-  set_default_option(prefix, "fieldsplit_interface_redundant_pc_type", "lu");
-  set_splits(pc);
-  CATENA_PETSC(KSPSetFromOptions(ksp));
-  long n_interface = static_cast<long>(interface.size()), total = 0;
-  MPI_Allreduce(&n_interface, &total, 1, MPI_LONG, MPI_SUM, comm);
-  return total;
+  CATENA_PETSC(PCSetType(pc, PCSHELL));
+  CATENA_PETSC(PCShellSetName(pc, "catena interface Schur complement"));
+  CATENA_PETSC(PCShellSetContext(pc, solver.release()));
+  CATENA_PETSC(PCShellSetSetUp(pc, setup_shell));
+  CATENA_PETSC(PCShellSetApply(pc, apply_shell));
+  CATENA_PETSC(PCShellSetDestroy(pc, destroy_shell));
+  return n_interface;
 }
 
 }  // namespace catena::solvers

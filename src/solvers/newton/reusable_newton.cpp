@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "catena/core/error.hpp"
-#include "catena/solvers/newton/interface_schur.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
 
 namespace catena::solvers {
@@ -60,7 +59,6 @@ PetscErrorCode ReusableNewton::form_jacobian(SNES snes, Vec x, Mat J, Mat, void*
   return self->guard_.run([&] {
     const bool refresh = !self->tangent_valid_ || self->full_newton_now_;
     self->builder_(x, refresh, J);
-    refresh_interface_schur(self->ksp());
     if (refresh) {
       self->tangent_valid_ = true;
       CATENA_PETSC(SNESGetIterationNumber(snes, &self->tangent_iterate_));
@@ -271,7 +269,6 @@ NewtonResult ReusableNewton::linear_step(Vec x) {
     CATENA_PETSC(SNESGetJacobian(snes_.get(), &J, nullptr, nullptr, nullptr));
     const bool refresh = !tangent_valid_;
     builder_(x, refresh, J);
-    refresh_interface_schur(solver);
     if (refresh) {
       tangent_valid_ = true;
       ++counters_.tangent_evaluations;
