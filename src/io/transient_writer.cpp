@@ -274,14 +274,18 @@ struct TransientWriter::Impl {
       constraint_forces =
           series(layout::constraint_forces, {static_cast<hsize_t>(model.constraints.size()), 3},
                  real, samples);
+    // A file to continue that lacks a series newer Catenas write: refused, naming it.
+    const auto require_on_resume = [&](const layout::Dataset& dataset, const char* what) {
+      if (!resume) return;
+      const std::string why = std::string("missing: written by an older Catena, without ") + what +
+                              "; run afresh (without --restart)";
+      run_collective_phase(comm, [&] {
+        if (H5Lexists(file.id(), dataset.path, H5P_DEFAULT) <= 0)
+          throw InputError({path, 0, dataset.path}, why);
+      });
+    };
     if (has_supports) {
-      if (resume)
-        run_collective_phase(comm, [&] {
-          if (H5Lexists(file.id(), layout::reaction_force.path, H5P_DEFAULT) <= 0)
-            throw InputError({path, 0, layout::reaction_force.path},
-                             "missing: written by an older Catena, without the supports' "
-                             "reactions over time; run afresh (without --restart)");
-        });
+      require_on_resume(layout::reaction_force, "the supports' reactions over time");
       const auto n_supported = static_cast<hsize_t>(supported.size());
       reaction_force = series(layout::reaction_force, {n_supported, 3}, real, samples);
       reaction_moment = series(layout::reaction_moment, {n_supported, 3}, real, samples);
@@ -292,13 +296,8 @@ struct TransientWriter::Impl {
       step_contact_force = series(layout::step_contact_force, {n_contacts}, real, steps);
     }
     if (n_registration > 0) {
-      if (resume)
-        run_collective_phase(comm, [&] {
-          if (H5Lexists(file.id(), layout::step_registration_height.path, H5P_DEFAULT) <= 0)
-            throw InputError({path, 0, layout::step_registration_height.path},
-                             "missing: written by an older Catena, without the registration "
-                             "points' heights per step; run afresh (without --restart)");
-        });
+      require_on_resume(layout::step_registration_height,
+                        "the registration points' heights per step");
       step_registration_height =
           series(layout::step_registration_height, {n_registration}, real, steps);
     }
