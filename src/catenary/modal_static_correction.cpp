@@ -47,7 +47,8 @@ class CatenarySolver {
         size == 1 ? solvers::JacobianSymmetry::general : solvers::JacobianSymmetry::symmetric,
         solvers::Pivoting::not_needed);
     CATENA_PETSC(KSPSetOperators(ksp_.get(), K_.get(), K_.get()));
-    if (size > 1) solvers::use_interface_schur(ksp_.get(), K_.get());
+    if (solvers::use_interface_split(comm, "modal_correction_", solvers::Pivoting::not_needed))
+      solvers::use_interface_schur(ksp_.get(), K_.get());
     CATENA_PETSC(KSPSetUp(ksp_.get()));
     check("factor");
     first_ = first;

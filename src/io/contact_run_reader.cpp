@@ -414,19 +414,32 @@ ContactRun read_contact_run_steps(const std::string& path) {
   }
   // The registration points' heights of every step where the run wrote them; a file
   // without them (an older Catena) gives them interpolated from the samples.
-  const auto n_points = static_cast<hsize_t>(run.registration_points.size());
+  // Its columns follow /mesh/registration_nodes; the points are that list's distinct nodes,
+  // ascending (read_contact_run): point j reads the column of its node's first entry.
   std::vector<double> step_heights;
-  if (n_points > 0 && r.has_link(step_registration_height_name)) {
-    if (r.dims(step_registration_height_name) != std::vector<hsize_t>{n_steps, n_points})
+  std::vector<std::size_t> column(run.registration_points.size());
+  hsize_t n_columns = 0;
+  if (!run.registration_points.empty() && r.has_link(step_registration_height_name)) {
+    const std::vector<std::int64_t> listed =
+        r.integers(registration_nodes_name, r.dims(registration_nodes_name));
+    std::vector<std::int64_t> distinct(listed);
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    for (std::size_t j = 0; j < column.size(); ++j)
+      column[j] = static_cast<std::size_t>(std::find(listed.begin(), listed.end(), distinct[j]) -
+                                           listed.begin());
+    n_columns = static_cast<hsize_t>(listed.size());
+    if (r.dims(step_registration_height_name) != std::vector<hsize_t>{n_steps, n_columns})
       r.fail(step_registration_height_name, "not of shape (n_steps, n_registration_nodes)");
-    step_heights = r.doubles(step_registration_height_name, {n_steps, n_points});
+    step_heights = r.doubles(step_registration_height_name, {n_steps, n_columns});
   }
   for (std::size_t j = 0; j < run.registration_points.size(); ++j) {
     post::RegistrationPoint& point = run.registration_points[j];
     std::vector<double> z(n);
     for (std::size_t k = 0; k < n; ++k)
-      z[k] = rows[k] == 0 || step_heights.empty() ? interpolate(sample_times, point.z, t[k])
-                                                  : step_heights[(rows[k] - 1) * n_points + j];
+      z[k] = rows[k] == 0 || step_heights.empty()
+                 ? interpolate(sample_times, point.z, t[k])
+                 : step_heights[(rows[k] - 1) * n_columns + column[j]];
     point.z = std::move(z);
   }
   run.n_samples = n;

@@ -561,8 +561,10 @@ void TransientWriter::flush() {
       if (s.n_registration > 0) {
         std::vector<double> heights;
         for (const StepRecord& r : s.pending_steps) {
-          CATENA_ASSERT(r.registration_height.size() == s.n_registration,
-                        "one height per registration node");
+          if (r.registration_height.size() != s.n_registration)
+            throw Error("TransientWriter: a step record with " +
+                        std::to_string(r.registration_height.size()) +
+                        " registration heights, the model has " + std::to_string(s.n_registration));
           heights.insert(heights.end(), r.registration_height.begin(), r.registration_height.end());
         }
         const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_registration) : 0};

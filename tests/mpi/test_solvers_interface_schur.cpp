@@ -11,6 +11,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/petsc_handle.hpp"
+#include "catena/core/mpi_comm.hpp"
 #include "catena/solvers/newton/interface_schur.hpp"
 #include "petsc_test_session.hpp"
 
@@ -98,4 +99,67 @@ TEST(InterfaceSchur, SolvesExactlyWithAnInterfaceOfTheHubAndTheCuts) {
   CATENA_PETSC(VecAXPY(x.get(), -1.0, x_true.get()));
   CATENA_PETSC(VecNorm(x.get(), NORM_INFINITY, &error));
   EXPECT_LT(error, 1e-12 * scale);
+}
+
+// A failed factorisation is the PC's failure (the KSP reports it, the solution is not
+// finite), and it does not stick: the next matrix factors and solves again.
+TEST(InterfaceSchur, AFailedFactorisationIsReportedAndDoesNotStick) {
+  catena::test::ensure_petsc();
+  int size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (size == 1) GTEST_SKIP() << "one rank has no interface";
+  catena::MatHandle A = chain_with_hub();
+  catena::VecHandle b, x;
+  CATENA_PETSC(MatCreateVecs(A.get(), x.out(), b.out()));
+  CATENA_PETSC(VecSet(b.get(), 1.0));
+  catena::KspHandle ksp;
+  CATENA_PETSC(KSPCreate(PETSC_COMM_WORLD, ksp.out()));
+  CATENA_PETSC(KSPSetType(ksp.get(), KSPPREONLY));
+  CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
+  catena::solvers::use_interface_schur(ksp.get(), A.get());
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  // Rank 0's first row (interior) set to zero in place, its pattern kept: a zero pivot.
+  PetscInt n_row = 0;
+  std::vector<PetscInt> columns;
+  std::vector<PetscScalar> saved;
+  if (catena::mpi_rank(PETSC_COMM_WORLD) == 0) {
+    const PetscInt* c = nullptr;
+    const PetscScalar* v = nullptr;
+    CATENA_PETSC(MatGetRow(A.get(), 0, &n_row, &c, &v));
+    columns.assign(c, c + n_row);
+    saved.assign(v, v + n_row);
+    CATENA_PETSC(MatRestoreRow(A.get(), 0, &n_row, &c, &v));  // which sets n_row to 0
+    n_row = static_cast<PetscInt>(columns.size());
+    const std::vector<PetscScalar> zeros(columns.size(), 0.0);
+    const PetscInt row = 0;
+    CATENA_PETSC(
+        MatSetValues(A.get(), 1, &row, n_row, columns.data(), zeros.data(), INSERT_VALUES));
+  }
+  CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
+  CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
+  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
+  EXPECT_EQ(reason, KSP_DIVERGED_PC_FAILED);
+  PetscReal norm = 0.0;
+  CATENA_PETSC(VecNorm(x.get(), NORM_INFINITY, &norm));
+  EXPECT_FALSE(std::isfinite(norm));
+
+  if (catena::mpi_rank(PETSC_COMM_WORLD) == 0) {
+    const PetscInt row = 0;
+    CATENA_PETSC(
+        MatSetValues(A.get(), 1, &row, n_row, columns.data(), saved.data(), INSERT_VALUES));
+  }
+  CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
+  CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
+  CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
+  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
+  EXPECT_GT(reason, 0);
+  catena::VecHandle r;
+  CATENA_PETSC(VecDuplicate(b.get(), r.out()));
+  CATENA_PETSC(MatMult(A.get(), x.get(), r.get()));
+  CATENA_PETSC(VecAXPY(r.get(), -1.0, b.get()));
+  CATENA_PETSC(VecNorm(r.get(), NORM_INFINITY, &norm));
+  EXPECT_LT(norm, 1e-10);
 }

@@ -100,6 +100,10 @@ bool ModalIntegrator::current_entries(const std::vector<PetscInt>& rows,
   out.resize(rows.size());
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const PetscInt r = rows[k];
+    if (r < 0) {  // a fixed DOF: no row (the caller has its value)
+      out[k] = 0.0;
+      continue;
+    }
     out[k] = base[r] + model_.shapes.row(r).dot(current_.eta);
     for (std::size_t p = 0; p < owned_pantograph_.size(); ++p)
       if (owned_pantograph_[p] == r) out[k] += current_.u(static_cast<Eigen::Index>(p));

@@ -24,24 +24,6 @@ void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry
   enable_mumps_null_pivot_detection(prefix);  // in case the options choose MUMPS
 }
 
-// Whether a Newton matrix on more than one rank is solved by its partition interface
-// (interface_schur.hpp): where it needs no pivoting (MUMPS, which pivots, is 10–15 times
-// slower there: docs/performance.md, "Two ranks") and the options choose no other
-// preconditioner or package (-<prefix>pc_type lu restores MUMPS).
-bool use_interface_split(SNES snes, const std::string& prefix, Pivoting pivoting) {
-  MPI_Comm comm = MPI_COMM_NULL;
-  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(snes), &comm));
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  if (size == 1 || pivoting == Pivoting::needed) return false;
-  for (const char* option : {"pc_type", "pc_factor_mat_solver_type"}) {
-    PetscBool set = PETSC_FALSE;
-    CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, ("-" + prefix + option).c_str(), &set));
-    if (set) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry,
@@ -60,12 +42,26 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
   CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
   CATENA_PETSC(KSPGetPC(ksp, &pc));
   set_direct_factorisation(pc, prefix, symmetry, pivoting);
-  if (use_interface_split(snes, prefix, pivoting)) {
+  MPI_Comm comm = MPI_COMM_NULL;
+  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(snes), &comm));
+  if (use_interface_split(comm, prefix, pivoting)) {
     Mat J = nullptr;
     CATENA_PETSC(SNESGetJacobian(snes, &J, nullptr, nullptr, nullptr));
     use_interface_schur(ksp, J);
   }
   CATENA_PETSC(SNESSetFromOptions(snes));
+}
+
+bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size == 1 || pivoting == Pivoting::needed) return false;
+  for (const char* option : {"pc_type", "pc_factor_mat_solver_type"}) {
+    PetscBool set = PETSC_FALSE;
+    CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, ("-" + prefix + option).c_str(), &set));
+    if (set) return false;
+  }
+  return true;
 }
 
 void set_default_option(const std::string& prefix, const std::string& option, const char* value) {

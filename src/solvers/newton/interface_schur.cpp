@@ -39,6 +39,7 @@ RowSplit split_rows(Mat J) {
   const PetscInt *ia = nullptr, *ja = nullptr;
   PetscBool done = PETSC_FALSE;
   CATENA_PETSC(MatGetRowIJ(off, 0, PETSC_FALSE, PETSC_FALSE, &n_rows, &ia, &ja, &done));
+  if (!done) throw Error("interface Schur solve: the off-process block gives no row structure");
   VecHandle hubs;
   CATENA_PETSC(MatCreateVecs(J, hubs.out(), nullptr));
   {
@@ -116,8 +117,17 @@ class InterfaceSchur {
 
   long interface_size() const { return static_cast<long>(interface_.size()); }
 
-  // Collective. Factors A (same pattern at every call); false if a pivot vanished.
+  // Collective. Factors A (the pattern of the first call at every call); false if a pivot
+  // vanished (then apply() returns NaN until a later setup succeeds).
   bool setup(Mat A) {
+    ready_ = false;
+    PetscObjectState pattern = 0;
+    CATENA_PETSC(MatGetNonzeroState(A, &pattern));
+    if (blocks_ && pattern != pattern_)
+      throw Error(
+          "interface Schur solve: the matrix's nonzero pattern changed after its split "
+          "(the split, the symbolic factorisation and W's columns rest on it)");
+    pattern_ = pattern;
     // The four blocks, one call: A_II, A_IΓ (this rank's rows), A_ΓI, A_ΓΓ (every interface
     // row, fetched from its owner).
     IS rows[4] = {interior_.get(), interior_.get(), interface_is_.get(), interface_is_.get()};
@@ -127,28 +137,46 @@ class InterfaceSchur {
     const Mat Aii = blocks_[0], Aig = blocks_[1], Agi = blocks_[2], Agg = blocks_[3];
     const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
     const auto n_g = static_cast<Eigen::Index>(interface_.size());
-    bool ok = true;
+    // The interior factorisation is this rank's alone; its outcome is agreed before the
+    // collective work below, so that an error on one rank is an error on every rank, not a
+    // hang: 2 factored, 1 a vanishing pivot, 0 an error.
+    int outcome = 2;
+    std::string error_text;
     if (n_i > 0) {
-      MatFactorInfo info;
-      CATENA_PETSC(MatFactorInfoInitialize(&info));
-      if (!factor_) {
-        CATENA_PETSC(MatGetFactor(Aii, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
-        CATENA_PETSC(MatGetOrdering(Aii, MATORDERINGND, row_order_.out(), column_order_.out()));
-        CATENA_PETSC(
-            MatLUFactorSymbolic(factor_.get(), Aii, row_order_.get(), column_order_.get(), &info));
-        touched_ = touched_columns(Aig);
-        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), b_interior_.out()));
-        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), y_interior_.out()));
-        CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_g), t_interface_.out()));
+      try {
+        // PCLU's defaults (MatFactorInfoInitialize zeroes them): a pivot below 100 ε is zero.
+        MatFactorInfo info;
+        CATENA_PETSC(MatFactorInfoInitialize(&info));
+        info.fill = 5.0;
+        info.zeropivot = 100.0 * PETSC_MACHINE_EPSILON;
+        info.pivotinblocks = 1.0;
+        if (!factor_) {
+          CATENA_PETSC(MatGetFactor(Aii, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
+          CATENA_PETSC(MatGetOrdering(Aii, MATORDERINGND, row_order_.out(), column_order_.out()));
+          CATENA_PETSC(MatLUFactorSymbolic(factor_.get(), Aii, row_order_.get(),
+                                           column_order_.get(), &info));
+          touched_ = touched_columns(Aig);
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), b_interior_.out()));
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), y_interior_.out()));
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_g), t_interface_.out()));
+        }
+        CATENA_PETSC(MatFactorClearError(factor_.get()));  // a failure is not sticky
+        CATENA_PETSC(MatLUFactorNumeric(factor_.get(), Aii, &info));
+        MatFactorError error = MAT_FACTOR_NOERROR;
+        CATENA_PETSC(MatFactorGetError(factor_.get(), &error));
+        const bool ok_pivots = error == MAT_FACTOR_NOERROR;
+        outcome = ok_pivots ? 2 : 1;
+      } catch (const std::exception& e) {
+        outcome = 0;
+        error_text = e.what();
       }
-      CATENA_PETSC(MatLUFactorNumeric(factor_.get(), Aii, &info));
-      MatFactorError error = MAT_FACTOR_NOERROR;
-      CATENA_PETSC(MatFactorGetError(factor_.get(), &error));
-      ok = error == MAT_FACTOR_NOERROR;
     }
-    int all_ok = ok ? 1 : 0;
-    MPI_Allreduce(MPI_IN_PLACE, &all_ok, 1, MPI_INT, MPI_MIN, comm_);
-    if (!all_ok) return false;
+    MPI_Allreduce(MPI_IN_PLACE, &outcome, 1, MPI_INT, MPI_MIN, comm_);
+    if (outcome == 0)
+      throw Error(error_text.empty() ? "interface Schur solve: another rank's interior "
+                                       "factorisation failed"
+                                     : error_text);
+    if (outcome == 1) return false;
     // W = A_II⁻¹ A_IΓ on the touched columns, and this rank's part of S.
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n_g, n_g);
     const auto n_t = static_cast<Eigen::Index>(touched_.size());
@@ -168,8 +196,11 @@ class InterfaceSchur {
           const PetscInt* c = nullptr;
           const PetscScalar* v = nullptr;
           CATENA_PETSC(MatGetRow(Aig, i, &n, &c, &v));
-          for (PetscInt k = 0; k < n; ++k)
-            b[column_of[static_cast<std::size_t>(c[k])] * n_i + i] = v[k];
+          for (PetscInt k = 0; k < n; ++k) {
+            const Eigen::Index column = column_of[static_cast<std::size_t>(c[k])];
+            CATENA_ASSERT(column >= 0, "interface Schur solve: a column outside the pattern");
+            b[column * n_i + i] = v[k];
+          }
           CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, &v));
         }
         CATENA_PETSC(MatDenseRestoreArrayWrite(B.get(), &b));
@@ -200,19 +231,33 @@ class InterfaceSchur {
         for (PetscInt k = 0; k < n; ++k) S(r, c[k]) += v[k];
         CATENA_PETSC(MatRestoreRow(Agg, r, &n, &c, &v));
       }
-    MPI_Allreduce(MPI_IN_PLACE, S.data(), static_cast<int>(S.size()), MPI_DOUBLE, MPI_SUM, comm_);
+    // Summed on rank 0 and broadcast, so that every rank factors the same bits and takes the
+    // same decision below.
+    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : S.data(), S.data(), static_cast<int>(S.size()),
+               MPI_DOUBLE, MPI_SUM, 0, comm_);
+    MPI_Bcast(S.data(), static_cast<int>(S.size()), MPI_DOUBLE, 0, comm_);
     if (n_g > 0) {
       schur_.compute(S);
-      // Partial pivoting reports no singularity by itself: a vanishing reciprocal condition
-      // number (the same on every rank: S is) fails the factorisation.
-      const double rcond = schur_.rcond();
-      if (!(rcond > 1e3 * std::numeric_limits<double>::epsilon())) return false;
+      // Partial pivoting reports no singularity by itself: a zero or non-finite pivot of U
+      // fails the factorisation (as a zero pivot fails PETSc's LU).
+      const Eigen::VectorXd pivots = schur_.matrixLU().diagonal();
+      const double largest = pivots.cwiseAbs().maxCoeff();
+      for (Eigen::Index k = 0; k < n_g; ++k)
+        if (!std::isfinite(pivots(k)) ||
+            std::abs(pivots(k)) <= 100.0 * PETSC_MACHINE_EPSILON * largest)
+          return false;
     }
+    ready_ = true;
     return true;
   }
 
-  // Collective. x = A⁻¹ b.
+  // Collective. x = A⁻¹ b; NaN after a failed setup (every rank alike: the failure is
+  // agreed), which the KSP reports as the PC's failure.
   void apply(Vec b, Vec x) const {
+    if (!ready_) {
+      CATENA_PETSC(VecSet(x, std::numeric_limits<double>::quiet_NaN()));
+      return;
+    }
     const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
     const auto n_g = static_cast<Eigen::Index>(interface_.size());
     const PetscScalar* bb = nullptr;
@@ -283,6 +328,8 @@ class InterfaceSchur {
   std::vector<Eigen::Index> touched_;
   Eigen::MatrixXd W_;
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+  PetscObjectState pattern_ = 0;  // A's nonzero state at the first setup
+  bool ready_ = false;            // the last setup succeeded
   VecHandle b_interior_, y_interior_, t_interface_;
 };
 
@@ -307,6 +354,8 @@ PetscErrorCode guarded(PC pc, Fn&& fn) noexcept {
 
 PetscErrorCode setup_shell(PC pc) {
   return guarded(pc, [&] {
+    // A shell's failure stays set until cleared (PETSc 3.18 clears only its factor PCs').
+    CATENA_PETSC(PCSetFailedReason(pc, PC_NOERROR));
     Mat A = nullptr, P = nullptr;
     CATENA_PETSC(PCGetOperators(pc, &A, &P));
     if (!context(pc).setup(P)) CATENA_PETSC(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));

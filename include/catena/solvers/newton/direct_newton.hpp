@@ -39,6 +39,13 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
                             Pivoting pivoting = Pivoting::needed);
 
+// Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
+// partition interface (interface_schur.hpp) rather than factored whole: on more than one
+// rank (MUMPS, which pivots, is 10–15 times slower on lines), unless the options choose
+// another preconditioner or package (-<prefix>pc_type or -<prefix>pc_factor_mat_solver_type,
+// e.g. `-hht_pc_type lu`: MUMPS).
+bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting);
+
 // Not collective. Sets -<prefix><option> to `value` in the options database unless it is
 // there already: Catena's solver defaults, which the command line overrides.
 void set_default_option(const std::string& prefix, const std::string& option, const char* value);

@@ -18,11 +18,14 @@
 namespace catena::solvers {
 
 // Collective on J. Makes `ksp`'s preconditioner (a PCSHELL) the interface solve of J's
-// pattern (J assembled with its full pattern; MPIAIJ on more than one rank). It factors at
-// every PCSetUp, i.e. whenever the operator's values changed; a vanishing pivot of an
-// interior block, or a singular S, is the PC's failure (PC_FACTOR_NUMERIC_ZEROPIVOT, and
-// the KSP reports KSP_DIVERGED_PC_FAILED). Returns the number of interface rows (all
-// ranks).
+// pattern (J square, assembled with its full pattern; MPIAIJ on more than one rank; call
+// once per KSP). It factors at every PCSetUp, i.e. whenever the operator's values changed
+// (a changed nonzero pattern is an error). A pivot under PCLU's zero-pivot threshold
+// (100 ε) in an interior block, or a zero or non-finite pivot of S, is the PC's failure
+// (PC_FACTOR_NUMERIC_ZEROPIVOT: the KSP reports KSP_DIVERGED_PC_FAILED and the solution is
+// NaN), which the next successful factorisation clears. An error on one rank (a PETSc
+// error in its interior factorisation) is thrown on every rank. Block solves (KSPMatSolve)
+// go column by column. Returns the number of interface rows (all ranks).
 long use_interface_schur(KSP ksp, Mat J);
 
 }  // namespace catena::solvers

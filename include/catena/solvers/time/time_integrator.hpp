@@ -116,8 +116,9 @@ class TimeIntegrator {
   }
 
   // Not collective. After accept(): the current q's entries at `rows` (local rows of its
-  // owned part) into `out`, when the integrator has them cheaper than q() (the modal model
-  // rebuilds q from every mode); false: the caller reads q().
+  // owned part; a row −1, a fixed DOF, gives 0) into `out`, when the integrator has them
+  // cheaper than q() (the modal model rebuilds q from every mode); false: the caller reads
+  // q().
   virtual bool current_entries(const std::vector<PetscInt>& rows, std::vector<double>& out) const {
     (void)rows;
     (void)out;
