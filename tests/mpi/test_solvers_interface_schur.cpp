@@ -119,42 +119,38 @@ TEST(InterfaceSchur, AFailedFactorisationIsReportedAndDoesNotStick) {
   catena::solvers::use_interface_schur(ksp.get(), A.get());
   KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
   // Rank 0's first row (interior) set to zero in place, its pattern kept: a zero pivot.
-  PetscInt n_row = 0;
+  const bool owner = catena::mpi_rank(PETSC_COMM_WORLD) == 0;
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> saved;
-  if (catena::mpi_rank(PETSC_COMM_WORLD) == 0) {
+  if (owner) {
+    PetscInt n = 0;
     const PetscInt* c = nullptr;
     const PetscScalar* v = nullptr;
-    CATENA_PETSC(MatGetRow(A.get(), 0, &n_row, &c, &v));
-    columns.assign(c, c + n_row);
-    saved.assign(v, v + n_row);
-    CATENA_PETSC(MatRestoreRow(A.get(), 0, &n_row, &c, &v));  // which sets n_row to 0
-    n_row = static_cast<PetscInt>(columns.size());
-    const std::vector<PetscScalar> zeros(columns.size(), 0.0);
-    const PetscInt row = 0;
-    CATENA_PETSC(
-        MatSetValues(A.get(), 1, &row, n_row, columns.data(), zeros.data(), INSERT_VALUES));
+    CATENA_PETSC(MatGetRow(A.get(), 0, &n, &c, &v));
+    columns.assign(c, c + n);
+    saved.assign(v, v + n);
+    CATENA_PETSC(MatRestoreRow(A.get(), 0, &n, &c, &v));
   }
-  CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
-  CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
-  CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
-  CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
-  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
+  // Collective: rank 0's first row set to `values`, then a solve with the new values.
+  const auto solve_with_row = [&](const std::vector<PetscScalar>& values) {
+    if (owner) {
+      const PetscInt row = 0;
+      CATENA_PETSC(MatSetValues(A.get(), 1, &row, static_cast<PetscInt>(columns.size()),
+                                columns.data(), values.data(), INSERT_VALUES));
+    }
+    CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
+    CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
+    CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
+    CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
+    CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
+  };
+  solve_with_row(std::vector<PetscScalar>(columns.size(), 0.0));
   EXPECT_EQ(reason, KSP_DIVERGED_PC_FAILED);
   PetscReal norm = 0.0;
   CATENA_PETSC(VecNorm(x.get(), NORM_INFINITY, &norm));
   EXPECT_FALSE(std::isfinite(norm));
 
-  if (catena::mpi_rank(PETSC_COMM_WORLD) == 0) {
-    const PetscInt row = 0;
-    CATENA_PETSC(
-        MatSetValues(A.get(), 1, &row, n_row, columns.data(), saved.data(), INSERT_VALUES));
-  }
-  CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
-  CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
-  CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
-  CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
-  CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
+  solve_with_row(saved);
   EXPECT_GT(reason, 0);
   catena::VecHandle r;
   CATENA_PETSC(VecDuplicate(b.get(), r.out()));
