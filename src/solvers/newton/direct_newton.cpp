@@ -64,13 +64,6 @@ bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivo
   return true;
 }
 
-void set_default_option(const std::string& prefix, const std::string& option, const char* value) {
-  const std::string name = "-" + prefix + option;
-  PetscBool set = PETSC_FALSE;
-  CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
-  if (!set) CATENA_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), value));
-}
-
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
                             Pivoting pivoting) {
   KspHandle ksp;

@@ -99,11 +99,10 @@ class InterfaceSchur {
     interface_.resize(static_cast<std::size_t>(offsets.back() + counts.back()));
     MPI_Allgatherv(split.interface.data(), n_mine, MPIU_INT, interface_.data(), counts.data(),
                    offsets.data(), MPIU_INT, comm);
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_rank(comm, &rank_);
     for (int k = 0; k < n_mine; ++k) {
       owned_local_.push_back(split.interface[static_cast<std::size_t>(k)] - first);
-      owned_position_.push_back(offsets[static_cast<std::size_t>(rank)] + k);
+      owned_position_.push_back(offsets[static_cast<std::size_t>(rank_)] + k);
     }
     CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(split.interior.size()),
                                  split.interior.data(), PETSC_COPY_VALUES, interior_.out()));
@@ -220,9 +219,7 @@ class InterfaceSchur {
       }
     }
     // A_ΓΓ once (rank 0's copy), then the sum over ranks.
-    int rank = 0;
-    MPI_Comm_rank(comm_, &rank);
-    if (rank == 0)
+    if (rank_ == 0)
       for (PetscInt r = 0; r < n_g; ++r) {
         PetscInt n = 0;
         const PetscInt* c = nullptr;
@@ -233,7 +230,7 @@ class InterfaceSchur {
       }
     // Summed on rank 0 and broadcast, so that every rank factors the same bits and takes the
     // same decision below.
-    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : S.data(), S.data(), static_cast<int>(S.size()),
+    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : S.data(), S.data(), static_cast<int>(S.size()),
                MPI_DOUBLE, MPI_SUM, 0, comm_);
     MPI_Bcast(S.data(), static_cast<int>(S.size()), MPI_DOUBLE, 0, comm_);
     if (n_g > 0) {
@@ -317,6 +314,7 @@ class InterfaceSchur {
   }
 
   MPI_Comm comm_;
+  int rank_ = 0;
   std::vector<PetscInt> interior_local_;      // this rank's interior rows, local numbers
   std::vector<PetscInt> interface_;           // every rank's interface rows, global, ascending
   std::vector<PetscInt> owned_local_;         // this rank's interface rows, local numbers

@@ -5,7 +5,6 @@
 #include <cstring>
 
 #include "catena/assembly/petsc_call.hpp"
-#include "catena/solvers/newton/direct_newton.hpp"
 
 namespace catena::solvers {
 
@@ -51,6 +50,16 @@ DirectSolveStatus direct_solve_status(KSP ksp) {
   status.mumps = mumps_status(ksp);
   return status;
 }
+
+namespace {
+// Sets -<prefix><option> to `value` unless the user gave it.
+void set_default_option(const std::string& prefix, const char* option, const char* value) {
+  const std::string name = "-" + prefix + option;
+  PetscBool set = PETSC_FALSE;
+  CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
+  if (!set) CATENA_PETSC(PetscOptionsSetValue(nullptr, name.c_str(), value));
+}
+}  // namespace
 
 void enable_mumps_null_pivot_detection(const std::string& prefix) {
   set_default_option(prefix, "mat_mumps_icntl_24", "1");

@@ -41,14 +41,11 @@ KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSy
 
 // Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
 // partition interface (interface_schur.hpp) rather than factored whole: on more than one
-// rank (MUMPS, which pivots, is 10–15 times slower on lines), unless the options choose
-// another preconditioner or package (-<prefix>pc_type or -<prefix>pc_factor_mat_solver_type,
-// e.g. `-hht_pc_type lu`: MUMPS).
+// rank (MUMPS, which pivots, took 15 times as long per solve on EN 50318 at np 2: 4.4 ms
+// against 0.29 ms; docs/performance.md), unless the options choose another preconditioner
+// or package (-<prefix>pc_type or -<prefix>pc_factor_mat_solver_type, e.g. `-hht_pc_type
+// lu`: MUMPS).
 bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting);
-
-// Not collective. Sets -<prefix><option> to `value` in the options database unless it is
-// there already: Catena's solver defaults, which the command line overrides.
-void set_default_option(const std::string& prefix, const std::string& option, const char* value);
 
 // Relative Newton update at which an iterate is converged to round-off (SNES stol).
 inline constexpr double kNewtonStepTolerance = 1e-12;
