@@ -8,10 +8,10 @@
 namespace catena::app {
 
 namespace {
-// run, check, stats or elasticity.
+// run, check, stats, elasticity, modes or study.
 bool is_command(const std::string& name) {
   return name == "run" || name == "check" || name == "stats" || name == "elasticity" ||
-         name == "modes";
+         name == "modes" || name == "study";
 }
 
 bool is_scene_path(const std::string& token) {
@@ -98,6 +98,42 @@ bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
   return true;
 }
 
+// The options of `catena study` at args[i]; returns false if args[i] is none of them.
+bool parse_study_option(const std::vector<std::string>& args, size_t& i, CommandLine& cl) {
+  StudyArguments& st = cl.study;
+  const std::string& a = args[i];
+  auto value = [&](const char* flag) -> const std::string& {
+    if (i + 1 >= args.size())
+      throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
+    return args[++i];
+  };
+  if (a == "--vary") {
+    st.vary.push_back(value("--vary"));
+  } else if (a == "--reference") {
+    st.reference.push_back(value("--reference"));
+  } else if (a == "--target") {
+    st.targets.push_back(value("--target"));
+  } else if (a == "--ranks-per-case") {
+    st.ranks_per_case = parse_integer(value("--ranks-per-case"), "--ranks-per-case",
+                                      "a whole number >= 1 that divides the number of ranks");
+  } else if (a == "--probe") {
+    st.probes.push_back(parse_integer(value("--probe"), "--probe", "a node id of the scene"));
+  } else if (a == "--cutoff") {
+    st.cutoff_hz = parse_positive(value("--cutoff"), "--cutoff", "Hz", "a frequency in Hz, > 0");
+  } else if (a == "-o" || a == "--output") {
+    st.directory = value("-o");
+  } else if (a == "--restart" || a == "--realtime" || a == "--ids") {
+    throw InputError({"", 0, a}, "'" + a +
+                                     "' is not an option of study (a study resumes by itself: "
+                                     "run the same command again); accepted: --vary, "
+                                     "--reference, --target, --ranks-per-case, --probe, "
+                                     "--cutoff, --set, -o DIR");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series S]`; args[i]
 // follows "stats".
 void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
@@ -174,7 +210,8 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.help_topic = args[1];
       if (!is_command(cl.help_topic))
         throw InputError({"", 0, "help"}, "no command '" + args[1] +
-                                              "'; accepted: run, check, stats, elasticity, modes");
+                                              "'; accepted: run, check, stats, elasticity, "
+                                              "modes, study");
     }
     return cl;
   }
@@ -190,7 +227,7 @@ CommandLine parse_command_line(int argc, char** argv) {
   if (!is_command(cl.command))
     throw InputError({"", 0, "command"},
                      "unknown command '" + cl.command +
-                         "'; accepted: run, check, stats, elasticity, modes, --help");
+                         "'; accepted: run, check, stats, elasticity, modes, study, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {
@@ -203,6 +240,8 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.command = "help";
       return cl;
     } else if (cl.command == "elasticity" && parse_elasticity_option(args, i, cl.elasticity)) {
+      continue;
+    } else if (cl.command == "study" && parse_study_option(args, i, cl)) {
       continue;
     } else if (cl.command == "modes" && a == "--count") {
       cl.modes.count = parse_integer(value("--count"), "--count", "a number of modes, >= 1");
@@ -269,6 +308,10 @@ CommandLine parse_command_line(int argc, char** argv) {
   if (cl.scene.empty())
     throw InputError({"", 0, "SCENE"},
                      "no scene file given; usage: catena " + cl.command + " SCENE.yaml");
+  if (cl.command == "study" && cl.study.vary.empty())
+    throw InputError({"", 0, "--vary"},
+                     "a study needs at least one --vary KEY=V1,V2,... (e.g. --vary "
+                     "integrator.dt=1e-3,5e-4,2.5e-4); docs/study.md");
   if (cl.output) cl.overrides.push_back("output.file=" + *cl.output);
   return cl;
 }

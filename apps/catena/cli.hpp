@@ -30,10 +30,22 @@ struct ModesArguments {
   int count = 20;  // --count N: the lowest N modes
 };
 
+// `catena study SCENE [--vary K=V1,V2 ...] [--reference K=V ...] [--target M=X ...]
+// [--ranks-per-case K] [--probe ID ...] [--cutoff HZ] [-o DIR]` (docs/study.md).
+struct StudyArguments {
+  std::vector<std::string> vary;       // --vary KEY=V1,V2,..., in order
+  std::vector<std::string> reference;  // --reference KEY=VALUE (none: the default reference)
+  std::vector<std::string> targets;    // --target MEASURE=LIMIT, e.g. std=1%
+  int ranks_per_case = 1;              // --ranks-per-case K
+  std::vector<long long> probes;       // --probe NODE_ID (scene ids)
+  double cutoff_hz = 20.0;             // --cutoff HZ: the statistics' low-pass
+  std::string directory;               // -o DIR (default: SCENE's stem + "_study")
+};
+
 struct CommandLine {
-  std::string command;                 // run | check | stats | elasticity | modes | help | version
-  std::string help_topic;              // help: the command asked about ("" = all)
-  std::string scene;                   // scene file path
+  std::string command;     // run | check | stats | elasticity | modes | study | help | version
+  std::string help_topic;  // help: the command asked about ("" = all)
+  std::string scene;       // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
@@ -50,6 +62,7 @@ struct CommandLine {
   StatsArguments stats;                    // command "stats" only
   ElasticityArguments elasticity;          // command "elasticity" only
   ModesArguments modes;                    // command "modes" only
+  StudyArguments study;                    // command "study" only
 };
 
 // Throws catena::InputError for malformed arguments.

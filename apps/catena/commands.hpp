@@ -19,6 +19,9 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl);
 // Collective; rank 0 prints. `catena modes`: the lowest vibration modes about the static
 // equilibrium, written to an HDF5/XDMF pair (command_modes.cpp).
 void command_modes(MPI_Comm comm, const CommandLine& cl);
+// Collective; the groups of --ranks-per-case ranks run cases, rank 0 reports. `catena
+// study`: a scene under several settings against a reference (command_study.cpp).
+void command_study(MPI_Comm comm, const CommandLine& cl);
 // Collective. The dynamic analysis of command_run.
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
 

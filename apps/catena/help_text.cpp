@@ -108,6 +108,34 @@ const CommandHelp* commands() {
   --json                print JSON instead of a table
 )",
        true},
+      {"study",
+       R"(  catena study SCENE.yaml --vary KEY=V1,V2,... [--vary ...] [--reference KEY=VALUE ...]
+               [--target MEASURE=LIMIT ...] [--ranks-per-case K] [--probe NODE_ID ...]
+               [--cutoff HZ] [--set KEY=VALUE ...] [-o DIR] [PETSc options]
+)",
+       R"(  study   run a dynamic scene under several settings, measure each against a reference
+          (errors of the contact force and its EN 50318 statistics, or of probe nodes)
+          and its cost; DIR/study.csv, DIR/study.png, the cheapest setting within
+          --target (docs/study.md)
+)",
+       std::string(R"(Options of study:
+  --vary KEY=V1,V2,...  a scene key and its values (repeatable: every combination runs);
+                        e.g. --vary integrator.dt=1e-3,5e-4 --vary integrator.type=hht,radau
+  --reference KEY=VALUE the reference's settings (repeatable); default: the scene's method
+                        at the study's tightest resolution with the time step halved,
+                        checked against the same unhalved
+  --target M=LIMIT      the accuracy to recommend a setting for (repeatable), e.g. std=1%,
+                        force_rms_filtered=2N, probe_rms=1e-4m (default with pantographs:
+                        std=1%)
+  --ranks-per-case K    ranks each case runs on (default 1): mpirun -n N runs N/K cases
+                        at once from one queue
+  --probe NODE_ID       a node whose trajectory is compared (repeatable; default without
+                        pantographs: the node that moves most in the reference)
+  --cutoff HZ           low-pass of the contact-force statistics (default 20)
+  -o DIR                the study's directory (default: the scene's name + _study); run
+                        the same command again to resume: finished cases are kept
+)") + kSetOption,
+       true},
       {nullptr, nullptr, nullptr, "", false},
   };
   return all;
@@ -141,6 +169,7 @@ constexpr const char* kExamples = R"(Examples:
   mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
   catena stats en50318_250.h5 --section 240 360
   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5 --json
+  mpirun -n 2 catena study meshes/taut_string.yaml --vary integrator.dt=4e-4,2e-4,1e-4
 )";
 
 }  // namespace

@@ -5,6 +5,7 @@
 //   mpirun -n 3 catena run meshes/default.yaml --set lines[0].elements=600 -log_view
 //   catena stats run.h5 --section 240 360 --json
 //   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5
+//   mpirun -n 2 catena study meshes/taut_string.yaml --vary integrator.dt=4e-4,2e-4,1e-4
 //
 // Exit codes: 0 success, 2 bad input (scene, command line, unwritable output path, a run
 // estimated too large for the memory, another run writing the same output), 3 numerical
@@ -46,6 +47,8 @@ int main(int argc, char** argv) {
         catena::app::command_elasticity(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "modes") {
         catena::app::command_modes(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "study") {
+        catena::app::command_study(PETSC_COMM_WORLD, cl);
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }

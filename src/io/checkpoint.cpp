@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "catena/io/output_error.hpp"
 #include "catena/model/scene_identity.hpp"
 #include "catena/model/unknown_kinds.hpp"

@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include "atomic_file.hpp"
+#include "catena/io/atomic_file.hpp"
 
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"

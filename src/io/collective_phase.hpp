@@ -23,7 +23,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "atomic_file.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "catena/io/output_error.hpp"
 
 namespace catena::io {

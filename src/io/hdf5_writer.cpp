@@ -23,10 +23,10 @@
 #include <variant>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/version.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "catena/io/output_error.hpp"
 #include "catena/model/element_kinds.hpp"
 #include "catenary_output.hpp"

@@ -8,9 +8,9 @@
 #include <optional>
 #include <sstream>
 
-#include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "catena/io/output_error.hpp"
 #include "collective_phase.hpp"
 #include "hdf5_attributes.hpp"

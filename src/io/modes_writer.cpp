@@ -6,8 +6,8 @@
 #include <optional>
 #include <sstream>
 
-#include "atomic_file.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "catena/io/modes_result.hpp"
 #include "catena/io/output_error.hpp"
 #include "collective_phase.hpp"

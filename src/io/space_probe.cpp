@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "atomic_file.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/io/atomic_file.hpp"
 
 namespace catena::io {
 

@@ -22,8 +22,8 @@
 #include <system_error>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "catena/core/error.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
 #include "transient_layout.hpp"

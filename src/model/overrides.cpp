@@ -76,6 +76,41 @@ std::string describe_node(const YAML::Node& node) {
 
 // Applies one override. yaml-cpp nodes are handles: `Node::reset` re-points a handle,
 // whereas `operator=` would overwrite the node it refers to.
+// "path=~": the key is removed, so that its default applies (a key of the scene that a
+// changed setting no longer takes, e.g. integrator.alpha when `catena study` varies
+// integrator.type). A path that is not there is nothing to remove; a list item is refused
+// (the items after it would change their indices).
+AppliedOverride remove_key(YAML::Node& root, const std::vector<PathStep>& steps,
+                           const std::string& text, const OverrideError& error) {
+  YAML::Node current;
+  current.reset(root);
+  std::string reached;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const PathStep& step = steps[s];
+    if (step.is_index) {
+      if (s + 1 == steps.size())
+        error.fail(reached, "'~' removes a key; a list item cannot be removed");
+      if (!current.IsSequence() || step.index >= current.size())
+        return AppliedOverride{reached, text};
+      reached = join_index(reached, step.index);
+      YAML::Node next = current[step.index];
+      current.reset(next);
+      continue;
+    }
+    if (!current.IsMap()) return AppliedOverride{reached, text};
+    reached = join_key(reached, step.key);
+    if (s + 1 == steps.size()) {
+      current.remove(step.key);
+      break;
+    }
+    const YAML::Node& const_current = current;  // const lookup: does not insert the key
+    const YAML::Node next = const_current[step.key];
+    if (!next.IsDefined()) return AppliedOverride{reached, text};
+    current.reset(next);
+  }
+  return AppliedOverride{reached, text};
+}
+
 AppliedOverride apply_one(YAML::Node& root, const std::string& text,
                           const std::string& file_label) {
   const OverrideError error(file_label, text);
@@ -91,6 +126,8 @@ AppliedOverride apply_one(YAML::Node& root, const std::string& text,
   } catch (const YAML::Exception& e) {
     error.fail(path, "value is not valid YAML (" + e.msg + ")");
   }
+
+  if (text.substr(equals + 1) == "~") return remove_key(root, steps, text, error);
 
   YAML::Node current;
   current.reset(root);

@@ -54,20 +54,10 @@ bool in_section(double x, const EvaluationSection& s, double tolerance) {
 
 }  // namespace
 
-ContactStatistics contact_statistics(const PantographRecord& pantograph,
-                                     std::span<const RegistrationPoint> supports,
-                                     const ContactStatisticsOptions& options) {
-  check_sampling(options.dt, options.cutoff_hz);
+std::vector<std::size_t> section_samples(const PantographRecord& pantograph,
+                                         const ContactStatisticsOptions& options) {
   check_section(options.section);
-  const std::size_t n = pantograph.force.size();
-  if (pantograph.position.size() != n)
-    throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
-                " force samples but " + std::to_string(pantograph.position.size()) + " positions");
-  for (const RegistrationPoint& p : supports)
-    if (p.z.size() != n)
-      throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
-                  " force samples but a registration point has " + std::to_string(p.z.size()));
-
+  const std::size_t n = pantograph.position.size();
   const double tolerance = end_tolerance(options.section, pantograph.speed, options.dt);
   std::vector<std::size_t> rows;  // the section samples
   for (std::size_t k = 0; k < n; ++k)
@@ -85,6 +75,25 @@ ContactStatistics contact_statistics(const PantographRecord& pantograph,
     }
     throw InputError({"", 0, "section"}, os.str());
   }
+  return rows;
+}
+
+ContactStatistics contact_statistics(const PantographRecord& pantograph,
+                                     std::span<const RegistrationPoint> supports,
+                                     const ContactStatisticsOptions& options) {
+  check_sampling(options.dt, options.cutoff_hz);
+  check_section(options.section);
+  const std::size_t n = pantograph.force.size();
+  if (pantograph.position.size() != n)
+    throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
+                " force samples but " + std::to_string(pantograph.position.size()) + " positions");
+  for (const RegistrationPoint& p : supports)
+    if (p.z.size() != n)
+      throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
+                  " force samples but a registration point has " + std::to_string(p.z.size()));
+
+  const std::vector<std::size_t> rows = section_samples(pantograph, options);
+  const double tolerance = end_tolerance(options.section, pantograph.speed, options.dt);
 
   // Filter the whole record, then evaluate inside the section.
   const std::vector<double> filtered =

@@ -290,6 +290,27 @@ TEST(Overrides, ValueFailingValidationNamesTheOverrideAndHasNoFileLine) {
   }
 }
 
+TEST(Overrides, TildeRemovesAKeySoThatItsDefaultApplies) {
+  const std::string dynamic = wire_scene + R"(analysis: {type: dynamic, duration: 1}
+integrator: {type: hht, alpha: -0.2, dt: 0.01}
+)";
+  EXPECT_DOUBLE_EQ(parse_scene(dynamic, "wire.yaml").dynamic_options.integrator.alpha, -0.2);
+  EXPECT_DOUBLE_EQ(
+      parse_scene(dynamic, "wire.yaml", {"integrator.alpha=~"}).dynamic_options.integrator.alpha,
+      IntegratorOptions{}.alpha);
+  // Without the removal a Runge-Kutta type refuses HHT's alpha; with it the scene serves both.
+  EXPECT_THROW(parse_scene(dynamic, "wire.yaml", {"integrator.type=radau"}), InputError);
+  const Model radau =
+      parse_scene(dynamic, "wire.yaml", {"integrator.type=radau", "integrator.alpha=~"});
+  EXPECT_EQ(radau.dynamic_options.integrator.type, "radau_iia");
+  // A key that is not there (or whose map is not) is nothing to remove.
+  EXPECT_NO_THROW(parse_scene(dynamic, "wire.yaml", {"integrator.stages=~", "no.such.key=~"}));
+}
+
+TEST(Overrides, TildeDoesNotRemoveAListItem) {
+  EXPECT_THROW(parse_scene(wire_scene, "wire.yaml", {"lines[0]=~"}), InputError);
+}
+
 // --- reference frames, supports, options ---------------------------------------------------
 
 TEST(NodalFrames, CableTangentsBeamSectionAxesAndPlainNodes) {

@@ -90,4 +90,10 @@ ContactStatistics contact_statistics(const PantographRecord& pantograph,
                                      std::span<const RegistrationPoint> supports,
                                      const ContactStatisticsOptions& options);
 
+// Not collective. The rows of `pantograph`'s samples in options.section (step 2 above),
+// ascending. Throws catena::InputError (key "section") when the section is empty, reversed
+// or holds no sample.
+std::vector<std::size_t> section_samples(const PantographRecord& pantograph,
+                                         const ContactStatisticsOptions& options);
+
 }  // namespace catena::post

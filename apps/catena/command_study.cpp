@@ -1,0 +1,305 @@
+// `catena study SCENE --vary KEY=V1,V2,...`: runs a dynamic scene under every combination of
+// the varied values and a reference, measures each run's errors against the reference
+// and its cost, and writes DIR/study.csv (+ DIR/study.png) with a recommendation
+// (docs/study.md). The cases run as `catena run` would, each on a group of
+// --ranks-per-case ranks, the groups taking cases from one queue; each case's console
+// output goes to DIR/cases/NAME.log, its results to DIR/cases/NAME.h5, and a record of
+// its end to DIR/cases/NAME.result, so that the same command again resumes the study.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "catena/io/output_error.hpp"
+#include "catena/io/run_files.hpp"
+#include "catena/model/scene_identity.hpp"
+#include "catena/study/case_measures.hpp"
+#include "catena/study/case_queue.hpp"
+#include "catena/study/case_record.hpp"
+#include "catena/study/study_plan.hpp"
+#include "catena/study/study_table.hpp"
+#include "commands.hpp"
+#include "scene_loading.hpp"
+#include "study_report.hpp"
+
+namespace catena::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct StudyCase {
+  study::StudyRow row;                 // name, role, method, setting (filled as it runs)
+  std::vector<std::string> overrides;  // the case's own, after the study's --set ones
+};
+
+// While it lives, this process's stdout and stderr go to `path` (appended): the console
+// output of the case the process runs. Each process belongs to one group, so the
+// redirection never mixes two cases.
+class ConsoleToFile {
+ public:
+  explicit ConsoleToFile(const fs::path& path) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd < 0) throw Error("cannot open the case log " + path.string());
+    saved_out_ = ::dup(STDOUT_FILENO);
+    saved_err_ = ::dup(STDERR_FILENO);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+  }
+  ~ConsoleToFile() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::dup2(saved_out_, STDOUT_FILENO);
+    ::dup2(saved_err_, STDERR_FILENO);
+    ::close(saved_out_);
+    ::close(saved_err_);
+  }
+  ConsoleToFile(const ConsoleToFile&) = delete;
+  ConsoleToFile& operator=(const ConsoleToFile&) = delete;
+
+ private:
+  int saved_out_ = -1;
+  int saved_err_ = -1;
+};
+
+std::string default_directory(const std::string& scene) {
+  return fs::path(scene).stem().string() + "_study";
+}
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The overrides for people: the keys a varied integrator type removes ("key=~") are left out.
+std::string list_text(const std::vector<std::string>& overrides) {
+  std::string out;
+  for (const std::string& o : overrides)
+    if (o.size() < 2 || o.compare(o.size() - 2, 2, "=~") != 0) out += (out.empty() ? "" : " ") + o;
+  return out.empty() ? "(the scene as it is)" : out;
+}
+
+// Collective over `world`. The cases: the reference first (the most expensive, so it does
+// not start last), its check, then the settings; every case's scene is loaded once here so
+// that a typo in a value stops the study before anything runs. The check is left out when
+// a setting is the same run.
+std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, double& scene_dt,
+                                  std::string& reference_description) {
+  const StudyArguments& args = cl.study;
+  std::vector<study::Variation> variations;
+  for (const std::string& v : args.vary) variations.push_back(study::parse_variation(v));
+  const std::vector<study::Setting> settings = study::expand(variations);
+  const model::Model base = load_scene(world, cl.scene, cl.overrides);
+  if (base.analysis != model::AnalysisType::dynamic)
+    throw InputError({cl.scene, 0, "analysis.type"},
+                     "a study compares dynamic runs; this scene's analysis is static");
+  scene_dt = base.dynamic_options.integrator.dt;
+  const study::ReferencePlan reference = args.reference.empty()
+                                             ? study::default_reference(variations, scene_dt)
+                                             : study::given_reference(args.reference);
+  reference_description = reference.description;
+
+  std::vector<StudyCase> cases;
+  auto add = [&](const std::string& name, const std::string& role, const std::string& method,
+                 const std::string& setting, const std::vector<std::string>& overrides) {
+    StudyCase c;
+    c.row.name = name;
+    c.row.role = role;
+    c.row.method = method;
+    c.row.setting = setting;
+    c.overrides = overrides;
+    cases.push_back(std::move(c));
+  };
+  add("reference", "reference", "reference", list_text(reference.overrides), reference.overrides);
+  if (!reference.check_overrides.empty())
+    add("reference_check", "reference_check", "reference", list_text(reference.check_overrides),
+        reference.check_overrides);
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "setting_%03zu", i + 1);
+    const std::string method = settings[i].method();
+    add(name, "setting", method.empty() ? base.dynamic_options.integrator.type : method,
+        settings[i].resolution(), settings[i].overrides());
+  }
+  if (mpi_rank(world) == 0) {
+    std::printf("study: checking the scene under %zu settings\n", cases.size());
+    std::fflush(stdout);
+  }
+  std::vector<std::string> identities;
+  for (const StudyCase& c : cases) {
+    const model::Model m = load_scene(world, cl.scene, joined(cl.overrides, c.overrides));
+    if (m.analysis != model::AnalysisType::dynamic)
+      throw InputError({cl.scene, 0, "analysis.type"},
+                       "the setting " + list_text(c.overrides) + " makes the analysis static");
+    identities.push_back(model::scene_identity(m.source_text) + "duration " +
+                         study::number_text(m.dynamic_options.duration));
+  }
+  if (cases.size() > 1 && cases[1].row.role == "reference_check")
+    for (std::size_t i = 2; i < cases.size(); ++i)
+      if (identities[i] == identities[1]) {
+        cases[i].row.role = "setting+reference_check";  // one run, both roles
+        cases.erase(cases.begin() + 1);
+        break;
+      }
+  return cases;
+}
+
+// Collective over the group. Runs one case as `catena run` would; returns its record.
+study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCase& c,
+                           const fs::path& cases_dir) {
+  study::CaseRecord record;
+  record.overrides = c.overrides;
+  CommandLine run = cl;
+  run.command = "run";
+  run.overrides = joined(joined(cl.overrides, c.overrides),
+                         {"output.file=" + (cases_dir / (c.row.name + ".h5")).string()});
+  run.progress_seconds = 30.0;
+  const double start = MPI_Wtime();
+  {
+    const ConsoleToFile console(cases_dir / (c.row.name + ".log"));
+    try {
+      command_run(group, run);
+      record.completed = true;
+    } catch (const InputError& e) {
+      record.exit_code = 2;
+      record.message = e.what();
+    } catch (const NumericalError& e) {
+      record.exit_code = 3;
+      record.message = e.what();
+    } catch (const OutputError& e) {
+      record.exit_code = 4;
+      record.message = e.what();
+    }
+    if (!record.completed && mpi_rank(group) == 0)
+      std::fprintf(stderr, "catena: study case %s stopped: %s\n", c.row.name.c_str(),
+                   record.message.c_str());
+  }
+  record.wall_seconds = MPI_Wtime() - start;
+  // A completed case is not extended: its checkpoint (the size of the state) is not kept.
+  if (record.completed && mpi_rank(group) == 0) {
+    std::error_code ignored;
+    fs::remove(io::checkpoint_path((cases_dir / (c.row.name + ".h5")).string()), ignored);
+  }
+  return record;
+}
+
+// Collective over `world`: the groups take cases from the queue until none is left.
+void run_cases(MPI_Comm world, const CommandLine& cl, const std::vector<StudyCase>& cases,
+               const fs::path& cases_dir) {
+  const study::CaseGroups groups(world, cl.study.ranks_per_case);
+  study::CaseQueue queue(world);
+  if (mpi_rank(world) == 0) {
+    std::printf("study: %zu cases on %d group%s of %d rank%s; logs in %s\n", cases.size(),
+                groups.count(), groups.count() == 1 ? "" : "s", cl.study.ranks_per_case,
+                cl.study.ranks_per_case == 1 ? "" : "s", cases_dir.c_str());
+    std::fflush(stdout);
+  }
+  for (long k = queue.take(groups); k < static_cast<long>(cases.size()); k = queue.take(groups)) {
+    const StudyCase& c = cases[static_cast<std::size_t>(k)];
+    const fs::path record_path = cases_dir / (c.row.name + ".result");
+    const fs::path output = cases_dir / (c.row.name + ".h5");
+    int done = 0;
+    if (groups.leader()) {
+      const auto old = study::read_record(record_path);
+      done = old && old->overrides == c.overrides && (!old->completed || fs::exists(output));
+    }
+    MPI_Bcast(&done, 1, MPI_INT, 0, groups.group());
+    if (done) {
+      if (groups.leader())
+        std::printf("study: case %ld/%zu %s (%s): done before, kept\n", k + 1, cases.size(),
+                    c.row.name.c_str(), list_text(c.overrides).c_str());
+      std::fflush(stdout);
+      continue;
+    }
+    if (groups.leader()) {
+      std::printf("study: case %ld/%zu %s (%s) started on group %d\n", k + 1, cases.size(),
+                  c.row.name.c_str(), list_text(c.overrides).c_str(), groups.index());
+      std::fflush(stdout);
+      std::error_code ignored;
+      fs::remove(record_path, ignored);
+    }
+    const study::CaseRecord record = run_case(groups.group(), cl, c, cases_dir);
+    if (groups.leader()) {
+      study::write_record(record_path, record);
+      std::printf("study: case %ld/%zu %s %s in %.1f s%s%s\n", k + 1, cases.size(),
+                  c.row.name.c_str(), record.completed ? "completed" : "failed",
+                  record.wall_seconds, record.completed ? "" : ": ",
+                  record.completed ? "" : record.message.c_str());
+      std::fflush(stdout);
+    }
+  }
+  MPI_Barrier(world);
+}
+
+// Rank 0 of the study. Reads every case's record and output, measures it against the
+// reference, and reports.
+void report(const CommandLine& cl, std::vector<StudyCase>& cases, const fs::path& directory,
+            const std::string& reference_description) {
+  const fs::path cases_dir = directory / "cases";
+  std::vector<study::StudyRow> rows;
+  for (StudyCase& c : cases) {
+    study::StudyRow& row = c.row;
+    const auto record = study::read_record(cases_dir / (row.name + ".result"));
+    if (!record) throw Error("study: no record of case " + row.name + " in " + cases_dir.string());
+    row.completed = record->completed;
+    row.exit_code = record->exit_code;
+    row.message = record->message;
+    row.case_seconds = record->wall_seconds;
+    if (row.completed) row.work = io::read_run_work((cases_dir / (row.name + ".h5")).string());
+  }
+  if (!cases.front().row.completed)
+    throw NumericalError("study: the reference run failed (" + cases.front().row.message +
+                         "); see " + (cases_dir / "reference.log").string() +
+                         ", or give another with --reference KEY=VALUE");
+  std::vector<std::int64_t> probes(cl.study.probes.begin(), cl.study.probes.end());
+  const study::ReferenceRun reference((cases_dir / "reference.h5").string(), probes,
+                                      cl.study.cutoff_hz);
+  for (StudyCase& c : cases) {
+    study::StudyRow& row = c.row;
+    if (row.completed && row.role != "reference") {
+      try {
+        row.errors = reference.errors_of((cases_dir / (row.name + ".h5")).string());
+      } catch (const InputError& e) {
+        row.message = std::string("not compared: ") + e.what();
+      }
+    }
+    rows.push_back(row);
+  }
+  write_study_report(cl, rows, reference, directory, reference_description);
+}
+
+}  // namespace
+
+void command_study(MPI_Comm world, const CommandLine& cl) {
+  const fs::path directory = cl.study.directory.empty() ? fs::path(default_directory(cl.scene))
+                                                        : fs::path(cl.study.directory);
+  const fs::path cases_dir = directory / "cases";
+  for (const std::string& t : cl.study.targets) study::parse_target(t);  // bad ones stop here
+  study::check_ranks_per_case(world, cl.study.ranks_per_case);
+  double scene_dt = 0.0;
+  std::string reference_description;
+  std::vector<StudyCase> cases = plan_cases(world, cl, scene_dt, reference_description);
+  std::string why;
+  if (mpi_rank(world) == 0) {
+    std::error_code ec;
+    fs::create_directories(cases_dir, ec);
+    if (ec) why = "cannot create " + cases_dir.string() + ": " + ec.message();
+    std::printf("study: %s; reference: %s\n", cl.scene.c_str(), reference_description.c_str());
+    std::fflush(stdout);
+  }
+  broadcast_string(world, why);
+  if (!why.empty()) throw InputError({cases_dir.string(), 0, "-o"}, why);
+  run_cases(world, cl, cases, cases_dir);
+  if (mpi_rank(world) == 0) report(cl, cases, directory, reference_description);
+}
+
+}  // namespace catena::app

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# `catena study` end to end (docs/study.md) on the taut string with HHT (alpha = 0, second
+# order) and Radau IIA against a Radau IIA reference:
+#   1. two one-rank groups (mpirun -n 2): every case completes; the errors are checked by
+#      check_study.py (HHT's fall as dt^2, Radau's below HHT's);
+#   2. the same command again: every case is kept, none runs again;
+#   3. one rank, and one group of three ranks (mpirun -n 3 --ranks-per-case 3): the same
+#      errors as on two groups;
+#   4. a study stopped in its last case (CATENA_STOP_AFTER_STEPS, as SIGTERM would) exits
+#      143 and, run again, keeps the finished cases and runs only the stopped one.
+# Usage: study.sh CATENA SCENE WORK_DIR CHECK_SCRIPT
+set -u
+app=$1 scene=$2 work=$3 check=$4
+mpirun="mpirun --oversubscribe"
+rm -rf "$work" && mkdir -p "$work" || exit 1
+study=(study "$scene" --set analysis.duration=1 --vary integrator.type=hht,radau
+       --vary integrator.dt=0.04,0.02,0.01 --reference integrator.type=radau
+       --reference integrator.dt=0.0025)
+fail() { echo "study.sh: $*" >&2; exit 1; }
+
+$mpirun -n 2 "$app" "${study[@]}" -o "$work/np2" > "$work/np2.out" 2>&1 \
+  || { cat "$work/np2.out"; fail "the study on two groups failed"; }
+cat "$work/np2.out"
+grep -q "on 2 groups of 1 rank" "$work/np2.out" || fail "not two groups"
+
+$mpirun -n 2 "$app" "${study[@]}" -o "$work/np2" > "$work/again.out" 2>&1 \
+  || { cat "$work/again.out"; fail "the resumed study failed"; }
+kept=$(grep -c "done before, kept" "$work/again.out")
+started=$(grep -c " started on group" "$work/again.out")
+[ "$kept" -eq 7 ] && [ "$started" -eq 0 ] || fail "again: $kept cases kept, $started run (7, 0 expected)"
+
+"$app" "${study[@]}" -o "$work/np1" > "$work/np1.out" 2>&1 \
+  || { cat "$work/np1.out"; fail "the study on one rank failed"; }
+$mpirun -n 3 "$app" "${study[@]}" --ranks-per-case 3 -o "$work/np3" > "$work/np3.out" 2>&1 \
+  || { cat "$work/np3.out"; fail "the study on a group of three ranks failed"; }
+grep -q "on 1 group of 3 ranks" "$work/np3.out" || fail "not one group of three"
+
+/usr/bin/python3 "$check" "$work/np2" "$work/np1" "$work/np3" || exit 1
+
+# 4. Cases in queue order: reference (50 steps), then dt 0.04, 0.02, 0.01, 0.005 (200).
+stop=(study "$scene" --set analysis.duration=1 --vary integrator.dt=0.04,0.02,0.01,0.005
+      --reference integrator.dt=0.02 -o "$work/stopped")
+CATENA_STOP_AFTER_STEPS=150 "$app" "${stop[@]}" > "$work/stop.out" 2>&1
+code=$?
+[ "$code" -eq 143 ] || { cat "$work/stop.out"; fail "stopped study exited $code, not 143"; }
+"$app" "${stop[@]}" > "$work/resume.out" 2>&1 || { cat "$work/resume.out"; fail "resume failed"; }
+cat "$work/resume.out"
+kept=$(grep -c "done before, kept" "$work/resume.out")
+started=$(grep -c " started on group" "$work/resume.out")
+[ "$kept" -eq 4 ] && [ "$started" -eq 1 ] || fail "resume: $kept kept, $started run (4, 1 expected)"
+grep -q "setting_004 (integrator.dt=0.005) started" "$work/resume.out" || fail "wrong case rerun"
+[ "$(grep -c ',completed,' "$work/stopped/study.csv")" -eq 5 ] || fail "not every case completed"
+echo "study.sh: passed"
