@@ -107,8 +107,20 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
       throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
     return args[++i];
   };
+  auto list = [](const std::string& text) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+      items.push_back(text.substr(start, comma - start));
+    items.push_back(text.substr(start));
+    return items;
+  };
   if (a == "--vary") {
     st.vary.push_back(value("--vary"));
+  } else if (a == "--methods") {
+    for (const std::string& m : list(value("--methods"))) st.methods.push_back(m);
+  } else if (a == "--steps") {
+    st.steps = list(value("--steps"));
   } else if (a == "--reference") {
     st.reference.push_back(value("--reference"));
   } else if (a == "--target") {
@@ -308,10 +320,11 @@ CommandLine parse_command_line(int argc, char** argv) {
   if (cl.scene.empty())
     throw InputError({"", 0, "SCENE"},
                      "no scene file given; usage: catena " + cl.command + " SCENE.yaml");
-  if (cl.command == "study" && cl.study.vary.empty())
+  if (cl.command == "study" && cl.study.vary.empty() && cl.study.methods.empty())
     throw InputError({"", 0, "--vary"},
                      "a study needs at least one --vary KEY=V1,V2,... (e.g. --vary "
-                     "integrator.dt=1e-3,5e-4,2.5e-4); docs/study.md");
+                     "integrator.dt=1e-3,5e-4,2.5e-4) or --methods (e.g. --methods all); "
+                     "docs/study.md");
   if (cl.output) cl.overrides.push_back("output.file=" + *cl.output);
   return cl;
 }

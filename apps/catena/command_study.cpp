@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -92,17 +93,34 @@ std::string list_text(const std::vector<std::string>& overrides) {
 // not start last), its check, then the settings; every case's scene is loaded once here so
 // that a typo in a value stops the study before anything runs. The check is left out when
 // a setting is the same run.
-std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, double& scene_dt,
-                                  std::string& reference_description) {
+std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const fs::path& directory,
+                                  double& scene_dt, std::string& reference_description) {
   const StudyArguments& args = cl.study;
   std::vector<study::Variation> variations;
   for (const std::string& v : args.vary) variations.push_back(study::parse_variation(v));
-  const std::vector<study::Setting> settings = study::expand(variations);
   const model::Model base = load_scene(world, cl.scene, cl.overrides);
   if (base.analysis != model::AnalysisType::dynamic)
     throw InputError({cl.scene, 0, "analysis.type"},
                      "a study compares dynamic runs; this scene's analysis is static");
   scene_dt = base.dynamic_options.integrator.dt;
+  std::vector<study::Setting> settings;
+  if (args.methods.empty()) {
+    settings = study::expand(variations);
+  } else {
+    study::MethodContext context;
+    context.scene_dt = scene_dt;
+    context.scene_nonlinear = base.dynamic_options.structure == model::StructureModel::nonlinear;
+    context.modal_basis = (directory / "modal_basis.h5").string();
+    settings = study::expand_methods(args.methods, args.steps, variations, context);
+    // The reference refines the smallest step any method takes.
+    study::Variation steps{"integrator.dt", {}};
+    for (const study::Setting& s : settings)
+      for (const auto& [key, value] : s.values)
+        if (key == "integrator.dt" &&
+            std::find(steps.values.begin(), steps.values.end(), value) == steps.values.end())
+          steps.values.push_back(value);
+    variations.push_back(steps);
+  }
   const study::ReferencePlan reference = args.reference.empty()
                                              ? study::default_reference(variations, scene_dt)
                                              : study::given_reference(args.reference);
@@ -287,7 +305,7 @@ void command_study(MPI_Comm world, const CommandLine& cl) {
   study::check_ranks_per_case(world, cl.study.ranks_per_case);
   double scene_dt = 0.0;
   std::string reference_description;
-  std::vector<StudyCase> cases = plan_cases(world, cl, scene_dt, reference_description);
+  std::vector<StudyCase> cases = plan_cases(world, cl, directory, scene_dt, reference_description);
   std::string why;
   if (mpi_rank(world) == 0) {
     std::error_code ec;

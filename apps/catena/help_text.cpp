@@ -109,8 +109,8 @@ const CommandHelp* commands() {
 )",
        true},
       {"study",
-       R"(  catena study SCENE.yaml --vary KEY=V1,V2,... [--vary ...] [--reference KEY=VALUE ...]
-               [--target MEASURE=LIMIT ...] [--ranks-per-case K] [--probe NODE_ID ...]
+       R"(  catena study SCENE.yaml (--vary KEY=V1,V2,... | --methods M1,M2 [--steps F1,F2])
+               [--vary ...] [--reference KEY=VALUE ...] [--target MEASURE=LIMIT ...] [--ranks-per-case K] [--probe NODE_ID ...]
                [--cutoff HZ] [--set KEY=VALUE ...] [-o DIR] [PETSc options]
 )",
        R"(  study   run a dynamic scene under several settings, measure each against a reference
@@ -121,6 +121,11 @@ const CommandHelp* commands() {
        std::string(R"(Options of study:
   --vary KEY=V1,V2,...  a scene key and its values (repeatable: every combination runs);
                         e.g. --vary integrator.dt=1e-3,5e-4 --vary integrator.type=hht,radau
+  --methods M1,M2       method presets, each at its own steps: hht (HHT-alpha, 1x the
+                        scene's dt), radau (Radau IIA s = 3, 8x), linear (linear
+                        structure, linearly implicit HHT, 1x), modal (modal model, 1x;
+                        its modes solved once, DIR/modal_basis.h5); all: every one
+  --steps F1,F2,...     with --methods: each method's step times these (default 2,1,0.5)
   --reference KEY=VALUE the reference's settings (repeatable); default: the scene's method
                         at the study's tightest resolution with the time step halved,
                         checked against the same unhalved

@@ -110,14 +110,19 @@ std::optional<Refinement> resolution_key(const std::string& key) {
 
 std::vector<std::string> Setting::overrides() const {
   std::vector<std::string> out;
+  for (const auto& [key, value] : preset) out.push_back(key + "=" + value);
   for (const auto& [key, value] : values) out.push_back(key + "=" + value);
-  for (const auto& [key, value] : values)
-    if (key == "integrator.type")
-      for (const std::string& removed : keys_not_taken_by(value)) out.push_back(removed + "=~");
+  for (const auto& list : {preset, values})
+    for (const auto& [key, value] : list)
+      if (key == "integrator.type")
+        for (const std::string& removed : keys_not_taken_by(value)) out.push_back(removed + "=~");
   return out;
 }
 
-std::string Setting::method() const { return joined(values, false); }
+std::string Setting::method() const {
+  const std::string varied = joined(values, false);
+  return label.empty() ? varied : varied.empty() ? label : label + " " + varied;
+}
 std::string Setting::resolution() const { return joined(values, true); }
 
 std::vector<Setting> expand(const std::vector<Variation>& variations) {
@@ -138,6 +143,96 @@ std::vector<Setting> expand(const std::vector<Variation>& variations) {
     settings = std::move(next);
   }
   return variations.empty() ? std::vector<Setting>{} : settings;
+}
+
+std::vector<MethodPreset> method_presets() {
+  return {
+      {"hht",
+       "HHT-alpha (the scene's alpha), nonlinear structure, at 1x the scene's step",
+       1.0,
+       true,
+       {"integrator.type=hht", nullptr}},
+      {"radau",
+       "Radau IIA with 3 stages (order 5, L-stable), nonlinear, at 8x the scene's step",
+       8.0,
+       true,
+       {"integrator.type=radau_iia", "integrator.stages=3", nullptr}},
+      {"linear",
+       "the linear structure, HHT with one linearly implicit step per time step, at 1x",
+       1.0,
+       false,
+       {"analysis.structure=linear", "integrator.type=hht", "integrator.newton=linearly_implicit",
+        nullptr}},
+      {"modal",
+       "the modal model (the scene's or the default cut-off), at 1x",
+       1.0,
+       false,
+       {"analysis.structure=modal", "integrator.type=hht", nullptr}},
+  };
+}
+
+std::vector<Setting> expand_methods(const std::vector<std::string>& names,
+                                    const std::vector<std::string>& steps,
+                                    const std::vector<Variation>& variations,
+                                    const MethodContext& context) {
+  const std::vector<MethodPreset> presets = method_presets();
+  std::vector<std::string> wanted;
+  for (const std::string& name : names) {
+    if (name == "all") {
+      for (const MethodPreset& p : presets) wanted.emplace_back(p.name);
+      continue;
+    }
+    if (std::none_of(presets.begin(), presets.end(),
+                     [&](const MethodPreset& p) { return name == p.name; })) {
+      std::string accepted;
+      for (const MethodPreset& p : presets) accepted += std::string(p.name) + ", ";
+      throw InputError({"", 0, "--methods"},
+                       "unknown method '" + name + "'; accepted: " + accepted + "all");
+    }
+    wanted.push_back(name);
+  }
+  for (const Variation& v : variations)
+    if (v.key == "integrator.dt")
+      throw InputError({"", 0, "--steps"},
+                       "--methods runs each method at its own steps (--steps, multiples of "
+                       "its base step): do not also --vary integrator.dt");
+  std::vector<double> factors;
+  for (const std::string& text : steps) {
+    const std::optional<double> f = number(text);
+    if (!f || !(*f > 0.0))
+      throw InputError({"", 0, "--steps"}, "'" + text +
+                                               "': a step factor must be a positive number "
+                                               "(e.g. --steps 2,1,0.5)");
+    factors.push_back(*f);
+  }
+  std::vector<Setting> settings;
+  const std::vector<Setting> others =
+      variations.empty() ? std::vector<Setting>(1) : expand(variations);
+  for (const std::string& name : wanted) {
+    const MethodPreset& p = *std::find_if(presets.begin(), presets.end(),
+                                          [&](const MethodPreset& q) { return name == q.name; });
+    for (double f : factors)
+      for (const Setting& other : others) {
+        Setting s;
+        s.label = p.name;
+        for (const char* const* k = p.keys; *k; ++k) {
+          const std::string kv = *k;
+          const auto eq = kv.find('=');
+          s.preset.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+        }
+        if (!context.scene_nonlinear && name != "modal") {  // a linear or modal scene
+          if (p.nonlinear) s.preset.emplace_back("analysis.structure", "nonlinear");
+          s.preset.emplace_back("analysis.modal_cutoff", "~");
+          s.preset.emplace_back("analysis.modal_basis", "~");
+        }
+        if (name == "modal" && !context.modal_basis.empty())
+          s.preset.emplace_back("analysis.modal_basis", context.modal_basis);
+        s.values.emplace_back("integrator.dt", number_text(context.scene_dt * p.step_factor * f));
+        s.values.insert(s.values.end(), other.values.begin(), other.values.end());
+        settings.push_back(std::move(s));
+      }
+  }
+  return settings;
 }
 
 ReferencePlan default_reference(const std::vector<Variation>& variations, double scene_dt) {

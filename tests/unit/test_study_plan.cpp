@@ -67,6 +67,46 @@ TEST(Settings, VaryingTheTypeRemovesTheKeysItDoesNotTake) {
   EXPECT_TRUE(keys_not_taken_by("no_such_method").empty());
 }
 
+TEST(Methods, EachPresetAtItsOwnStepsThenTheOtherVariations) {
+  MethodContext context;
+  context.scene_dt = 5e-4;
+  context.modal_basis = "study/modal_basis.h5";
+  const std::vector<Setting> s = expand_methods(
+      {"radau", "modal"}, {"2", "1"}, {parse_variation("catenary.presag=0.01,0.02")}, context);
+  ASSERT_EQ(s.size(), 8u);
+  EXPECT_EQ(s[0].method(), "radau catenary.presag=0.01");  // a line per preset and pre-sag
+  EXPECT_EQ(s[0].resolution(), "integrator.dt=0.008");     // 8 x 2 x 0.5 ms
+  EXPECT_EQ(s[1].method(), "radau catenary.presag=0.02");
+  EXPECT_EQ(s[2].resolution(), "integrator.dt=0.004");
+  const Strings radau = s[0].overrides();
+  EXPECT_EQ(radau[0], "integrator.type=radau_iia");
+  EXPECT_NE(std::find(radau.begin(), radau.end(), "integrator.alpha=~"), radau.end());
+  const Strings modal = s[4].overrides();
+  EXPECT_EQ(s[4].method(), "modal catenary.presag=0.01");
+  EXPECT_NE(std::find(modal.begin(), modal.end(), "analysis.modal_basis=study/modal_basis.h5"),
+            modal.end());
+  EXPECT_EQ(expand_methods({"all"}, {"1"}, {}, context).size(), method_presets().size());
+}
+
+TEST(Methods, ALinearSceneRunsTheNonlinearPresetsNonlinear) {
+  MethodContext context;
+  context.scene_dt = 1e-3;
+  context.scene_nonlinear = false;
+  const Strings hht = expand_methods({"hht"}, {"1"}, {}, context)[0].overrides();
+  EXPECT_NE(std::find(hht.begin(), hht.end(), "analysis.structure=nonlinear"), hht.end());
+  EXPECT_NE(std::find(hht.begin(), hht.end(), "analysis.modal_cutoff=~"), hht.end());
+}
+
+TEST(Methods, BadNamesStepsAndAVariedStepAreRefused) {
+  MethodContext context;
+  context.scene_dt = 1e-3;
+  EXPECT_THROW(expand_methods({"euler"}, {"1"}, {}, context), InputError);
+  EXPECT_THROW(expand_methods({"hht"}, {"0"}, {}, context), InputError);
+  EXPECT_THROW(expand_methods({"hht"}, {"x"}, {}, context), InputError);
+  EXPECT_THROW(expand_methods({"hht"}, {"1"}, {parse_variation("integrator.dt=1e-3")}, context),
+               InputError);
+}
+
 TEST(Reference, RefinesTheTightestResolutionAndChecksAgainstItUnrefined) {
   const ReferencePlan p = default_reference(
       {parse_variation("integrator.type=hht,radau"),

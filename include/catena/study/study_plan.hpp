@@ -39,16 +39,20 @@ struct Refinement {
 // catenary.element_length (× 1/2), lines[i].elements (× 2); else none.
 std::optional<Refinement> resolution_key(const std::string& key);
 
-// One setting: a value for every varied key, in the order of the --vary arguments.
+// One setting: a value for every varied key, in the order of the --vary arguments, after
+// the keys of its method preset (--methods), if any.
 struct Setting {
+  std::string label;  // the method preset's name ("" without --methods)
+  std::vector<std::pair<std::string, std::string>> preset;  // its keys
   std::vector<std::pair<std::string, std::string>> values;
 
   // "key=value" for each varied key; where integrator.type is varied, then "key=~" (remove)
   // for each integrator key the type does not take (keys_not_taken_by), so that a scene
   // written for one method serves every method of the study.
   std::vector<std::string> overrides() const;
-  // The values of the varied keys that are not resolution keys ("integrator.type=radau
-  // integrator.stages=3"): the method, one line of the work–precision plot; "" if none.
+  // The preset's name and the values of the varied keys that are not resolution keys
+  // ("radau", "integrator.type=radau integrator.stages=3"): the method, one line of the
+  // work–precision plot; "" if none.
   std::string method() const;
   // The values of the varied resolution keys ("integrator.dt=0.0005"); "" if none.
   std::string resolution() const;
@@ -63,6 +67,37 @@ std::vector<std::string> keys_not_taken_by(const std::string& type);
 // Not collective. Every combination of the variations' values, the first variation
 // varying slowest. Throws catena::InputError (key "--vary") when a key is varied twice.
 std::vector<Setting> expand(const std::vector<Variation>& variations);
+
+// A method of `--methods`: scene keys and the step it is run at, the scene's integrator.dt
+// times step_factor times each of `--steps` (a Radau IIA step of 4 ms matches HHT's 0.5 ms
+// on EN 50318, docs/validation.md: the factor puts each method's steps where they compete).
+struct MethodPreset {
+  const char* name;
+  const char* what;     // one line for the help and the docs
+  double step_factor;   // its base step in scene steps
+  bool nonlinear;       // runs the nonlinear structure (else the structure keys below)
+  const char* keys[4];  // "key=value" overrides (nullptr-terminated)
+};
+
+// Not collective. hht, radau, linear, modal (`all` is every one).
+std::vector<MethodPreset> method_presets();
+
+// What --methods expands to, besides the presets' keys.
+struct MethodContext {
+  double scene_dt = 0.0;        // s, the scene's integrator.dt after --set
+  bool scene_nonlinear = true;  // the scene's analysis.structure is nonlinear
+  std::string modal_basis;      // the file the modal settings share (their modes)
+};
+
+// Not collective. The settings of `--methods NAMES --steps FACTORS`: every preset (in
+// order) at every step, then combined with `variations` (which must not vary
+// integrator.dt: --steps sets it). Throws catena::InputError (key "--methods") for an
+// unknown name, naming the accepted ones; (key "--steps") for a factor that is not a
+// positive number or with integrator.dt varied.
+std::vector<Setting> expand_methods(const std::vector<std::string>& names,
+                                    const std::vector<std::string>& steps,
+                                    const std::vector<Variation>& variations,
+                                    const MethodContext& context);
 
 // The reference's settings (overrides on top of the study's --set ones) and those of its
 // check, and a sentence that says how they were chosen.
