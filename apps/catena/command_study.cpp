@@ -3,11 +3,9 @@
 // and its cost, and writes DIR/study.csv (+ DIR/study.png) with a recommendation
 // (docs/study.md). The cases run as `catena run` would, each on a group of
 // --ranks-per-case ranks, the groups taking cases from one queue; each case's console
-// output goes to DIR/cases/NAME.log, its results to DIR/cases/NAME.h5, and a record of
+// output goes to DIR/cases/NAME.log (its progress lines also to the console), its results
+// to DIR/cases/NAME.h5, and a record of
 // its end to DIR/cases/NAME.result, so that the same command again resumes the study.
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "case_console.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/output_error.hpp"
@@ -40,38 +39,6 @@ struct StudyCase {
   std::vector<std::string> overrides;  // the case's own, after the study's --set ones
 };
 
-// While it lives, this process's stdout and stderr go to `path` (appended): the console
-// output of the case the process runs. Each process belongs to one group, so the
-// redirection never mixes two cases.
-class ConsoleToFile {
- public:
-  explicit ConsoleToFile(const fs::path& path) {
-    std::fflush(stdout);
-    std::fflush(stderr);
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd < 0) throw Error("cannot open the case log " + path.string());
-    saved_out_ = ::dup(STDOUT_FILENO);
-    saved_err_ = ::dup(STDERR_FILENO);
-    ::dup2(fd, STDOUT_FILENO);
-    ::dup2(fd, STDERR_FILENO);
-    ::close(fd);
-  }
-  ~ConsoleToFile() {
-    std::fflush(stdout);
-    std::fflush(stderr);
-    ::dup2(saved_out_, STDOUT_FILENO);
-    ::dup2(saved_err_, STDERR_FILENO);
-    ::close(saved_out_);
-    ::close(saved_err_);
-  }
-  ConsoleToFile(const ConsoleToFile&) = delete;
-  ConsoleToFile& operator=(const ConsoleToFile&) = delete;
-
- private:
-  int saved_out_ = -1;
-  int saved_err_ = -1;
-};
-
 std::string default_directory(const std::string& scene) {
   return fs::path(scene).stem().string() + "_study";
 }
@@ -89,12 +56,16 @@ std::string list_text(const std::vector<std::string>& overrides) {
   return out.empty() ? "(the scene as it is)" : out;
 }
 
-// Collective over `world`. The cases: the reference first (the most expensive, so it does
-// not start last), its check, then the settings; every case's scene is loaded once here so
-// that a typo in a value stops the study before anything runs. The check is left out when
-// a setting is the same run.
-std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const fs::path& directory,
-                                  double& scene_dt, std::string& reference_description) {
+// The settings and the reference of a study, before they become cases.
+struct StudyPlan {
+  std::vector<study::Setting> settings;
+  study::ReferencePlan reference;
+  std::string scene_method;  // the scene's integrator type: the method of unlabelled settings
+};
+
+// Collective over `world` (reads the scene). --vary's settings, or --methods' with the
+// other variations; the reference given or the default one.
+StudyPlan plan_settings(MPI_Comm world, const CommandLine& cl, const fs::path& directory) {
   const StudyArguments& args = cl.study;
   std::vector<study::Variation> variations;
   for (const std::string& v : args.vary) variations.push_back(study::parse_variation(v));
@@ -102,30 +73,36 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const f
   if (base.analysis != model::AnalysisType::dynamic)
     throw InputError({cl.scene, 0, "analysis.type"},
                      "a study compares dynamic runs; this scene's analysis is static");
-  scene_dt = base.dynamic_options.integrator.dt;
-  std::vector<study::Setting> settings;
+  const double scene_dt = base.dynamic_options.integrator.dt;
+  StudyPlan plan;
+  plan.scene_method = base.dynamic_options.integrator.type;
   if (args.methods.empty()) {
-    settings = study::expand(variations);
+    plan.settings = study::expand(variations);
   } else {
     study::MethodContext context;
     context.scene_dt = scene_dt;
     context.scene_nonlinear = base.dynamic_options.structure == model::StructureModel::nonlinear;
     context.modal_basis = (directory / "modal_basis.h5").string();
-    settings = study::expand_methods(args.methods, args.steps, variations, context);
+    plan.settings = study::expand_methods(args.methods, args.steps, variations, context);
     // The reference refines the smallest step any method takes.
     study::Variation steps{"integrator.dt", {}};
-    for (const study::Setting& s : settings)
+    for (const study::Setting& s : plan.settings)
       for (const auto& [key, value] : s.values)
         if (key == "integrator.dt" &&
             std::find(steps.values.begin(), steps.values.end(), value) == steps.values.end())
           steps.values.push_back(value);
     variations.push_back(steps);
   }
-  const study::ReferencePlan reference = args.reference.empty()
-                                             ? study::default_reference(variations, scene_dt)
-                                             : study::given_reference(args.reference);
-  reference_description = reference.description;
+  plan.reference = args.reference.empty() ? study::default_reference(variations, scene_dt)
+                                          : study::given_reference(args.reference);
+  return plan;
+}
 
+// Collective over `world`. The cases: the reference first (the most expensive, so it does
+// not start last), its check, then the settings; every case's scene is loaded once here so
+// that a typo in a value stops the study before anything runs. The check is left out when
+// a setting is the same run.
+std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const StudyPlan& plan) {
   std::vector<StudyCase> cases;
   auto add = [&](const std::string& name, const std::string& role, const std::string& method,
                  const std::string& setting, const std::vector<std::string>& overrides) {
@@ -137,16 +114,17 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const f
     c.overrides = overrides;
     cases.push_back(std::move(c));
   };
+  const study::ReferencePlan& reference = plan.reference;
   add("reference", "reference", "reference", list_text(reference.overrides), reference.overrides);
   if (!reference.check_overrides.empty())
     add("reference_check", "reference_check", "reference", list_text(reference.check_overrides),
         reference.check_overrides);
-  for (std::size_t i = 0; i < settings.size(); ++i) {
+  for (std::size_t i = 0; i < plan.settings.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "setting_%03zu", i + 1);
-    const std::string method = settings[i].method();
-    add(name, "setting", method.empty() ? base.dynamic_options.integrator.type : method,
-        settings[i].resolution(), settings[i].overrides());
+    const study::Setting& s = plan.settings[i];
+    add(name, "setting", s.method().empty() ? plan.scene_method : s.method(), s.resolution(),
+        s.overrides());
   }
   if (mpi_rank(world) == 0) {
     std::printf("study: checking the scene under %zu settings\n", cases.size());
@@ -181,11 +159,29 @@ study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCas
   run.overrides = joined(joined(cl.overrides, c.overrides),
                          {"output.file=" + (cases_dir / (c.row.name + ".h5")).string()});
   run.progress_seconds = 30.0;
+  // A case stopped midway (SIGTERM, the study killed after a checkpoint) continues from its
+  // checkpoint; one the run refuses (another scene's: the setting changed) is run afresh.
+  const std::string output = (cases_dir / (c.row.name + ".h5")).string();
+  int resume = mpi_rank(group) == 0 && fs::exists(io::checkpoint_path(output));
+  MPI_Bcast(&resume, 1, MPI_INT, 0, group);
   const double start = MPI_Wtime();
   {
-    const ConsoleToFile console(cases_dir / (c.row.name + ".log"));
+    const CaseConsole console(cases_dir / (c.row.name + ".log"), c.row.name);
     try {
-      command_run(group, run);
+      if (resume) {
+        run.restart = true;
+        try {
+          command_run(group, run);
+        } catch (const InputError& e) {
+          if (mpi_rank(group) == 0)
+            std::printf("study: not continued from %s (%s): running from the start\n",
+                        io::checkpoint_path(output).c_str(), e.what());
+          run.restart = false;
+          command_run(group, run);
+        }
+      } else {
+        command_run(group, run);
+      }
       record.completed = true;
     } catch (const InputError& e) {
       record.exit_code = 2;
@@ -205,7 +201,7 @@ study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCas
   // A completed case is not extended: its checkpoint (the size of the state) is not kept.
   if (record.completed && mpi_rank(group) == 0) {
     std::error_code ignored;
-    fs::remove(io::checkpoint_path((cases_dir / (c.row.name + ".h5")).string()), ignored);
+    fs::remove(io::checkpoint_path(output), ignored);
   }
   return record;
 }
@@ -303,9 +299,9 @@ void command_study(MPI_Comm world, const CommandLine& cl) {
   const fs::path cases_dir = directory / "cases";
   for (const std::string& t : cl.study.targets) study::parse_target(t);  // bad ones stop here
   study::check_ranks_per_case(world, cl.study.ranks_per_case);
-  double scene_dt = 0.0;
-  std::string reference_description;
-  std::vector<StudyCase> cases = plan_cases(world, cl, directory, scene_dt, reference_description);
+  const StudyPlan plan = plan_settings(world, cl, directory);
+  const std::string& reference_description = plan.reference.description;
+  std::vector<StudyCase> cases = plan_cases(world, cl, plan);
   std::string why;
   if (mpi_rank(world) == 0) {
     std::error_code ec;

@@ -122,7 +122,7 @@ const CommandHelp* commands() {
   --vary KEY=V1,V2,...  a scene key and its values (repeatable: every combination runs);
                         e.g. --vary integrator.dt=1e-3,5e-4 --vary integrator.type=hht,radau
   --methods M1,M2       method presets, each at its own steps: hht (HHT-alpha, 1x the
-                        scene's dt), radau (Radau IIA s = 3, 8x), linear (linear
+                        scene's dt), radau (Radau IIA s = 3, 4x), linear (linear
                         structure, linearly implicit HHT, 1x), modal (modal model, 1x;
                         its modes solved once, DIR/modal_basis.h5); all: every one
   --steps F1,F2,...     with --methods: each method's step times these (default 2,1,0.5)

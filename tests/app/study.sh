@@ -7,7 +7,10 @@
 #   3. one rank, and one group of three ranks (mpirun -n 3 --ranks-per-case 3): the same
 #      errors as on two groups;
 #   4. a study stopped in its last case (CATENA_STOP_AFTER_STEPS, as SIGTERM would) exits
-#      143 and, run again, keeps the finished cases and runs only the stopped one.
+#      143 and, run again, keeps the finished cases and continues the stopped one from its
+#      checkpoint;
+#   5. the same after a crash (CATENA_KILL_AFTER_STEPS: SIGKILL in the last case, no record
+#      written for it).
 # Usage: study.sh CATENA SCENE WORK_DIR CHECK_SCRIPT
 set -u
 app=$1 scene=$2 work=$3 check=$4
@@ -49,5 +52,18 @@ kept=$(grep -c "done before, kept" "$work/resume.out")
 started=$(grep -c " started on group" "$work/resume.out")
 [ "$kept" -eq 4 ] && [ "$started" -eq 1 ] || fail "resume: $kept kept, $started run (4, 1 expected)"
 grep -q "setting_004 (integrator.dt=0.005) started" "$work/resume.out" || fail "wrong case rerun"
+grep -q "restart: from .*setting_004.h5.chk at t = 0.75 s" "$work/stopped/cases/setting_004.log" \
+  || fail "the stopped case did not continue from its checkpoint"
 [ "$(grep -c ',completed,' "$work/stopped/study.csv")" -eq 5 ] || fail "not every case completed"
+
+# 5. Killed outright in the same case: nothing of it recorded, the rest kept.
+CATENA_KILL_AFTER_STEPS=150 "$app" "${stop[@]/stopped/killed}" > "$work/kill.out" 2>&1
+code=$?
+[ "$code" -ne 0 ] || { cat "$work/kill.out"; fail "the killed study exited 0"; }
+[ ! -e "$work/killed/cases/setting_004.result" ] || fail "the killed case left a record"
+"$app" "${stop[@]/stopped/killed}" > "$work/rekill.out" 2>&1 \
+  || { cat "$work/rekill.out"; fail "resume after the kill failed"; }
+kept=$(grep -c "done before, kept" "$work/rekill.out")
+started=$(grep -c " started on group" "$work/rekill.out")
+[ "$kept" -eq 4 ] && [ "$started" -eq 1 ] || fail "after kill: $kept kept, $started run (4, 1 expected)"
 echo "study.sh: passed"

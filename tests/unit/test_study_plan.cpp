@@ -75,9 +75,9 @@ TEST(Methods, EachPresetAtItsOwnStepsThenTheOtherVariations) {
       {"radau", "modal"}, {"2", "1"}, {parse_variation("catenary.presag=0.01,0.02")}, context);
   ASSERT_EQ(s.size(), 8u);
   EXPECT_EQ(s[0].method(), "radau catenary.presag=0.01");  // a line per preset and pre-sag
-  EXPECT_EQ(s[0].resolution(), "integrator.dt=0.008");     // 8 x 2 x 0.5 ms
+  EXPECT_EQ(s[0].resolution(), "integrator.dt=0.004");  // 4 x 2 x 0.5 ms
   EXPECT_EQ(s[1].method(), "radau catenary.presag=0.02");
-  EXPECT_EQ(s[2].resolution(), "integrator.dt=0.004");
+  EXPECT_EQ(s[2].resolution(), "integrator.dt=0.002");
   const Strings radau = s[0].overrides();
   EXPECT_EQ(radau[0], "integrator.type=radau_iia");
   EXPECT_NE(std::find(radau.begin(), radau.end(), "integrator.alpha=~"), radau.end());
