@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -119,12 +120,13 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const S
   if (!reference.check_overrides.empty())
     add("reference_check", "reference_check", "reference", list_text(reference.check_overrides),
         reference.check_overrides);
-  for (std::size_t i = 0; i < plan.settings.size(); ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "setting_%03zu", i + 1);
-    const study::Setting& s = plan.settings[i];
-    add(name, "setting", s.method().empty() ? plan.scene_method : s.method(), s.resolution(),
-        s.overrides());
+  std::set<std::string> names = {"reference", "reference_check"};
+  for (const study::Setting& s : plan.settings) {
+    const std::string method = s.method().empty() ? plan.scene_method : s.method();
+    const std::string stem = study::case_stem(method, s.resolution());
+    std::string name = stem;
+    for (int k = 2; !names.insert(name).second; ++k) name = stem + "_" + std::to_string(k);
+    add(name, "setting", method, s.resolution(), s.overrides());
   }
   if (mpi_rank(world) == 0) {
     std::printf("study: checking the scene under %zu settings\n", cases.size());

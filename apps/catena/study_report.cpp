@@ -28,7 +28,7 @@ std::string shown(double x, const char* format) {
 
 void print_table(const std::vector<study::StudyRow>& rows, const study::ReferenceRun& reference) {
   const bool contact = reference.has_pantographs();
-  std::printf("\n%-16s %-24s %-24s %7s %9s %8s %7s %6s", "case", "method", "setting", "steps",
+  std::printf("\n%-24s %-24s %-24s %7s %9s %8s %7s %6s", "case", "method", "setting", "steps",
               "wall [s]", "[s/s]", "Newton", "fact.");
   if (contact)
     std::printf(" %9s %8s %8s %8s %8s\n", "F rms [N]", "mean %", "std %", "max %", "uplift %");
@@ -36,14 +36,14 @@ void print_table(const std::vector<study::StudyRow>& rows, const study::Referenc
     std::printf(" %11s %11s\n", "probe rms", "probe max");
   for (const study::StudyRow& r : rows) {
     if (!r.completed) {
-      std::printf("%-16s %-24s %-24s failed (exit %d): %s\n", r.name.c_str(), r.method.c_str(),
+      std::printf("%-24s %-24s %-24s failed (exit %d): %s\n", r.name.c_str(), r.method.c_str(),
                   r.setting.c_str(), r.exit_code, r.message.c_str());
       continue;
     }
     const io::RunWork& w = r.work;
-    std::printf("%-16s %-24s %-24s %7lld %9.2f %8.3f %7lld %6lld", r.name.c_str(), r.method.c_str(),
-                r.setting.c_str(), static_cast<long long>(w.steps_accepted), w.wall_seconds,
-                w.t_reached > 0 ? w.wall_seconds / w.t_reached : 0.0,
+    std::printf("%-24s %-24s %-24s %7lld %9.2f %8.3f %7lld %6lld", r.name.c_str(), r.method.c_str(),
+                r.setting.c_str(), static_cast<long long>(w.steps_accepted), w.stepping_seconds,
+                study::stepping_per_simulated_second(w),
                 static_cast<long long>(w.newton_iterations),
                 static_cast<long long>(w.factorizations));
     const study::CaseErrors& e = r.errors;
@@ -104,8 +104,8 @@ void print_recommendation(const CommandLine& cl, const std::vector<study::StudyR
   std::printf(
       "\nrecommendation: %s %s — the cheapest setting within %s: %.2f s of time stepping "
       "(%.3f s per simulated second)\n",
-      r.method.c_str(), r.setting.c_str(), wanted.c_str(), r.work.wall_seconds,
-      r.work.t_reached > 0 ? r.work.wall_seconds / r.work.t_reached : 0.0);
+      r.method.c_str(), r.setting.c_str(), wanted.c_str(), r.work.stepping_seconds,
+      study::stepping_per_simulated_second(r.work));
 }
 
 // The work–precision plot by Debian's python3 and matplotlib (a failure costs the picture,

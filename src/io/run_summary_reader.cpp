@@ -52,6 +52,12 @@ RunWork read_run_work(const std::string& path) {
   RunWork w;
   w.t_reached = r.number_attribute<double>(r.root(), "t_reached", "t_reached");
   w.wall_seconds = r.number_attribute<double>(r.root(), "wall_seconds", "wall_seconds");
+  w.stepping_seconds = w.wall_seconds;
+  if (r.has_attribute(r.root(), "stepping_wall_seconds")) {
+    w.stepping_seconds =
+        r.number_attribute<double>(r.root(), "stepping_wall_seconds", "stepping_wall_seconds");
+    w.t_started = r.number_attribute<double>(r.root(), "t_started", "t_started");
+  }
   w.n_ranks = r.number_attribute<std::int64_t>(r.root(), layout::root_attribute::n_ranks,
                                                layout::root_attribute::n_ranks);
   w.n_dofs = r.number_attribute<std::int64_t>(r.root(), layout::root_attribute::n_dofs,

@@ -1,6 +1,7 @@
 #include "catena/study/study_plan.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <regex>
@@ -284,6 +285,23 @@ ReferencePlan given_reference(const std::vector<std::string>& overrides) {
   plan.description = overrides.empty() ? "the scene as it is (--reference with no keys)"
                                        : "given by --reference: " + list;
   return plan;
+}
+
+std::string case_stem(const std::string& method, const std::string& resolution) {
+  std::string text = method.empty()       ? resolution
+                     : resolution.empty() ? method
+                                          : method + " " + resolution;
+  for (const char* prefix : {"integrator.", "analysis.", "catenary."})
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;)
+      text.erase(at, std::char_traits<char>::length(prefix));
+  std::string stem;
+  for (char c : text) {
+    const bool kept = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ||
+                      c == '=' || c == '+' || c == '-';
+    stem += kept ? c : '_';
+  }
+  if (stem.size() > 96) stem.resize(96);
+  return stem.empty() ? "setting" : stem;
 }
 
 std::string number_text(double value) {

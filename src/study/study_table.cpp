@@ -66,6 +66,11 @@ std::string number(double x) { return std::isfinite(x) ? number_text(x) : ""; }
 
 }  // namespace
 
+double stepping_per_simulated_second(const io::RunWork& work) {
+  const double simulated = work.t_reached - work.t_started;
+  return simulated > 0.0 ? work.stepping_seconds / simulated : 0.0;
+}
+
 std::string csv_text(const std::vector<StudyRow>& rows) {
   std::string out =
       "case,role,method,setting,status,steps,rejected_steps,wall_seconds,"
@@ -85,8 +90,8 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
     cell(ok ? std::string("completed") : "failed (exit " + std::to_string(r.exit_code) + ")");
     count(w.steps_accepted);
     count(w.steps_rejected);
-    cell(ok ? number(w.wall_seconds) : std::string());
-    cell(ok && w.t_reached > 0 ? number(w.wall_seconds / w.t_reached) : std::string());
+    cell(ok ? number(w.stepping_seconds) : std::string());
+    cell(ok ? number(stepping_per_simulated_second(w)) : std::string());
     count(w.newton_iterations);
     count(w.factorizations);
     count(w.residual_evaluations);
@@ -139,7 +144,7 @@ std::optional<std::size_t> recommend(const std::vector<StudyRow>& rows,
       const double v = measure_value(r.errors, t.measure);
       return std::isfinite(v) && std::abs(v) <= t.limit;
     });
-    if (meets && (!best || r.work.wall_seconds < rows[*best].work.wall_seconds)) best = i;
+    if (meets && (!best || r.work.stepping_seconds < rows[*best].work.stepping_seconds)) best = i;
   }
   return best;
 }

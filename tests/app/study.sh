@@ -51,8 +51,8 @@ cat "$work/resume.out"
 kept=$(grep -c "done before, kept" "$work/resume.out")
 started=$(grep -c " started on group" "$work/resume.out")
 [ "$kept" -eq 4 ] && [ "$started" -eq 1 ] || fail "resume: $kept kept, $started run (4, 1 expected)"
-grep -q "setting_004 (integrator.dt=0.005) started" "$work/resume.out" || fail "wrong case rerun"
-grep -q "restart: from .*setting_004.h5.chk at t = 0.75 s" "$work/stopped/cases/setting_004.log" \
+grep -q "hht_dt=0.005 (integrator.dt=0.005) started" "$work/resume.out" || fail "wrong case rerun"
+grep -q "restart: from .*hht_dt=0.005.h5.chk at t = 0.75 s" "$work/stopped/cases/hht_dt=0.005.log" \
   || fail "the stopped case did not continue from its checkpoint"
 [ "$(grep -c ',completed,' "$work/stopped/study.csv")" -eq 5 ] || fail "not every case completed"
 
@@ -60,7 +60,7 @@ grep -q "restart: from .*setting_004.h5.chk at t = 0.75 s" "$work/stopped/cases/
 CATENA_KILL_AFTER_STEPS=150 "$app" "${stop[@]/stopped/killed}" > "$work/kill.out" 2>&1
 code=$?
 [ "$code" -ne 0 ] || { cat "$work/kill.out"; fail "the killed study exited 0"; }
-[ ! -e "$work/killed/cases/setting_004.result" ] || fail "the killed case left a record"
+[ ! -e "$work/killed/cases/hht_dt=0.005.result" ] || fail "the killed case left a record"
 "$app" "${stop[@]/stopped/killed}" > "$work/rekill.out" 2>&1 \
   || { cat "$work/rekill.out"; fail "resume after the kill failed"; }
 kept=$(grep -c "done before, kept" "$work/rekill.out")

@@ -75,7 +75,7 @@ TEST(Methods, EachPresetAtItsOwnStepsThenTheOtherVariations) {
       {"radau", "modal"}, {"2", "1"}, {parse_variation("catenary.presag=0.01,0.02")}, context);
   ASSERT_EQ(s.size(), 8u);
   EXPECT_EQ(s[0].method(), "radau catenary.presag=0.01");  // a line per preset and pre-sag
-  EXPECT_EQ(s[0].resolution(), "integrator.dt=0.004");  // 4 x 2 x 0.5 ms
+  EXPECT_EQ(s[0].resolution(), "integrator.dt=0.004");     // 4 x 2 x 0.5 ms
   EXPECT_EQ(s[1].method(), "radau catenary.presag=0.02");
   EXPECT_EQ(s[2].resolution(), "integrator.dt=0.002");
   const Strings radau = s[0].overrides();
@@ -105,6 +105,17 @@ TEST(Methods, BadNamesStepsAndAVariedStepAreRefused) {
   EXPECT_THROW(expand_methods({"hht"}, {"x"}, {}, context), InputError);
   EXPECT_THROW(expand_methods({"hht"}, {"1"}, {parse_variation("integrator.dt=1e-3")}, context),
                InputError);
+}
+
+TEST(CaseStem, FromTheSettingsContentReadableAndSafe) {
+  EXPECT_EQ(case_stem("radau", "integrator.dt=0.004"), "radau_dt=0.004");
+  EXPECT_EQ(case_stem("integrator.type=hht", "integrator.dt=0.04"), "type=hht_dt=0.04");
+  EXPECT_EQ(case_stem("modal catenary.presag=0.01", ""), "modal_presag=0.01");
+  EXPECT_EQ(case_stem("gravity=[0, 0, -9.8]", "lines[0].elements=40"),
+            "gravity=_0__0__-9.8__lines_0_.elements=40");
+  EXPECT_EQ(case_stem("", ""), "setting");
+  EXPECT_EQ(case_stem(std::string(200, 'a'), "").size(), 96u);
+  EXPECT_EQ(case_stem("a/b", "c\\d").find('/'), std::string::npos);
 }
 
 TEST(Reference, RefinesTheTightestResolutionAndChecksAgainstItUnrefined) {
@@ -175,7 +186,8 @@ StudyRow row(const std::string& role, double wall, double std_error, bool comple
   r.name = role + std::to_string(wall);
   r.role = role;
   r.completed = completed;
-  r.work.wall_seconds = wall;
+  r.work.wall_seconds = wall + 1.0;
+  r.work.stepping_seconds = wall;
   r.work.t_reached = 2.0;
   r.errors.std = std_error;
   return r;

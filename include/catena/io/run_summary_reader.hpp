@@ -11,7 +11,12 @@ namespace catena::io {
 // The run's work statistics (root attributes written when it ended).
 struct RunWork {
   double t_reached = 0.0;     // s, simulated time reached
-  double wall_seconds = 0.0;  // s, the time stepping's wall time
+  double wall_seconds = 0.0;  // s, the dynamic run's wall time (initial state, model, stepping)
+  // s, the time stepping and its output alone, from t_started to t_reached (a run continued
+  // from a checkpoint: the part after the restart); files of an older Catena: wall_seconds
+  // from 0.
+  double stepping_seconds = 0.0;
+  double t_started = 0.0;
   std::int64_t n_ranks = 0;
   std::int64_t n_dofs = 0;
   std::int64_t steps_accepted = 0;

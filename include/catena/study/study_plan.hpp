@@ -64,6 +64,14 @@ struct Setting {
 // none for an unknown type.
 std::vector<std::string> keys_not_taken_by(const std::string& type);
 
+// Not collective. A file stem for the case of `setting` labelled `method`, made from its
+// content so that it names the same case when a study's list of settings changes (and a
+// resumed study finds what it ran): "radau_dt=0.004", "type=hht_dt=0.04" — the common key
+// prefixes (integrator., analysis., catenary.) dropped, characters other than letters,
+// digits and ._=+- made '_', at most 96 characters. Two settings may still share a stem
+// (values that differ only in the dropped characters): the caller makes them unique.
+std::string case_stem(const std::string& method, const std::string& resolution);
+
 // Not collective. Every combination of the variations' values, the first variation
 // varying slowest. Throws catena::InputError (key "--vary") when a key is varied twice.
 std::vector<Setting> expand(const std::vector<Variation>& variations);

@@ -48,6 +48,9 @@ struct StudyRow {
   CaseErrors errors;
 };
 
+// Not collective. The wall time of the time stepping per simulated second (0 if none ran).
+double stepping_per_simulated_second(const io::RunWork& work);
+
 // Not collective. study.csv's text: a header line, then one line per row.
 std::string csv_text(const std::vector<StudyRow>& rows);
 
