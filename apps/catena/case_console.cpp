@@ -28,7 +28,7 @@ CaseConsole::CaseConsole(const std::filesystem::path& log, std::string case_name
   log_ = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (log_ < 0) throw Error("cannot open the case log " + log.string());
   int pipe_fds[2];
-  if (::pipe(pipe_fds) != 0) {
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
     ::close(log_);
     throw Error("cannot open a pipe for the case log " + log.string());
   }
@@ -36,11 +36,17 @@ CaseConsole::CaseConsole(const std::filesystem::path& log, std::string case_name
   std::fflush(stderr);
   saved_out_ = ::dup(STDOUT_FILENO);
   saved_err_ = ::dup(STDERR_FILENO);
+  if (saved_out_ < 0 || saved_err_ < 0) {
+    for (int fd : {saved_out_, saved_err_, pipe_fds[0], pipe_fds[1], log_})
+      if (fd >= 0) ::close(fd);
+    throw Error("cannot keep the console while writing the case log " + log.string());
+  }
+  const int read_end = pipe_fds[0];
+  // The copier first, so that nothing is redirected into a pipe that no one reads.
+  copier_ = std::thread([this, read_end] { copy_lines(read_end, log_, saved_out_); });
   ::dup2(pipe_fds[1], STDOUT_FILENO);
   ::dup2(pipe_fds[1], STDERR_FILENO);
   ::close(pipe_fds[1]);
-  const int read_end = pipe_fds[0];
-  copier_ = std::thread([this, read_end] { copy_lines(read_end, log_, saved_out_); });
 }
 
 CaseConsole::~CaseConsole() {

@@ -121,6 +121,7 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     for (const std::string& m : list(value("--methods"))) st.methods.push_back(m);
   } else if (a == "--steps") {
     st.steps = list(value("--steps"));
+    st.steps_given = true;
   } else if (a == "--reference") {
     st.reference.push_back(value("--reference"));
   } else if (a == "--target") {
@@ -138,8 +139,8 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     throw InputError({"", 0, a}, "'" + a +
                                      "' is not an option of study (a study resumes by itself: "
                                      "run the same command again); accepted: --vary, "
-                                     "--reference, --target, --ranks-per-case, --probe, "
-                                     "--cutoff, --set, -o DIR");
+                                     "--methods, --steps, --reference, --target, "
+                                     "--ranks-per-case, --probe, --cutoff, --set, -o DIR");
   } else {
     return false;
   }
@@ -320,6 +321,10 @@ CommandLine parse_command_line(int argc, char** argv) {
   if (cl.scene.empty())
     throw InputError({"", 0, "SCENE"},
                      "no scene file given; usage: catena " + cl.command + " SCENE.yaml");
+  if (cl.command == "study" && cl.study.steps_given && cl.study.methods.empty())
+    throw InputError({"", 0, "--steps"},
+                     "--steps sets the steps of the --methods presets; without --methods, "
+                     "vary the step itself (--vary integrator.dt=V1,V2,...)");
   if (cl.command == "study" && cl.study.vary.empty() && cl.study.methods.empty())
     throw InputError({"", 0, "--vary"},
                      "a study needs at least one --vary KEY=V1,V2,... (e.g. --vary "

@@ -36,6 +36,7 @@ struct StudyArguments {
   std::vector<std::string> vary;                    // --vary KEY=V1,V2,..., in order
   std::vector<std::string> methods;                 // --methods NAME,NAME (presets; "all")
   std::vector<std::string> steps{"2", "1", "0.5"};  // --steps F1,F2: of each method's step
+  bool steps_given = false;
   std::vector<std::string> reference;  // --reference KEY=VALUE (none: the default reference)
   std::vector<std::string> targets;    // --target MEASURE=LIMIT, e.g. std=1%
   int ranks_per_case = 1;              // --ranks-per-case K

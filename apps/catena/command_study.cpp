@@ -21,6 +21,7 @@
 #include "catena/io/output_error.hpp"
 #include "catena/io/run_files.hpp"
 #include "catena/model/scene_identity.hpp"
+#include "catena/post/contact_statistics.hpp"
 #include "catena/study/case_measures.hpp"
 #include "catena/study/case_queue.hpp"
 #include "catena/study/case_record.hpp"
@@ -38,6 +39,7 @@ namespace fs = std::filesystem;
 struct StudyCase {
   study::StudyRow row;                 // name, role, method, setting (filled as it runs)
   std::vector<std::string> overrides;  // the case's own, after the study's --set ones
+  std::string scene;  // what it runs: a digest of the scene after every override (records)
 };
 
 std::string default_directory(const std::string& scene) {
@@ -99,6 +101,28 @@ StudyPlan plan_settings(MPI_Comm world, const CommandLine& cl, const fs::path& d
   return plan;
 }
 
+// Not collective (every rank the same). What would stop the comparison after every case has
+// run is refused before any runs: a probe id the scene does not have, contact forces sampled
+// too coarsely for the statistics' low-pass.
+void check_measurable(const CommandLine& cl, const StudyCase& c, const model::Model& m) {
+  for (long long id : cl.study.probes)
+    if (std::none_of(m.nodes.begin(), m.nodes.end(),
+                     [&](const model::Node& n) { return n.id == id; }))
+      throw InputError({cl.scene, 0, "--probe"},
+                       "no node with id " + std::to_string(id) + " in the scene" +
+                           (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
+                           "; catena check --ids lists a catenary's nodes");
+  const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * cl.study.cutoff_hz);
+  if (!m.contacts.empty() && m.output.interval > coarsest * (1.0 + 1e-9))
+    throw InputError({cl.scene, 0, "output.interval"},
+                     "output.interval = " + study::number_text(m.output.interval) + " s" +
+                         (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
+                         " samples the contact force too coarsely for the statistics' " +
+                         study::number_text(cl.study.cutoff_hz) +
+                         " Hz low-pass; accepted: at most " + study::number_text(coarsest) +
+                         " s (--set output.interval=...)");
+}
+
 // Collective over `world`. The cases: the reference first (the most expensive, so it does
 // not start last), its check, then the settings; every case's scene is loaded once here so
 // that a typo in a value stops the study before anything runs. The check is left out when
@@ -138,9 +162,11 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const S
     if (m.analysis != model::AnalysisType::dynamic)
       throw InputError({cl.scene, 0, "analysis.type"},
                        "the setting " + list_text(c.overrides) + " makes the analysis static");
+    check_measurable(cl, c, m);
     identities.push_back(model::scene_identity(m.source_text) + "duration " +
                          study::number_text(m.dynamic_options.duration));
   }
+  for (std::size_t i = 0; i < cases.size(); ++i) cases[i].scene = study::digest(identities[i]);
   if (cases.size() > 1 && cases[1].row.role == "reference_check")
     for (std::size_t i = 2; i < cases.size(); ++i)
       if (identities[i] == identities[1]) {
@@ -156,6 +182,7 @@ study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCas
                            const fs::path& cases_dir) {
   study::CaseRecord record;
   record.overrides = c.overrides;
+  record.scene = c.scene;
   CommandLine run = cl;
   run.command = "run";
   run.overrides = joined(joined(cl.overrides, c.overrides),
@@ -208,9 +235,27 @@ study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCas
   return record;
 }
 
-// Collective over `world`: the groups take cases from the queue until none is left.
-void run_cases(MPI_Comm world, const CommandLine& cl, const std::vector<StudyCase>& cases,
-               const fs::path& cases_dir) {
+// Collective over the group. Whether the case's record shows it done with these settings
+// (and its output is there, if it completed): a resumed study keeps it.
+bool done_before(const study::CaseGroups& groups, const StudyCase& c, const fs::path& cases_dir) {
+  int done = 0;
+  if (groups.leader()) {
+    const auto old = study::read_record(cases_dir / (c.row.name + ".result"));
+    done = old && old->overrides == c.overrides && old->scene == c.scene &&
+           (!old->completed || fs::exists(cases_dir / (c.row.name + ".h5")));
+  }
+  MPI_Bcast(&done, 1, MPI_INT, 0, groups.group());
+  return done != 0;
+}
+
+// Collective over `world`: the groups take cases from the queue until none is left, or until
+// a case is interrupted (SIGTERM, or the stop testing hook): then no group takes another
+// case, and the interruption is returned on every rank (signal 0: none). The errors of a
+// run are every rank's of its group (run_case records them); anything else thrown here
+// (a record that cannot be written, memory) is one rank's, and the ranks could not meet
+// again: it aborts the study.
+RunInterrupted run_cases(MPI_Comm world, const CommandLine& cl, const std::vector<StudyCase>& cases,
+                         const fs::path& cases_dir) {
   const study::CaseGroups groups(world, cl.study.ranks_per_case);
   study::CaseQueue queue(world);
   if (mpi_rank(world) == 0) {
@@ -219,41 +264,54 @@ void run_cases(MPI_Comm world, const CommandLine& cl, const std::vector<StudyCas
                 cl.study.ranks_per_case == 1 ? "" : "s", cases_dir.c_str());
     std::fflush(stdout);
   }
-  for (long k = queue.take(groups); k < static_cast<long>(cases.size()); k = queue.take(groups)) {
-    const StudyCase& c = cases[static_cast<std::size_t>(k)];
-    const fs::path record_path = cases_dir / (c.row.name + ".result");
-    const fs::path output = cases_dir / (c.row.name + ".h5");
-    int done = 0;
-    if (groups.leader()) {
-      const auto old = study::read_record(record_path);
-      done = old && old->overrides == c.overrides && (!old->completed || fs::exists(output));
+  RunInterrupted interrupted;
+  try {
+    for (long k = queue.take(groups); k < static_cast<long>(cases.size()); k = queue.take(groups)) {
+      const StudyCase& c = cases[static_cast<std::size_t>(k)];
+      const fs::path record_path = cases_dir / (c.row.name + ".result");
+      if (done_before(groups, c, cases_dir)) {
+        if (groups.leader())
+          std::printf("study: case %ld/%zu %s (%s): done before, kept\n", k + 1, cases.size(),
+                      c.row.name.c_str(), list_text(c.overrides).c_str());
+        std::fflush(stdout);
+        continue;
+      }
+      if (groups.leader()) {
+        std::printf("study: case %ld/%zu %s (%s) started on group %d\n", k + 1, cases.size(),
+                    c.row.name.c_str(), list_text(c.overrides).c_str(), groups.index());
+        std::fflush(stdout);
+        std::error_code ignored;
+        fs::remove(record_path, ignored);
+      }
+      study::CaseRecord record;
+      try {
+        record = run_case(groups.group(), cl, c, cases_dir);
+      } catch (const RunInterrupted& stop) {
+        interrupted = stop;  // no record: a study run again continues it from its checkpoint
+        queue.stop(groups);
+        continue;
+      }
+      if (groups.leader()) {
+        study::write_record(record_path, record);
+        std::printf("study: case %ld/%zu %s %s in %.1f s%s%s\n", k + 1, cases.size(),
+                    c.row.name.c_str(), record.completed ? "completed" : "failed",
+                    record.wall_seconds, record.completed ? "" : ": ",
+                    record.completed ? "" : record.message.c_str());
+        std::fflush(stdout);
+      }
     }
-    MPI_Bcast(&done, 1, MPI_INT, 0, groups.group());
-    if (done) {
-      if (groups.leader())
-        std::printf("study: case %ld/%zu %s (%s): done before, kept\n", k + 1, cases.size(),
-                    c.row.name.c_str(), list_text(c.overrides).c_str());
-      std::fflush(stdout);
-      continue;
-    }
-    if (groups.leader()) {
-      std::printf("study: case %ld/%zu %s (%s) started on group %d\n", k + 1, cases.size(),
-                  c.row.name.c_str(), list_text(c.overrides).c_str(), groups.index());
-      std::fflush(stdout);
-      std::error_code ignored;
-      fs::remove(record_path, ignored);
-    }
-    const study::CaseRecord record = run_case(groups.group(), cl, c, cases_dir);
-    if (groups.leader()) {
-      study::write_record(record_path, record);
-      std::printf("study: case %ld/%zu %s %s in %.1f s%s%s\n", k + 1, cases.size(),
-                  c.row.name.c_str(), record.completed ? "completed" : "failed",
-                  record.wall_seconds, record.completed ? "" : ": ",
-                  record.completed ? "" : record.message.c_str());
-      std::fflush(stdout);
-    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "catena: study: %s; stopping every rank\n", e.what());
+    std::fflush(stderr);
+    MPI_Abort(world, 1);
   }
   MPI_Barrier(world);
+  // The same interruption on every rank: the signal and the latest time reached.
+  int signal = interrupted.signal;
+  double time = interrupted.time;
+  MPI_Allreduce(MPI_IN_PLACE, &signal, 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(MPI_IN_PLACE, &time, 1, MPI_DOUBLE, MPI_MAX, world);
+  return RunInterrupted{signal, time};
 }
 
 // Rank 0 of the study. Reads every case's record and output, measures it against the
@@ -314,7 +372,8 @@ void command_study(MPI_Comm world, const CommandLine& cl) {
   }
   broadcast_string(world, why);
   if (!why.empty()) throw InputError({cases_dir.string(), 0, "-o"}, why);
-  run_cases(world, cl, cases, cases_dir);
+  const RunInterrupted stop = run_cases(world, cl, cases, cases_dir);
+  if (stop.signal != 0) throw stop;  // the queue and the groups freed on every rank
   if (mpi_rank(world) == 0) report(cl, cases, directory, reference_description);
 }
 

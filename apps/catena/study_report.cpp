@@ -1,5 +1,8 @@
 #include "study_report.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -42,8 +45,8 @@ void print_table(const std::vector<study::StudyRow>& rows, const study::Referenc
     }
     const io::RunWork& w = r.work;
     std::printf("%-24s %-24s %-24s %7lld %9.2f %8.3f %7lld %6lld", r.name.c_str(), r.method.c_str(),
-                r.setting.c_str(), static_cast<long long>(w.steps_accepted), w.stepping_seconds,
-                study::stepping_per_simulated_second(w),
+                r.setting.c_str(), static_cast<long long>(w.steps_accepted),
+                study::stepping_seconds(w), study::stepping_per_simulated_second(w),
                 static_cast<long long>(w.newton_iterations),
                 static_cast<long long>(w.factorizations));
     const study::CaseErrors& e = r.errors;
@@ -104,20 +107,34 @@ void print_recommendation(const CommandLine& cl, const std::vector<study::StudyR
   std::printf(
       "\nrecommendation: %s %s — the cheapest setting within %s: %.2f s of time stepping "
       "(%.3f s per simulated second)\n",
-      r.method.c_str(), r.setting.c_str(), wanted.c_str(), r.work.stepping_seconds,
+      r.method.c_str(), r.setting.c_str(), wanted.c_str(), study::stepping_seconds(r.work),
       study::stepping_per_simulated_second(r.work));
 }
 
-// The work–precision plot by Debian's python3 and matplotlib (a failure costs the picture,
-// not the study: said, not thrown).
+// The work–precision plot by Debian's python3 and matplotlib, run without a shell (any path
+// is one argument). A failure costs the picture, not the study: said, not thrown.
 void plot(const fs::path& csv, const fs::path& png, const char* measure) {
+  const std::string python = "/usr/bin/python3";
   const std::string script = std::string(CATENA_SOURCE_DIR) + "/apps/plot_study.py";
-  const std::string command =
-      "/usr/bin/python3 '" + script + "' '" + csv.string() + "' '" + png.string() + "' " + measure;
-  if (access(script.c_str(), R_OK) == 0 && std::system((command + " 2>/dev/null").c_str()) == 0)
+  std::vector<std::string> args = {python, script, csv.string(), png.string(), measure};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  int status = -1;
+  if (access(script.c_str(), R_OK) == 0 &&
+      posix_spawn(&pid, python.c_str(), &quiet, nullptr, argv.data(), environ) == 0)
+    waitpid(pid, &status, 0);
+  posix_spawn_file_actions_destroy(&quiet);
+  if (status == 0)
     std::printf("plot: %s\n", png.c_str());
   else
-    std::printf("plot: not drawn (needs /usr/bin/python3 with matplotlib): %s\n", command.c_str());
+    std::printf("plot: not drawn (needs %s with matplotlib): %s %s %s %s %s\n", python.c_str(),
+                python.c_str(), script.c_str(), csv.c_str(), png.c_str(), measure);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "catena/core/error.hpp"
 #include "hdf5_error.hpp"
@@ -92,7 +93,38 @@ NodeTrack read_node_track(const std::string& path, std::int64_t node_id) {
   track.time = r.doubles(layout::time.path, {n_samples});
   const hsize_t row = static_cast<hsize_t>(at - ids.begin());
   track.positions = r.block(layout::positions.path, {0, row, 0}, {n_samples, 1, 3});
+  const std::vector<double> x = r.block(layout::node_positions.path, {row, 0}, {1, 3});
+  track.reference_position = {x[0], x[1], x[2]};
   return track;
+}
+
+std::int64_t node_at(const std::string& path, const std::array<double, 3>& position,
+                     double tolerance) {
+  const Hdf5ErrorPrintingSuppressed quiet;
+  const TimeSeriesFile r = open_complete(path);
+  const auto [n_samples, n_nodes] = positions_shape(r);
+  const std::vector<std::int64_t> ids = r.integers(layout::node_ids.path, {n_nodes});
+  const std::vector<double> x = r.doubles(layout::node_positions.path, {n_nodes, 3});
+  double nearest = HUGE_VAL;
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    double d2 = 0.0;
+    for (std::size_t c = 0; c < 3; ++c)
+      d2 += (x[3 * i + c] - position[c]) * (x[3 * i + c] - position[c]);
+    if (d2 < nearest) {
+      nearest = d2;
+      found = i;
+    }
+  }
+  if (ids.empty() || std::sqrt(nearest) > tolerance) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "no node at the probe's point (%.9g, %.9g, %.9g) m (the nearest is %.3g m "
+                  "away): a mesh that does not hold the reference's probe node",
+                  position[0], position[1], position[2], std::sqrt(nearest));
+    throw InputError({path, 0, "--probe"}, text);
+  }
+  return ids[found];
 }
 
 std::int64_t most_displaced_node(const std::string& path) {

@@ -9,6 +9,9 @@
 namespace catena::study {
 namespace {
 
+// m: how near a run's node must be to the reference's probe point to be the same point.
+constexpr double probe_tolerance = 1e-6;
+
 // Keeps in `worst` the value of larger magnitude (a NaN `worst` takes any value).
 void keep_worst(double& worst, double value) {
   if (!std::isfinite(worst) || std::abs(value) > std::abs(worst)) worst = value;
@@ -98,7 +101,9 @@ CaseErrors ReferenceRun::errors_of(const std::string& path) const {
     }
   }
   for (const io::NodeTrack& ref : tracks_) {
-    const io::NodeTrack run = io::read_node_track(path, ref.node_id);
+    // By its point, not its id: a run on another mesh numbers its nodes otherwise.
+    const io::NodeTrack run =
+        io::read_node_track(path, io::node_at(path, ref.reference_position, probe_tolerance));
     std::vector<double> on_reference_times(ref.positions.size());
     for (int c = 0; c < 3; ++c) {
       std::vector<double> coordinate;

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +25,17 @@ std::string one_line(std::string text) {
 
 }  // namespace
 
+std::string digest(const std::string& text) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a, 64 bits
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 0x100000001b3ULL;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
 // One "name: value" per line after the header; an override per `override:` line, in order.
 std::string record_text(const CaseRecord& record) {
   std::string out = std::string(header) + "\n";
@@ -30,6 +43,7 @@ std::string record_text(const CaseRecord& record) {
   out += "exit_code: " + std::to_string(record.exit_code) + "\n";
   out += "wall_seconds: " + number_text(record.wall_seconds) + "\n";
   out += "message: " + one_line(record.message) + "\n";
+  out += "scene: " + record.scene + "\n";
   for (const std::string& o : record.overrides) out += "override: " + one_line(o) + "\n";
   return out;
 }
@@ -58,6 +72,8 @@ std::optional<CaseRecord> parse_record(const std::string& text) {
       if (ec != std::errc() || p != value.data() + value.size()) return std::nullopt;
     } else if (name == "message") {
       r.message = value;
+    } else if (name == "scene") {
+      r.scene = value;
     } else if (name == "override") {
       r.overrides.push_back(value);
     } else {

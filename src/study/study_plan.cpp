@@ -190,11 +190,13 @@ std::vector<Setting> expand_methods(const std::vector<std::string>& names,
       throw InputError({"", 0, "--methods"},
                        "unknown method '" + name + "'; accepted: " + accepted + "all");
     }
+    if (std::find(wanted.begin(), wanted.end(), name) != wanted.end())
+      throw InputError({"", 0, "--methods"}, "the method '" + name + "' is given twice");
     wanted.push_back(name);
   }
   for (const Variation& v : variations)
     if (v.key == "integrator.dt")
-      throw InputError({"", 0, "--steps"},
+      throw InputError({"", 0, "--vary"},
                        "--methods runs each method at its own steps (--steps, multiples of "
                        "its base step): do not also --vary integrator.dt");
   std::vector<double> factors;
@@ -204,6 +206,8 @@ std::vector<Setting> expand_methods(const std::vector<std::string>& names,
       throw InputError({"", 0, "--steps"}, "'" + text +
                                                "': a step factor must be a positive number "
                                                "(e.g. --steps 2,1,0.5)");
+    if (std::find(factors.begin(), factors.end(), *f) != factors.end())
+      throw InputError({"", 0, "--steps"}, "the step factor '" + text + "' is given twice");
     factors.push_back(*f);
   }
   std::vector<Setting> settings;

@@ -71,6 +71,11 @@ double stepping_per_simulated_second(const io::RunWork& work) {
   return simulated > 0.0 ? work.stepping_seconds / simulated : 0.0;
 }
 
+double stepping_seconds(const io::RunWork& work) {
+  return work.t_started > 0.0 ? stepping_per_simulated_second(work) * work.t_reached
+                              : work.stepping_seconds;
+}
+
 std::string csv_text(const std::vector<StudyRow>& rows) {
   std::string out =
       "case,role,method,setting,status,steps,rejected_steps,wall_seconds,"
@@ -90,7 +95,7 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
     cell(ok ? std::string("completed") : "failed (exit " + std::to_string(r.exit_code) + ")");
     count(w.steps_accepted);
     count(w.steps_rejected);
-    cell(ok ? number(w.stepping_seconds) : std::string());
+    cell(ok ? number(stepping_seconds(w)) : std::string());
     cell(ok ? number(stepping_per_simulated_second(w)) : std::string());
     count(w.newton_iterations);
     count(w.factorizations);
@@ -144,7 +149,7 @@ std::optional<std::size_t> recommend(const std::vector<StudyRow>& rows,
       const double v = measure_value(r.errors, t.measure);
       return std::isfinite(v) && std::abs(v) <= t.limit;
     });
-    if (meets && (!best || r.work.stepping_seconds < rows[*best].work.stepping_seconds)) best = i;
+    if (meets && (!best || stepping_seconds(r.work) < stepping_seconds(rows[*best].work))) best = i;
   }
   return best;
 }

@@ -10,7 +10,11 @@
 #      143 and, run again, keeps the finished cases and continues the stopped one from its
 #      checkpoint;
 #   5. the same after a crash (CATENA_KILL_AFTER_STEPS: SIGKILL in the last case, no record
-#      written for it).
+#      written for it);
+#   6. a stop in one of two groups stops the other (no hang), and the study resumes;
+#   7. another --set runs every case again (the scene changed), the same keeps them;
+#   8. a varied mesh: the probe is found by its point in every mesh, and the errors fall;
+#   9. a probe id the scene does not have is refused before anything runs.
 # Usage: study.sh CATENA SCENE WORK_DIR CHECK_SCRIPT
 set -u
 app=$1 scene=$2 work=$3 check=$4
@@ -66,4 +70,42 @@ code=$?
 kept=$(grep -c "done before, kept" "$work/rekill.out")
 started=$(grep -c " started on group" "$work/rekill.out")
 [ "$kept" -eq 4 ] && [ "$started" -eq 1 ] || fail "after kill: $kept kept, $started run (4, 1 expected)"
+
+# 6. Two groups: the group whose case stops tells the other to take no more; both exit.
+CATENA_STOP_AFTER_STEPS=150 timeout 120 $mpirun -n 2 "$app" "${stop[@]/stopped/two}" \
+  > "$work/two.out" 2>&1
+code=$?
+[ "$code" -ne 0 ] && [ "$code" -ne 124 ] || { cat "$work/two.out"; fail "two groups: exit $code"; }
+timeout 120 $mpirun -n 2 "$app" "${stop[@]/stopped/two}" > "$work/two_again.out" 2>&1 \
+  || { cat "$work/two_again.out"; fail "two groups: resume failed"; }
+[ "$(grep -c ',completed,' "$work/two/study.csv")" -eq 5 ] || fail "two groups: not all completed"
+
+# 7. The study's --set is part of every case's scene.
+"$app" "${stop[@]}" > "$work/same.out" 2>&1 || fail "the same study again failed"
+[ "$(grep -c ' started on group' "$work/same.out")" -eq 0 ] || fail "the same study ran cases"
+"$app" "${stop[@]}" --set output.interval=0.0025 > "$work/changed.out" 2>&1 \
+  || { cat "$work/changed.out"; fail "the changed study failed"; }
+[ "$(grep -c ' started on group' "$work/changed.out")" -eq 5 ] || fail "a changed --set kept cases"
+
+# 8. Elements 10 and 20 against 80 at the same step: the spatial error alone, each probe
+#    found by its point (ids differ between the meshes); cubic ANCF elements: it falls about
+#    ten times when the elements are halved (measured 12.2).
+"$app" study "$scene" --set analysis.duration=0.5 --vary 'lines[0].elements=10,20' \
+  --reference 'lines[0].elements=80' -o "$work/mesh" > "$work/mesh.out" 2>&1 \
+  || { cat "$work/mesh.out"; fail "mesh study failed"; }
+/usr/bin/python3 - "$work/mesh/study.csv" <<'PY' || fail "mesh study: errors"
+import csv, sys
+rows = {r["setting"]: r for r in csv.DictReader(open(sys.argv[1]))}
+coarse = float(rows["lines[0].elements=10"]["probe_rms_m"])
+fine = float(rows["lines[0].elements=20"]["probe_rms_m"])
+print("mesh study: probe RMS", coarse, fine, "ratio", coarse / fine)
+sys.exit(0 if 0 < fine and coarse / fine > 6 else 1)
+PY
+
+# 9. Refused before any case runs.
+"$app" study "$scene" --vary integrator.dt=0.04,0.02 --probe 999 -o "$work/bad_probe" \
+  > "$work/bad_probe.out" 2>&1
+code=$?
+[ "$code" -eq 2 ] && grep -q "no node with id 999" "$work/bad_probe.out" \
+  && [ ! -e "$work/bad_probe/cases" ] || { cat "$work/bad_probe.out"; fail "bad probe: exit $code"; }
 echo "study.sh: passed"

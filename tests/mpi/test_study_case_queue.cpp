@@ -63,6 +63,17 @@ TEST(CaseQueue, AllRanksInOneGroup) {
   }
 }
 
+TEST(CaseQueue, AfterAStopNoGroupTakesACase) {
+  const CaseGroups groups(MPI_COMM_WORLD, 1);
+  CaseQueue queue(MPI_COMM_WORLD);
+  EXPECT_LT(queue.take(groups), CaseQueue::stopped);
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (groups.index() == groups.count() - 1) queue.stop(groups);  // the last group stops
+  MPI_Barrier(MPI_COMM_WORLD);  // (the stop is done: its epoch closed before the barrier)
+  EXPECT_EQ(queue.take(groups), CaseQueue::stopped);
+  EXPECT_EQ(queue.take(groups), CaseQueue::stopped);
+}
+
 TEST(CaseQueue, GroupsMustDivideTheRanks) {
   const int size = mpi_size(MPI_COMM_WORLD);
   EXPECT_THROW(CaseGroups(MPI_COMM_WORLD, 0), InputError);

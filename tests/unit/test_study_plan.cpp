@@ -151,6 +151,7 @@ TEST(CaseRecord, RoundTripsAndRefusesOtherText) {
   r.exit_code = 3;
   r.message = "Newton diverged\nat node 7";
   r.wall_seconds = 12.25;
+  r.scene = digest("integrator: {dt: 0.01}");
   const auto back = parse_record(record_text(r));
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(back->overrides, r.overrides);
@@ -158,6 +159,9 @@ TEST(CaseRecord, RoundTripsAndRefusesOtherText) {
   EXPECT_EQ(back->exit_code, 3);
   EXPECT_EQ(back->message, "Newton diverged at node 7");
   EXPECT_EQ(back->wall_seconds, 12.25);
+  EXPECT_EQ(back->scene, r.scene);
+  EXPECT_EQ(digest(""), "cbf29ce484222325");  // FNV-1a's offset basis: the same everywhere
+  EXPECT_NE(digest("integrator: {dt: 0.01}"), digest("integrator: {dt: 0.02}"));
   EXPECT_FALSE(parse_record("").has_value());
   EXPECT_FALSE(parse_record("catena-study-case 1\nstatus: maybe\n").has_value());
   EXPECT_FALSE(parse_record("catena-study-case 1\nexit_code: 0\n").has_value());  // no status

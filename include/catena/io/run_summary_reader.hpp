@@ -2,6 +2,7 @@
 // What `catena study` reads of a completed dynamic run besides its contact forces
 // (contact_run_reader.hpp): the work it did (root attributes, docs/output.md "Time
 // series") and the trajectory of a probe node. Serial HDF5, for one rank.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -34,15 +35,23 @@ RunWork read_run_work(const std::string& path);
 
 // One node's positions at every sample.
 struct NodeTrack {
-  std::int64_t node_id = 0;       // the scene's id
-  std::vector<double> time;       // s, /time
-  std::vector<double> positions;  // m, n_samples × 3, row-major
+  std::int64_t node_id = 0;                    // the scene's id
+  std::array<double, 3> reference_position{};  // m, its mesh (reference) position
+  std::vector<double> time;                    // s, /time
+  std::vector<double> positions;               // m, n_samples × 3, row-major
 };
 
 // Not collective. The trajectory of the node with scene id `node_id`. Throws
 // catena::InputError naming the file when it is not a complete dynamic output or has no
 // such node (key "--probe", listing a few of the ids it has).
 NodeTrack read_node_track(const std::string& path, std::int64_t node_id);
+
+// Not collective. The scene id of the node whose reference position is within `tolerance`
+// of `position` (the nearest): how a probe is found again in a run on another mesh, whose
+// ids are numbered otherwise. Throws catena::InputError naming the file (key "--probe")
+// when no node is that near (a mesh that does not nest the probe's point).
+std::int64_t node_at(const std::string& path, const std::array<double, 3>& position,
+                     double tolerance);
 
 // Not collective. The scene id of the node that moves farthest from its first sampled
 // position over the run (the first such node in file order on a tie): the study's probe

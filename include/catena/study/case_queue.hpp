@@ -45,12 +45,17 @@ class CaseQueue {
 
   // Collective over groups.group(): the group's next case number (the leader takes it from
   // the queue; every rank of the group gets the same). Numbers grow without bound: the
-  // caller stops at its number of cases.
+  // caller stops at its number of cases. After stop(), `stopped` for every group.
   long take(const CaseGroups& groups);
+  static constexpr long stopped = 0x7fffffffL;
+
+  // Not collective (the group's leader acts): no group takes another case (a case was
+  // interrupted: the study stops as a run does after SIGTERM).
+  void stop(const CaseGroups& groups);
 
  private:
   MPI_Win window_ = MPI_WIN_NULL;
-  long* counter_ = nullptr;  // on world rank 0
+  long* counter_ = nullptr;  // on world rank 0: the next case number, the stop flag
 };
 
 }  // namespace catena::study

@@ -51,6 +51,11 @@ struct StudyRow {
 // Not collective. The wall time of the time stepping per simulated second (0 if none ran).
 double stepping_per_simulated_second(const io::RunWork& work);
 
+// Not collective. The wall time of the whole run's time stepping: a run continued from a
+// checkpoint records only the part after its restart, which is scaled to the whole
+// simulated time at its rate (what study.csv's wall_seconds and the recommendation use).
+double stepping_seconds(const io::RunWork& work);
+
 // Not collective. study.csv's text: a header line, then one line per row.
 std::string csv_text(const std::vector<StudyRow>& rows);
 
