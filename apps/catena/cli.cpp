@@ -8,10 +8,10 @@
 namespace catena::app {
 
 namespace {
-// run, check, stats, elasticity, modes or study.
+// run, check, stats, elasticity, modes, study or sweep.
 bool is_command(const std::string& name) {
   return name == "run" || name == "check" || name == "stats" || name == "elasticity" ||
-         name == "modes" || name == "study";
+         name == "modes" || name == "study" || name == "sweep";
 }
 
 bool is_scene_path(const std::string& token) {
@@ -147,6 +147,20 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
   return true;
 }
 
+// The options of `catena sweep` at args[i] (the study's --vary, --ranks-per-case, --cutoff,
+// -o; its measuring options refused); returns false if args[i] is none of them.
+bool parse_sweep_option(const std::vector<std::string>& args, size_t& i, CommandLine& cl) {
+  const std::string& a = args[i];
+  for (const char* study_only : {"--methods", "--steps", "--reference", "--target", "--probe"})
+    if (a == study_only)
+      throw InputError({"", 0, a}, "'" + a +
+                                       "' is an option of study, not of sweep (a sweep "
+                                       "tabulates each run's statistics; a study measures "
+                                       "errors against a reference); accepted: --vary, "
+                                       "--ranks-per-case, --cutoff, --set, -o DIR");
+  return parse_study_option(args, i, cl);
+}
+
 // `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series S]`; args[i]
 // follows "stats".
 void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
@@ -224,7 +238,7 @@ CommandLine parse_command_line(int argc, char** argv) {
       if (!is_command(cl.help_topic))
         throw InputError({"", 0, "help"}, "no command '" + args[1] +
                                               "'; accepted: run, check, stats, elasticity, "
-                                              "modes, study");
+                                              "modes, study, sweep");
     }
     return cl;
   }
@@ -240,7 +254,7 @@ CommandLine parse_command_line(int argc, char** argv) {
   if (!is_command(cl.command))
     throw InputError({"", 0, "command"},
                      "unknown command '" + cl.command +
-                         "'; accepted: run, check, stats, elasticity, modes, study, --help");
+                         "'; accepted: run, check, stats, elasticity, modes, study, sweep, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {
@@ -253,6 +267,8 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.command = "help";
       return cl;
     } else if (cl.command == "elasticity" && parse_elasticity_option(args, i, cl.elasticity)) {
+      continue;
+    } else if (cl.command == "sweep" && parse_sweep_option(args, i, cl)) {
       continue;
     } else if (cl.command == "study" && parse_study_option(args, i, cl)) {
       continue;
@@ -325,6 +341,10 @@ CommandLine parse_command_line(int argc, char** argv) {
     throw InputError({"", 0, "--steps"},
                      "--steps sets the steps of the --methods presets; without --methods, "
                      "vary the step itself (--vary integrator.dt=V1,V2,...)");
+  if (cl.command == "sweep" && cl.study.vary.empty())
+    throw InputError({"", 0, "--vary"},
+                     "a sweep needs at least one --vary KEY=V1,V2,... (e.g. --vary "
+                     "pantographs[0].speed_kmh=200,250,300); docs/study.md");
   if (cl.command == "study" && cl.study.vary.empty() && cl.study.methods.empty())
     throw InputError({"", 0, "--vary"},
                      "a study needs at least one --vary KEY=V1,V2,... (e.g. --vary "

@@ -46,9 +46,9 @@ struct StudyArguments {
 };
 
 struct CommandLine {
-  std::string command;     // run | check | stats | elasticity | modes | study | help | version
-  std::string help_topic;  // help: the command asked about ("" = all)
-  std::string scene;       // scene file path
+  std::string command;  // run | check | stats | elasticity | modes | study | sweep | help | version
+  std::string help_topic;              // help: the command asked about ("" = all)
+  std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
   std::optional<std::string> output;   // -o FILE (same as --set output.file=FILE)
   bool restart = false;                // --restart: continue from OUT.h5.chk
@@ -65,7 +65,7 @@ struct CommandLine {
   StatsArguments stats;                    // command "stats" only
   ElasticityArguments elasticity;          // command "elasticity" only
   ModesArguments modes;                    // command "modes" only
-  StudyArguments study;                    // command "study" only
+  StudyArguments study;                    // commands "study" and "sweep"
 };
 
 // Throws catena::InputError for malformed arguments.

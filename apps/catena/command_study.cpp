@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "case_console.hpp"
+#include "case_runner.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/io/output_error.hpp"
@@ -42,21 +42,10 @@ struct StudyCase {
   std::string scene;  // what it runs: a digest of the scene after every override (records)
 };
 
-std::string default_directory(const std::string& scene) {
-  return fs::path(scene).stem().string() + "_study";
-}
-
-std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-// The overrides for people: the keys a varied integrator type removes ("key=~") are left out.
-std::string list_text(const std::vector<std::string>& overrides) {
-  std::string out;
-  for (const std::string& o : overrides)
-    if (o.size() < 2 || o.compare(o.size() - 2, 2, "=~") != 0) out += (out.empty() ? "" : " ") + o;
-  return out.empty() ? "(the scene as it is)" : out;
+std::vector<QueuedCase> queued(const std::vector<StudyCase>& cases) {
+  std::vector<QueuedCase> out;
+  for (const StudyCase& c : cases) out.push_back({c.row.name, c.overrides, c.scene});
+  return out;
 }
 
 // The settings and the reference of a study, before they become cases.
@@ -156,16 +145,9 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const S
     std::printf("study: checking the scene under %zu settings\n", cases.size());
     std::fflush(stdout);
   }
-  std::vector<std::string> identities;
-  for (const StudyCase& c : cases) {
-    const model::Model m = load_scene(world, cl.scene, joined(cl.overrides, c.overrides));
-    if (m.analysis != model::AnalysisType::dynamic)
-      throw InputError({cl.scene, 0, "analysis.type"},
-                       "the setting " + list_text(c.overrides) + " makes the analysis static");
-    check_measurable(cl, c, m);
-    identities.push_back(model::scene_identity(m.source_text) + "duration " +
-                         study::number_text(m.dynamic_options.duration));
-  }
+  const std::vector<std::string> identities = check_scenes(
+      world, cl, queued(cases),
+      [&](std::size_t i, const model::Model& m) { check_measurable(cl, cases[i], m); });
   for (std::size_t i = 0; i < cases.size(); ++i) cases[i].scene = study::digest(identities[i]);
   if (cases.size() > 1 && cases[1].row.role == "reference_check")
     for (std::size_t i = 2; i < cases.size(); ++i)
@@ -175,143 +157,6 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const S
         break;
       }
   return cases;
-}
-
-// Collective over the group. Runs one case as `catena run` would; returns its record.
-study::CaseRecord run_case(MPI_Comm group, const CommandLine& cl, const StudyCase& c,
-                           const fs::path& cases_dir) {
-  study::CaseRecord record;
-  record.overrides = c.overrides;
-  record.scene = c.scene;
-  CommandLine run = cl;
-  run.command = "run";
-  run.overrides = joined(joined(cl.overrides, c.overrides),
-                         {"output.file=" + (cases_dir / (c.row.name + ".h5")).string()});
-  run.progress_seconds = 30.0;
-  // A case stopped midway (SIGTERM, the study killed after a checkpoint) continues from its
-  // checkpoint; one the run refuses (another scene's: the setting changed) is run afresh.
-  const std::string output = (cases_dir / (c.row.name + ".h5")).string();
-  int resume = mpi_rank(group) == 0 && fs::exists(io::checkpoint_path(output));
-  MPI_Bcast(&resume, 1, MPI_INT, 0, group);
-  const double start = MPI_Wtime();
-  {
-    const CaseConsole console(cases_dir / (c.row.name + ".log"), c.row.name);
-    try {
-      if (resume) {
-        run.restart = true;
-        try {
-          command_run(group, run);
-        } catch (const InputError& e) {
-          if (mpi_rank(group) == 0)
-            std::printf("study: not continued from %s (%s): running from the start\n",
-                        io::checkpoint_path(output).c_str(), e.what());
-          run.restart = false;
-          command_run(group, run);
-        }
-      } else {
-        command_run(group, run);
-      }
-      record.completed = true;
-    } catch (const InputError& e) {
-      record.exit_code = 2;
-      record.message = e.what();
-    } catch (const NumericalError& e) {
-      record.exit_code = 3;
-      record.message = e.what();
-    } catch (const OutputError& e) {
-      record.exit_code = 4;
-      record.message = e.what();
-    }
-    if (!record.completed && mpi_rank(group) == 0)
-      std::fprintf(stderr, "catena: study case %s stopped: %s\n", c.row.name.c_str(),
-                   record.message.c_str());
-  }
-  record.wall_seconds = MPI_Wtime() - start;
-  // A completed case is not extended: its checkpoint (the size of the state) is not kept.
-  if (record.completed && mpi_rank(group) == 0) {
-    std::error_code ignored;
-    fs::remove(io::checkpoint_path(output), ignored);
-  }
-  return record;
-}
-
-// Collective over the group. Whether the case's record shows it done with these settings
-// (and its output is there, if it completed): a resumed study keeps it.
-bool done_before(const study::CaseGroups& groups, const StudyCase& c, const fs::path& cases_dir) {
-  int done = 0;
-  if (groups.leader()) {
-    const auto old = study::read_record(cases_dir / (c.row.name + ".result"));
-    done = old && old->overrides == c.overrides && old->scene == c.scene &&
-           (!old->completed || fs::exists(cases_dir / (c.row.name + ".h5")));
-  }
-  MPI_Bcast(&done, 1, MPI_INT, 0, groups.group());
-  return done != 0;
-}
-
-// Collective over `world`: the groups take cases from the queue until none is left, or until
-// a case is interrupted (SIGTERM, or the stop testing hook): then no group takes another
-// case, and the interruption is returned on every rank (signal 0: none). The errors of a
-// run are every rank's of its group (run_case records them); anything else thrown here
-// (a record that cannot be written, memory) is one rank's, and the ranks could not meet
-// again: it aborts the study.
-RunInterrupted run_cases(MPI_Comm world, const CommandLine& cl, const std::vector<StudyCase>& cases,
-                         const fs::path& cases_dir) {
-  const study::CaseGroups groups(world, cl.study.ranks_per_case);
-  study::CaseQueue queue(world);
-  if (mpi_rank(world) == 0) {
-    std::printf("study: %zu cases on %d group%s of %d rank%s; logs in %s\n", cases.size(),
-                groups.count(), groups.count() == 1 ? "" : "s", cl.study.ranks_per_case,
-                cl.study.ranks_per_case == 1 ? "" : "s", cases_dir.c_str());
-    std::fflush(stdout);
-  }
-  RunInterrupted interrupted;
-  try {
-    for (long k = queue.take(groups); k < static_cast<long>(cases.size()); k = queue.take(groups)) {
-      const StudyCase& c = cases[static_cast<std::size_t>(k)];
-      const fs::path record_path = cases_dir / (c.row.name + ".result");
-      if (done_before(groups, c, cases_dir)) {
-        if (groups.leader())
-          std::printf("study: case %ld/%zu %s (%s): done before, kept\n", k + 1, cases.size(),
-                      c.row.name.c_str(), list_text(c.overrides).c_str());
-        std::fflush(stdout);
-        continue;
-      }
-      if (groups.leader()) {
-        std::printf("study: case %ld/%zu %s (%s) started on group %d\n", k + 1, cases.size(),
-                    c.row.name.c_str(), list_text(c.overrides).c_str(), groups.index());
-        std::fflush(stdout);
-        std::error_code ignored;
-        fs::remove(record_path, ignored);
-      }
-      study::CaseRecord record;
-      try {
-        record = run_case(groups.group(), cl, c, cases_dir);
-      } catch (const RunInterrupted& stop) {
-        interrupted = stop;  // no record: a study run again continues it from its checkpoint
-        queue.stop(groups);
-        continue;
-      }
-      if (groups.leader()) {
-        study::write_record(record_path, record);
-        std::printf("study: case %ld/%zu %s %s in %.1f s%s%s\n", k + 1, cases.size(),
-                    c.row.name.c_str(), record.completed ? "completed" : "failed",
-                    record.wall_seconds, record.completed ? "" : ": ",
-                    record.completed ? "" : record.message.c_str());
-        std::fflush(stdout);
-      }
-    }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "catena: study: %s; stopping every rank\n", e.what());
-    std::fflush(stderr);
-    MPI_Abort(world, 1);
-  }
-  MPI_Barrier(world);
-  // The same interruption on every rank: the signal and the latest time reached.
-  int signal = interrupted.signal;
-  double time = interrupted.time;
-  MPI_Allreduce(MPI_IN_PLACE, &signal, 1, MPI_INT, MPI_MAX, world);
-  MPI_Allreduce(MPI_IN_PLACE, &time, 1, MPI_DOUBLE, MPI_MAX, world);
-  return RunInterrupted{signal, time};
 }
 
 // Rank 0 of the study. Reads every case's record and output, measures it against the
@@ -354,25 +199,19 @@ void report(const CommandLine& cl, std::vector<StudyCase>& cases, const fs::path
 }  // namespace
 
 void command_study(MPI_Comm world, const CommandLine& cl) {
-  const fs::path directory = cl.study.directory.empty() ? fs::path(default_directory(cl.scene))
-                                                        : fs::path(cl.study.directory);
+  const fs::path directory = command_directory(cl, "_study");
   const fs::path cases_dir = directory / "cases";
   for (const std::string& t : cl.study.targets) study::parse_target(t);  // bad ones stop here
   study::check_ranks_per_case(world, cl.study.ranks_per_case);
   const StudyPlan plan = plan_settings(world, cl, directory);
   const std::string& reference_description = plan.reference.description;
   std::vector<StudyCase> cases = plan_cases(world, cl, plan);
-  std::string why;
+  create_cases_directory(world, cases_dir);
   if (mpi_rank(world) == 0) {
-    std::error_code ec;
-    fs::create_directories(cases_dir, ec);
-    if (ec) why = "cannot create " + cases_dir.string() + ": " + ec.message();
     std::printf("study: %s; reference: %s\n", cl.scene.c_str(), reference_description.c_str());
     std::fflush(stdout);
   }
-  broadcast_string(world, why);
-  if (!why.empty()) throw InputError({cases_dir.string(), 0, "-o"}, why);
-  const RunInterrupted stop = run_cases(world, cl, cases, cases_dir);
+  const RunInterrupted stop = run_cases(world, cl, queued(cases), cases_dir);
   if (stop.signal != 0) throw stop;  // the queue and the groups freed on every rank
   if (mpi_rank(world) == 0) report(cl, cases, directory, reference_description);
 }

@@ -22,6 +22,9 @@ void command_modes(MPI_Comm comm, const CommandLine& cl);
 // Collective; the groups of --ranks-per-case ranks run cases, rank 0 reports. `catena
 // study`: a scene under several settings against a reference (command_study.cpp).
 void command_study(MPI_Comm comm, const CommandLine& cl);
+// Collective; as command_study. `catena sweep`: a pantograph scene under several settings,
+// each run's EN 50318 statistics tabulated (command_sweep.cpp).
+void command_sweep(MPI_Comm comm, const CommandLine& cl);
 // Collective. The dynamic analysis of command_run.
 void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
 

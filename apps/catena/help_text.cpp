@@ -141,6 +141,24 @@ const CommandHelp* commands() {
                         the same command again to resume: finished cases are kept
 )") + kSetOption,
        true},
+      {"sweep",
+       R"(  catena sweep SCENE.yaml --vary KEY=V1,V2,... [--vary ...] [--ranks-per-case K]
+               [--cutoff HZ] [--set KEY=VALUE ...] [-o DIR] [PETSc options]
+)",
+       R"(  sweep   run a pantograph scene under several settings (speeds, static forces, ...)
+          and tabulate each run's EN 50318 statistics: DIR/sweep.csv, DIR/sweep.png
+          (docs/study.md, "Sweeps")
+)",
+       std::string(R"(Options of sweep:
+  --vary KEY=V1,V2,...  a scene key and its values (repeatable: every combination runs),
+                        e.g. --vary pantographs[0].speed_kmh=200,250,300
+  --ranks-per-case K    ranks each case runs on (default 1): mpirun -n N runs N/K cases
+                        at once from one queue
+  --cutoff HZ           low-pass of the statistics (default 20)
+  -o DIR                the sweep's directory (default: the scene's name + _sweep); run
+                        the same command again to resume: finished cases are kept
+)") + kSetOption,
+       true},
       {nullptr, nullptr, nullptr, "", false},
   };
   return all;

@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
         catena::app::command_modes(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "study") {
         catena::app::command_study(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "sweep") {
+        catena::app::command_sweep(PETSC_COMM_WORLD, cl);
       } else {
         catena::app::command_run(PETSC_COMM_WORLD, cl);
       }

@@ -1,15 +1,11 @@
 #include "study_report.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "catena/io/atomic_file.hpp"
+#include "plot_script.hpp"
 
 namespace catena::app {
 namespace {
@@ -111,30 +107,8 @@ void print_recommendation(const CommandLine& cl, const std::vector<study::StudyR
       study::stepping_per_simulated_second(r.work));
 }
 
-// The work–precision plot by Debian's python3 and matplotlib, run without a shell (any path
-// is one argument). A failure costs the picture, not the study: said, not thrown.
 void plot(const fs::path& csv, const fs::path& png, const char* measure) {
-  const std::string python = "/usr/bin/python3";
-  const std::string script = std::string(CATENA_SOURCE_DIR) + "/apps/plot_study.py";
-  std::vector<std::string> args = {python, script, csv.string(), png.string(), measure};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t quiet;
-  posix_spawn_file_actions_init(&quiet);
-  posix_spawn_file_actions_addopen(&quiet, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&quiet, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  int status = -1;
-  if (access(script.c_str(), R_OK) == 0 &&
-      posix_spawn(&pid, python.c_str(), &quiet, nullptr, argv.data(), environ) == 0)
-    waitpid(pid, &status, 0);
-  posix_spawn_file_actions_destroy(&quiet);
-  if (status == 0)
-    std::printf("plot: %s\n", png.c_str());
-  else
-    std::printf("plot: not drawn (needs %s with matplotlib): %s %s %s %s %s\n", python.c_str(),
-                python.c_str(), script.c_str(), csv.c_str(), png.c_str(), measure);
+  draw_plot("plot_study.py", {csv.string(), png.string(), measure}, png.string());
 }
 
 }  // namespace
@@ -143,10 +117,7 @@ void write_study_report(const CommandLine& cl, const std::vector<study::StudyRow
                         const study::ReferenceRun& reference, const fs::path& directory,
                         const std::string& reference_description) {
   const fs::path csv = directory / "study.csv";
-  io::TemporaryFile temporary(io::temporary_sibling(csv, getpid()));
-  io::write_file_durably(temporary.path(), study::csv_text(rows));
-  io::rename_into_place(temporary.path(), csv);
-  temporary.release();
+  io::write_file_atomically(csv, study::csv_text(rows));
 
   std::printf("\nstudy: %s; reference: %s\n", cl.scene.c_str(), reference_description.c_str());
   if (reference.has_pantographs())

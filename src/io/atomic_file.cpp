@@ -101,4 +101,11 @@ void publish_with_xdmf(TemporaryFile& hdf5, const std::filesystem::path& hdf5_pa
   fsync_path(hdf5_path.has_parent_path() ? hdf5_path.parent_path() : std::filesystem::path("."));
 }
 
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  TemporaryFile temporary(temporary_sibling(path, getpid()));
+  write_file_durably(temporary.path(), contents);
+  rename_into_place(temporary.path(), path);
+  temporary.release();
+}
+
 }  // namespace catena::io

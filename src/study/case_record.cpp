@@ -1,7 +1,5 @@
 #include "catena/study/case_record.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -85,10 +83,7 @@ std::optional<CaseRecord> parse_record(const std::string& text) {
 }
 
 void write_record(const std::filesystem::path& path, const CaseRecord& record) {
-  io::TemporaryFile temporary(io::temporary_sibling(path, getpid()));
-  io::write_file_durably(temporary.path(), record_text(record));
-  io::rename_into_place(temporary.path(), path);
-  temporary.release();
+  io::write_file_atomically(path, record_text(record));
 }
 
 std::optional<CaseRecord> read_record(const std::filesystem::path& path) {

@@ -51,8 +51,11 @@ std::string accepted_measures() {
   return out + "; sigma is std";
 }
 
-// CSV field: quoted when it holds a comma, a quote or a line break.
-std::string field(const std::string& s) {
+std::string number(double x) { return std::isfinite(x) ? number_text(x) : ""; }
+
+}  // namespace
+
+std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string out = "\"";
   for (char c : s) {
@@ -61,10 +64,6 @@ std::string field(const std::string& s) {
   }
   return out + "\"";
 }
-
-std::string number(double x) { return std::isfinite(x) ? number_text(x) : ""; }
-
-}  // namespace
 
 double stepping_per_simulated_second(const io::RunWork& work) {
   const double simulated = work.t_reached - work.t_started;
@@ -88,10 +87,10 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
     const bool ok = r.completed;
     auto cell = [&](const std::string& text) { out.append(",").append(text); };
     auto count = [&](std::int64_t n) { cell(ok ? std::to_string(n) : std::string()); };
-    out += field(r.name);
-    cell(field(r.role));
-    cell(field(r.method));
-    cell(field(r.setting));
+    out += csv_field(r.name);
+    cell(csv_field(r.role));
+    cell(csv_field(r.method));
+    cell(csv_field(r.setting));
     cell(ok ? std::string("completed") : "failed (exit " + std::to_string(r.exit_code) + ")");
     count(w.steps_accepted);
     count(w.steps_rejected);
@@ -104,7 +103,7 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
     cell(number(r.case_seconds));
     count(w.n_ranks);
     for (const Measure& m : measures) cell(number(r.errors.*m.field));
-    cell(field(r.message));
+    cell(csv_field(r.message));
     out += "\n";
   }
   return out;

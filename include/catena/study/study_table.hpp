@@ -56,6 +56,10 @@ double stepping_per_simulated_second(const io::RunWork& work);
 // simulated time at its rate (what study.csv's wall_seconds and the recommendation use).
 double stepping_seconds(const io::RunWork& work);
 
+// Not collective. One CSV field: quoted (quotes doubled) when it holds a comma, a quote or a
+// line break (RFC 4180).
+std::string csv_field(const std::string& text);
+
 // Not collective. study.csv's text: a header line, then one line per row.
 std::string csv_text(const std::vector<StudyRow>& rows);
 
