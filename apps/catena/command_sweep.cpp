@@ -3,6 +3,7 @@
 // contact-force statistics per pantograph: DIR/sweep.csv and DIR/sweep.png (the statistics
 // against the first varied value). The cases run as `catena study`'s do (case_runner.hpp:
 // groups of --ranks-per-case ranks, one queue, per-case logs and records, resumable).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <set>
