@@ -9,6 +9,7 @@
 #include "catena/io/output_error.hpp"
 #include "catena/io/run_files.hpp"
 #include "catena/model/scene_identity.hpp"
+#include "catena/post/contact_statistics.hpp"
 #include "catena/study/case_queue.hpp"
 #include "catena/study/case_record.hpp"
 #include "catena/study/study_plan.hpp"
@@ -22,6 +23,23 @@ namespace fs = std::filesystem;
 fs::path command_directory(const CommandLine& cl, const std::string& suffix) {
   return cl.study.directory.empty() ? fs::path(fs::path(cl.scene).stem().string() + suffix)
                                     : fs::path(cl.study.directory);
+}
+
+std::string unique_name(std::set<std::string>& taken, const std::string& stem) {
+  std::string name = stem;
+  for (int k = 2; !taken.insert(name).second; ++k) name = stem + "_" + std::to_string(k);
+  return name;
+}
+
+void check_contact_sampling(const CommandLine& cl, const QueuedCase& c, const model::Model& m) {
+  const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * cl.study.cutoff_hz);
+  if (m.contacts.empty() || m.output.interval <= coarsest * (1.0 + 1e-9)) return;
+  throw InputError({cl.scene, 0, "output.interval"},
+                   "output.interval = " + study::number_text(m.output.interval) + " s" +
+                       (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
+                       " samples the contact force too coarsely for the statistics' " +
+                       study::number_text(cl.study.cutoff_hz) + " Hz low-pass; accepted: at most " +
+                       study::number_text(coarsest) + " s (--set output.interval=...)");
 }
 
 void create_cases_directory(MPI_Comm world, const fs::path& cases_dir) {

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,15 @@ struct QueuedCase {
 
 // Not collective. The command's directory: -o DIR, else "<scene's stem><suffix>".
 std::filesystem::path command_directory(const CommandLine& cl, const std::string& suffix);
+
+// Not collective. `stem`, or stem_2, stem_3, ... : the first not yet in `taken` (then added).
+std::string unique_name(std::set<std::string>& taken, const std::string& stem);
+
+// Not collective. Throws catena::InputError (key "output.interval") when `m` has pantographs
+// and samples their contact force too coarsely for the statistics' low-pass at
+// cl.study.cutoff_hz (post::min_sampling_rate_per_cutoff), naming the case's overrides: a
+// study or sweep refuses it before any case runs, not after all have.
+void check_contact_sampling(const CommandLine& cl, const QueuedCase& c, const model::Model& m);
 
 // Collective over `world`. Creates `cases_dir` (rank 0); throws catena::InputError (key
 // "-o") on every rank if it cannot.

@@ -21,7 +21,6 @@
 #include "catena/io/output_error.hpp"
 #include "catena/io/run_files.hpp"
 #include "catena/model/scene_identity.hpp"
-#include "catena/post/contact_statistics.hpp"
 #include "catena/study/case_measures.hpp"
 #include "catena/study/case_queue.hpp"
 #include "catena/study/case_record.hpp"
@@ -93,7 +92,7 @@ StudyPlan plan_settings(MPI_Comm world, const CommandLine& cl, const fs::path& d
 // Not collective (every rank the same). What would stop the comparison after every case has
 // run is refused before any runs: a probe id the scene does not have, contact forces sampled
 // too coarsely for the statistics' low-pass.
-void check_measurable(const CommandLine& cl, const StudyCase& c, const model::Model& m) {
+void check_measurable(const CommandLine& cl, const QueuedCase& c, const model::Model& m) {
   for (long long id : cl.study.probes)
     if (std::none_of(m.nodes.begin(), m.nodes.end(),
                      [&](const model::Node& n) { return n.id == id; }))
@@ -101,15 +100,7 @@ void check_measurable(const CommandLine& cl, const StudyCase& c, const model::Mo
                        "no node with id " + std::to_string(id) + " in the scene" +
                            (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
                            "; catena check --ids lists a catenary's nodes");
-  const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * cl.study.cutoff_hz);
-  if (!m.contacts.empty() && m.output.interval > coarsest * (1.0 + 1e-9))
-    throw InputError({cl.scene, 0, "output.interval"},
-                     "output.interval = " + study::number_text(m.output.interval) + " s" +
-                         (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
-                         " samples the contact force too coarsely for the statistics' " +
-                         study::number_text(cl.study.cutoff_hz) +
-                         " Hz low-pass; accepted: at most " + study::number_text(coarsest) +
-                         " s (--set output.interval=...)");
+  check_contact_sampling(cl, c, m);
 }
 
 // Collective over `world`. The cases: the reference first (the most expensive, so it does
@@ -136,18 +127,17 @@ std::vector<StudyCase> plan_cases(MPI_Comm world, const CommandLine& cl, const S
   std::set<std::string> names = {"reference", "reference_check"};
   for (const study::Setting& s : plan.settings) {
     const std::string method = s.method().empty() ? plan.scene_method : s.method();
-    const std::string stem = study::case_stem(method, s.resolution());
-    std::string name = stem;
-    for (int k = 2; !names.insert(name).second; ++k) name = stem + "_" + std::to_string(k);
-    add(name, "setting", method, s.resolution(), s.overrides());
+    add(unique_name(names, study::case_stem(method, s.resolution())), "setting", method,
+        s.resolution(), s.overrides());
   }
   if (mpi_rank(world) == 0) {
     std::printf("study: checking the scene under %zu settings\n", cases.size());
     std::fflush(stdout);
   }
+  const std::vector<QueuedCase> to_check = queued(cases);
   const std::vector<std::string> identities = check_scenes(
-      world, cl, queued(cases),
-      [&](std::size_t i, const model::Model& m) { check_measurable(cl, cases[i], m); });
+      world, cl, to_check,
+      [&](std::size_t i, const model::Model& m) { check_measurable(cl, to_check[i], m); });
   for (std::size_t i = 0; i < cases.size(); ++i) cases[i].scene = study::digest(identities[i]);
   if (cases.size() > 1 && cases[1].row.role == "reference_check")
     for (std::size_t i = 2; i < cases.size(); ++i)

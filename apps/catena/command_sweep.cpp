@@ -3,7 +3,6 @@
 // contact-force statistics per pantograph: DIR/sweep.csv and DIR/sweep.png (the statistics
 // against the first varied value). The cases run as `catena study`'s do (case_runner.hpp:
 // groups of --ranks-per-case ranks, one queue, per-case logs and records, resumable).
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -29,14 +28,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct SweepCase {
-  QueuedCase queued;
-  study::Setting setting;
-};
-
 // One pantograph of one case: the statistics, or why there are none.
 struct SweepRow {
-  const SweepCase* c = nullptr;
+  const QueuedCase* c = nullptr;
+  const study::Setting* setting = nullptr;  // the values of the varied keys
   std::string pantograph;
   std::string status;  // completed | failed (exit N) | not measured
   post::ContactStatistics statistics;
@@ -44,14 +39,18 @@ struct SweepRow {
   std::string message;
 };
 
-std::vector<SweepRow> measure(const std::vector<SweepCase>& cases, const fs::path& cases_dir,
-                              double cutoff_hz) {
+std::vector<SweepRow> measure(const std::vector<QueuedCase>& cases,
+                              const std::vector<study::Setting>& settings,
+                              const fs::path& cases_dir, double cutoff_hz) {
   std::vector<SweepRow> rows;
-  for (const SweepCase& c : cases) {
-    const auto record = study::read_record(cases_dir / (c.queued.name + ".result"));
-    if (!record) throw Error("sweep: no record of case " + c.queued.name);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const QueuedCase& c = cases[i];
+    const study::Setting* setting = &settings[i];
+    const auto record = study::read_record(cases_dir / (c.name + ".result"));
+    if (!record) throw Error("sweep: no record of case " + c.name);
     if (!record->completed) {
       rows.push_back({&c,
+                      setting,
                       "",
                       "failed (exit " + std::to_string(record->exit_code) + ")",
                       {},
@@ -59,25 +58,18 @@ std::vector<SweepRow> measure(const std::vector<SweepCase>& cases, const fs::pat
                       record->message});
       continue;
     }
-    const std::string path = (cases_dir / (c.queued.name + ".h5")).string();
+    const std::string path = (cases_dir / (c.name + ".h5")).string();
     try {
       const io::ContactRun run = io::read_contact_run(path);
       const io::RunWork work = io::read_run_work(path);
-      post::EvaluationSection section;
-      if (run.evaluation_section) {
-        section = *run.evaluation_section;
-      } else {
-        const auto& x = run.pantographs.front().position;
-        const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-        section = {*lo, *hi};
-      }
+      const post::EvaluationSection section = io::evaluation_section_or_record(run);
       for (const post::PantographRecord& p : run.pantographs)
         rows.push_back(
-            {&c, p.name, "completed",
+            {&c, setting, p.name, "completed",
              post::contact_statistics(p, run.registration_points, {run.dt, cutoff_hz, section}),
              work, ""});
     } catch (const InputError& e) {
-      rows.push_back({&c, "", "not measured", {}, {}, e.what()});
+      rows.push_back({&c, setting, "", "not measured", {}, {}, e.what()});
     }
   }
   return rows;
@@ -95,8 +87,8 @@ std::string csv_text(const std::vector<study::Variation>& variations,
       "contact_loss_percent,max_uplift_at_support_mm,steps,wall_seconds,"
       "wall_per_simulated_second,message\n";
   for (const SweepRow& r : rows) {
-    out += study::csv_field(r.c->queued.name);
-    for (const auto& [key, value] : r.c->setting.values) cell(study::csv_field(value));
+    out += study::csv_field(r.c->name);
+    for (const auto& [key, value] : r.setting->values) cell(study::csv_field(value));
     cell(study::csv_field(r.pantograph));
     cell(r.status);
     const bool ok = r.status == "completed";
@@ -123,7 +115,7 @@ void print_table(const std::vector<SweepRow>& rows) {
               "%", "mm");
   for (const SweepRow& r : rows) {
     if (r.status != "completed") {
-      std::printf("%-32s %s: %s\n", r.c->queued.name.c_str(), r.status.c_str(), r.message.c_str());
+      std::printf("%-32s %s: %s\n", r.c->name.c_str(), r.status.c_str(), r.message.c_str());
       continue;
     }
     const post::ContactStatistics& s = r.statistics;
@@ -131,7 +123,7 @@ void print_table(const std::vector<SweepRow>& rows) {
     if (s.max_uplift_at_support)
       std::snprintf(uplift, sizeof uplift, "%.2f", 1e3 * *s.max_uplift_at_support);
     std::printf("%-32s %-12s %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %6.2f %7s %8.3f\n",
-                r.c->queued.name.c_str(), r.pantograph.c_str(), s.mean, s.standard_deviation,
+                r.c->name.c_str(), r.pantograph.c_str(), s.mean, s.standard_deviation,
                 s.statistical_max, s.statistical_min, s.max, s.min, s.contact_loss_percent, uplift,
                 study::stepping_per_simulated_second(r.work));
   }
@@ -149,43 +141,31 @@ void command_sweep(MPI_Comm world, const CommandLine& cl) {
   study::check_ranks_per_case(world, cl.study.ranks_per_case);
   std::vector<study::Variation> variations;
   for (const std::string& v : cl.study.vary) variations.push_back(study::parse_variation(v));
-  std::vector<SweepCase> cases;
+  const std::vector<study::Setting> settings = study::expand(variations);
+  std::vector<QueuedCase> cases;
   std::set<std::string> names;
-  for (const study::Setting& s : study::expand(variations)) {
-    const std::string stem = study::case_stem(s.method(), s.resolution());
-    std::string name = stem;
-    for (int k = 2; !names.insert(name).second; ++k) name = stem + "_" + std::to_string(k);
-    cases.push_back({{name, s.overrides(), ""}, s});
-  }
-  std::vector<QueuedCase> queued;
-  for (const SweepCase& c : cases) queued.push_back(c.queued);
+  for (const study::Setting& s : settings)
+    cases.push_back(
+        {unique_name(names, study::case_stem(s.method(), s.resolution())), s.overrides(), ""});
   if (mpi_rank(world) == 0) {
     std::printf("sweep: checking the scene under %zu settings\n", cases.size());
     std::fflush(stdout);
   }
-  const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * cl.study.cutoff_hz);
   const std::vector<std::string> identities =
-      check_scenes(world, cl, queued, [&](std::size_t i, const model::Model& m) {
-        const std::string under = " under " + list_text(queued[i].overrides);
+      check_scenes(world, cl, cases, [&](std::size_t i, const model::Model& m) {
         if (m.contacts.empty())
           throw InputError({cl.scene, 0, "pantographs"},
-                           "a sweep tabulates contact-force statistics; the scene" + under +
+                           "a sweep tabulates contact-force statistics; the scene under " +
+                               list_text(cases[i].overrides) +
                                " has no pantographs (catena study compares other scenes)");
-        if (m.output.interval > coarsest * (1.0 + 1e-9))
-          throw InputError({cl.scene, 0, "output.interval"},
-                           "output.interval = " + study::number_text(m.output.interval) + " s" +
-                               under + " samples the contact force too coarsely for the " +
-                               study::number_text(cl.study.cutoff_hz) +
-                               " Hz low-pass; accepted: at most " + study::number_text(coarsest) +
-                               " s");
+        check_contact_sampling(cl, cases[i], m);
       });
-  for (std::size_t i = 0; i < cases.size(); ++i)
-    queued[i].scene = cases[i].queued.scene = study::digest(identities[i]);
+  for (std::size_t i = 0; i < cases.size(); ++i) cases[i].scene = study::digest(identities[i]);
   create_cases_directory(world, cases_dir);
-  const RunInterrupted stop = run_cases(world, cl, queued, cases_dir);
+  const RunInterrupted stop = run_cases(world, cl, cases, cases_dir);
   if (stop.signal != 0) throw stop;
   if (mpi_rank(world) != 0) return;
-  const std::vector<SweepRow> rows = measure(cases, cases_dir, cl.study.cutoff_hz);
+  const std::vector<SweepRow> rows = measure(cases, settings, cases_dir, cl.study.cutoff_hz);
   const fs::path csv = directory / "sweep.csv";
   io::write_file_atomically(csv, csv_text(variations, rows));
   std::printf("\nsweep: %s, EN 50318 statistics per pantograph (low-pass %g Hz)\n",

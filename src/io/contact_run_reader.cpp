@@ -287,4 +287,11 @@ ContactRun read_contact_run_steps(const std::string& path) {
 
 const char* contact_run_times_dataset() { return time_name; }
 
+post::EvaluationSection evaluation_section_or_record(const ContactRun& run) {
+  if (run.evaluation_section) return *run.evaluation_section;
+  const auto& x = run.pantographs.front().position;  // the reader refuses a run without any
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return {*lo, *hi};
+}
+
 }  // namespace catena::io

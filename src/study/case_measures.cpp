@@ -42,13 +42,7 @@ ReferenceRun::ReferenceRun(const std::string& path, std::vector<std::int64_t> pr
   has_pantographs_ = io::read_run_work(path).has_pantographs;
   if (has_pantographs_) {
     contact_ = io::read_contact_run(path);
-    if (contact_.evaluation_section) {
-      section_ = *contact_.evaluation_section;
-    } else {  // the whole record of the first pantograph
-      const auto& x = contact_.pantographs.front().position;
-      const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-      section_ = {*lo, *hi};
-    }
+    section_ = io::evaluation_section_or_record(contact_);
     try {
       for (const post::PantographRecord& p : contact_.pantographs)
         statistics_.push_back(post::contact_statistics(p, contact_.registration_points,

@@ -113,8 +113,8 @@ std::vector<std::string> Setting::overrides() const {
   std::vector<std::string> out;
   for (const auto& [key, value] : preset) out.push_back(key + "=" + value);
   for (const auto& [key, value] : values) out.push_back(key + "=" + value);
-  for (const auto& list : {preset, values})
-    for (const auto& [key, value] : list)
+  for (const auto* list : {&preset, &values})
+    for (const auto& [key, value] : *list)
       if (key == "integrator.type")
         for (const std::string& removed : keys_not_taken_by(value)) out.push_back(removed + "=~");
   return out;

@@ -22,6 +22,11 @@ struct ContactRun {
   std::vector<post::RegistrationPoint> registration_points;  // one per registration node
 };
 
+// Not collective. The run's evaluation section, or, when it sets none, the range of contact
+// positions its first pantograph covers (the whole record): what `catena study` and
+// `catena sweep` evaluate over.
+post::EvaluationSection evaluation_section_or_record(const ContactRun& run);
+
 // Not collective. Reads `path`; throws catena::InputError naming the file (and the object)
 // if it is missing, not HDF5, not a Catena time series of this format (root attribute
 // `format`: the one found and the one expected), not complete (status), has no
