@@ -6,13 +6,36 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 namespace catena::app {
+
+namespace {
+
+// The script SCRIPT: installed beside the executable (CATENA_INSTALLED_SCRIPTS, relative
+// to the directory of /proc/self/exe, or absolute), else in the source tree's apps/ (a
+// catena run from its build tree). Neither readable: the installed path if this catena is
+// installed (its scripts' directory exists), else the source tree's, for the message.
+std::string script_path(const std::string& script) {
+  namespace fs = std::filesystem;
+  const fs::path source = fs::path(CATENA_SOURCE_DIR) / "apps" / script;
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (error) return source.string();
+  const fs::path dir = (exe.parent_path() / CATENA_INSTALLED_SCRIPTS).lexically_normal();
+  const fs::path installed = dir / script;
+  if (access(installed.c_str(), R_OK) == 0) return installed.string();
+  if (access(source.c_str(), R_OK) != 0 && fs::is_directory(dir, error)) return installed.string();
+  return source.string();
+}
+
+}  // namespace
 
 void draw_plot(const std::string& script, const std::vector<std::string>& args,
                const std::string& png) {
   const std::string python = "/usr/bin/python3";
-  const std::string path = std::string(CATENA_SOURCE_DIR) + "/apps/" + script;
+  const std::string path = script_path(script);
   std::vector<std::string> words = {python, path};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
