@@ -1,5 +1,6 @@
 #include "cli.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -8,10 +9,11 @@
 namespace catena::app {
 
 namespace {
-// run, check, stats, elasticity, modes, study or sweep.
+// run, check, stats, export, plot, elasticity, modes, study or sweep.
 bool is_command(const std::string& name) {
-  return name == "run" || name == "check" || name == "stats" || name == "elasticity" ||
-         name == "modes" || name == "study" || name == "sweep";
+  return name == "run" || name == "check" || name == "stats" || name == "export" ||
+         name == "plot" || name == "elasticity" || name == "modes" || name == "study" ||
+         name == "sweep";
 }
 
 bool is_scene_path(const std::string& token) {
@@ -161,10 +163,18 @@ bool parse_sweep_option(const std::vector<std::string>& args, size_t& i, Command
   return parse_study_option(args, i, cl);
 }
 
-// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series S]`; args[i]
-// follows "stats".
-void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
+// The options each command that reads a run's output takes, for the "accepted" lists.
+std::string post_options(const std::string& command) {
+  const std::string shared = "--section X0 X1, --cutoff HZ, --series S";
+  if (command == "stats") return "--json, " + shared + ", --ranges R";
+  if (command == "export") return "--csv, " + shared + ", --ranges R, -o PREFIX";
+  return shared + ", --format F, -o PREFIX";  // plot
+}
+
+// `catena stats|export|plot OUT.h5 [options]` (post_options); args[i] follows the command.
+void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl) {
   StatsArguments& st = cl.stats;
+  const std::string& command = cl.command;
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> const std::string& {
@@ -173,11 +183,13 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
       return args[++i];
     };
     if (a == "-h" || a == "--help") {
-      cl.help_topic = "stats";
+      cl.help_topic = command;
       cl.command = "help";
       return;
-    } else if (a == "--json") {
+    } else if (a == "--json" && command == "stats") {
       st.json = true;
+    } else if (a == "--csv" && command == "export") {
+      // The one export format: accepted so that the command says what it writes.
     } else if (a == "--section") {
       const double x0 = parse_real(value("--section"), "--section");
       const double x1 = parse_real(value("--section"), "--section");
@@ -198,10 +210,35 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
                                                   "'; accepted: samples (the default: "
                                                   "/samples), steps (every step's contact force)");
       st.steps = series == "steps";
+    } else if (a == "--ranges" && command != "plot") {
+      const std::string& ranges = value("--ranges");
+      if (ranges != "en50318" && ranges != "none")
+        throw InputError({"", 0, "--ranges"},
+                         "unknown acceptance ranges '" + ranges +
+                             "'; accepted: en50318 (the EN 50318 reference case at 250 and 300 "
+                             "km/h), none (default: the run's catenary.acceptance)");
+      st.ranges = ranges;
+    } else if ((a == "-o" || a == "--output") && command != "stats") {
+      st.output = value("-o");
+      if (st.output.empty() || st.output.back() == '/')
+        throw InputError({"", 0, "-o"}, "'" + st.output +
+                                            "' is not a file name prefix: give e.g. "
+                                            "-o results/run1 (writes results/run1_*)");
+    } else if (a == "--format" && command == "plot") {
+      st.formats.clear();
+      std::string list = value("--format");
+      for (std::size_t from = 0; from <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', from), list.size());
+        const std::string format = list.substr(from, comma - from);
+        if (format != "png" && format != "pdf")
+          throw InputError({"", 0, "--format"}, "unknown format '" + format + "' in '" + list +
+                                                    "'; accepted: png, pdf, or both: png,pdf");
+        st.formats.push_back(format);
+        from = comma + 1;
+      }
     } else if (!a.empty() && a[0] == '-') {
-      throw InputError({"", 0, "arguments"}, "unknown option '" + a +
-                                                 "' for stats; accepted: --json, "
-                                                 "--section X0 X1, --cutoff HZ, --series S");
+      throw InputError({"", 0, "arguments"}, "unknown option '" + a + "' for " + command +
+                                                 "; accepted: " + post_options(command));
     } else if (st.file.empty()) {
       st.file = a;
     } else {
@@ -211,9 +248,8 @@ void parse_stats(const std::vector<std::string>& args, size_t i, CommandLine& cl
     }
   }
   if (st.file.empty())
-    throw InputError({"", 0, "OUT.h5"},
-                     "no output file given; usage: catena stats OUT.h5 [--json] "
-                     "[--section X0 X1] [--cutoff HZ] [--series samples|steps]");
+    throw InputError({"", 0, "OUT.h5"}, "no output file given; usage: catena " + command +
+                                            " OUT.h5 [" + post_options(command) + "]");
 }
 }  // namespace
 
@@ -237,8 +273,8 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.help_topic = args[1];
       if (!is_command(cl.help_topic))
         throw InputError({"", 0, "help"}, "no command '" + args[1] +
-                                              "'; accepted: run, check, stats, elasticity, "
-                                              "modes, study, sweep");
+                                              "'; accepted: run, check, stats, export, plot, "
+                                              "elasticity, modes, study, sweep");
     }
     return cl;
   }
@@ -247,14 +283,15 @@ CommandLine parse_command_line(int argc, char** argv) {
     return cl;
   }
   cl.command = args[i++];
-  if (cl.command == "stats") {
-    parse_stats(args, i, cl);
+  if (cl.command == "stats" || cl.command == "export" || cl.command == "plot") {
+    parse_post(args, i, cl);
     return cl;
   }
   if (!is_command(cl.command))
     throw InputError({"", 0, "command"},
                      "unknown command '" + cl.command +
-                         "'; accepted: run, check, stats, elasticity, modes, study, sweep, --help");
+                         "'; accepted: run, check, stats, export, plot, elasticity, modes, study, "
+                         "sweep, --help");
   for (; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::string {

@@ -8,13 +8,18 @@
 
 namespace catena::app {
 
-// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series samples|steps]`.
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series samples|steps]
+// [--ranges R]`; `catena export` and `catena plot` read a run alike (cli.cpp, post_options).
 struct StatsArguments {
   std::string file;                              // a dynamic run's output
   bool json = false;                             // --json: JSON instead of the table
   std::optional<std::array<double, 2>> section;  // --section X0 X1 [m]; else the file's
   double cutoff_hz = 20.0;                       // --cutoff HZ: low-pass cutoff (−6 dB point)
   bool steps = false;  // --series steps: the contact force of every step, not the samples'
+  // --ranges en50318|none: the acceptance ranges (default: the run's catenary.acceptance).
+  std::optional<std::string> ranges;
+  std::string output;                       // export, plot: -o PREFIX (default: OUT less .h5)
+  std::vector<std::string> formats{"png"};  // plot --format png,pdf
 };
 
 // `catena elasticity SCENE [--set k=v ...] [--span N] [--step DX] [--force F] [--json]`.
@@ -46,7 +51,8 @@ struct StudyArguments {
 };
 
 struct CommandLine {
-  std::string command;  // run | check | stats | elasticity | modes | study | sweep | help | version
+  // run | check | stats | export | plot | elasticity | modes | study | sweep | help | version
+  std::string command;
   std::string help_topic;              // help: the command asked about ("" = all)
   std::string scene;                   // scene file path
   std::vector<std::string> overrides;  // --set key=value, in order
@@ -62,7 +68,7 @@ struct CommandLine {
   double progress_seconds = 5.0;
   std::vector<std::string> petsc_options;  // the PETSc options given ("-hht_snes_rtol")
   std::string joined;                      // the whole command line, for the output file
-  StatsArguments stats;                    // command "stats" only
+  StatsArguments stats;                    // commands "stats", "export" and "plot"
   ElasticityArguments elasticity;          // command "elasticity" only
   ModesArguments modes;                    // command "modes" only
   StudyArguments study;                    // commands "study" and "sweep"

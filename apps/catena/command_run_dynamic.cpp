@@ -34,6 +34,7 @@
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
+#include "contact_summary.hpp"
 #include "initial_state.hpp"
 #include "log_stage.hpp"
 #include "modal_setup.hpp"
@@ -595,6 +596,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 report.samples, io::transient_xdmf_path(written).c_str(),
                 io::checkpoint_path(output).c_str(),
                 report.interrupted ? "; --restart continues the run" : "");
+    if (!m.contacts.empty() && !report.interrupted) print_contact_summary(written);
   }
   if (report.interrupted) {
     // The signal one rank received, on every rank (the stop itself was agreed per step).

@@ -1,6 +1,7 @@
-// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ]`: the EN 50318
-// contact-force statistics per pantograph of a dynamic run (docs/output.md, "Contact-force
-// statistics"). Serial: rank 0 reads and prints; under mpirun the other ranks only wait.
+// `catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--ranges R]`: the EN 50318
+// contact-force statistics per pantograph of a dynamic run, checked against the acceptance
+// ranges when the scene declares them (docs/output.md, "Contact-force statistics"). Serial: rank 0
+// reads and prints; under mpirun the other ranks only wait.
 //
 //   catena stats en50318_250.h5                         # the run's evaluation section
 //   catena stats en50318_250.h5 --section 240 360 --json
@@ -8,25 +9,18 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <string>
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/core/mpi_comm.hpp"
-#include "catena/io/contact_run_reader.hpp"
-#include "catena/post/contact_statistics.hpp"
 #include "commands.hpp"
+#include "rank_zero.hpp"
+#include "run_statistics.hpp"
 
 namespace catena::app {
 namespace {
 
 constexpr double kmh_per_ms = 3.6;
-
-struct PantographResult {
-  const post::PantographRecord* pantograph = nullptr;
-  post::ContactStatistics statistics;
-};
 
 // Shortest decimal that reads back as the same double; null for NaN/inf (not JSON).
 std::string json_number(double x) {
@@ -53,128 +47,179 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
-void print_json(const std::vector<PantographResult>& results,
-                const post::EvaluationSection& section) {
-  std::string out = "{\"pantographs\": [";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const post::ContactStatistics& s = results[i].statistics;
-    const post::PantographRecord& p = *results[i].pantograph;
+std::string json_section(const post::EvaluationSection& s) {
+  return "[" + json_number(s.x_start) + ", " + json_number(s.x_end) + "]";
+}
+
+std::string json_acceptance(const PantographEvaluation& e, const std::string& ranges) {
+  if (!e.acceptance) return "null";
+  std::string out = "{\"ranges\": " + json_string(ranges) +
+                    ", \"passed\": " + std::to_string(checks_passed(*e.acceptance)) +
+                    ", \"total\": " + std::to_string(e.acceptance->size()) + ", \"checks\": [";
+  for (std::size_t i = 0; i < e.acceptance->size(); ++i) {
+    const post::AcceptanceCheck& c = (*e.acceptance)[i];
+    out += i ? ", " : "";
+    out += "{\"statistic\": " + json_string(c.statistic) + ", \"unit\": " + json_string(c.unit) +
+           ", \"low\": " + json_number(c.low) + ", \"high\": " + json_number(c.high) +
+           ", \"value\": " + (c.value ? json_number(*c.value) : "null") +
+           ", \"pass\": " + (c.pass ? "true" : "false") + "}";
+  }
+  return out + "]}";
+}
+
+void print_json(const RunEvaluation& ev) {
+  std::string out = "{\"status\": " + json_string(ev.run.status) +
+                    ", \"complete\": " + (ev.finished ? "true" : "false") +
+                    ", \"t_end\": " + json_number(ev.run.t_end) +
+                    ", \"section_requested\": " + json_section(ev.section) +
+                    ",\n \"pantographs\": [";
+  for (std::size_t i = 0; i < ev.pantographs.size(); ++i) {
+    const PantographEvaluation& e = ev.pantographs[i];
+    const post::PantographRecord& p = *e.pantograph;
     out += i ? ",\n  " : "\n  ";
     out += "{\"name\": " + json_string(p.name);
     out += ", \"speed_kmh\": " + json_number(p.speed * kmh_per_ms);
+    out += ", \"section\": " + json_section(e.section);
+    out += ", \"reached_section\": " + std::string(e.statistics ? "true" : "false");
+    auto number = [&](auto member) {
+      return e.statistics ? json_number((*e.statistics).*member) : std::string("null");
+    };
+    using S = post::ContactStatistics;
+    out += ", \"mean\": " + number(&S::mean);
+    out += ", \"std\": " + number(&S::standard_deviation);
+    out += ", \"stat_max\": " + number(&S::statistical_max);
+    out += ", \"stat_min\": " + number(&S::statistical_min);
+    out += ", \"max\": " + number(&S::max);
+    out += ", \"min\": " + number(&S::min);
+    out += ", \"contact_loss_percent\": " + number(&S::contact_loss_percent);
     out +=
-        ", \"section\": [" + json_number(section.x_start) + ", " + json_number(section.x_end) + "]";
-    out += ", \"mean\": " + json_number(s.mean);
-    out += ", \"std\": " + json_number(s.standard_deviation);
-    out += ", \"stat_max\": " + json_number(s.statistical_max);
-    out += ", \"stat_min\": " + json_number(s.statistical_min);
-    out += ", \"max\": " + json_number(s.max);
-    out += ", \"min\": " + json_number(s.min);
-    out += ", \"contact_loss_percent\": " + json_number(s.contact_loss_percent);
-    out += ", \"max_uplift_at_support\": " +
-           (s.max_uplift_at_support ? json_number(*s.max_uplift_at_support) : "null");
+        ", \"max_uplift_at_support\": " + (e.statistics && e.statistics->max_uplift_at_support
+                                               ? json_number(*e.statistics->max_uplift_at_support)
+                                               : "null");
+    out += ", \"acceptance\": " + json_acceptance(e, ev.ranges);
     out += "}";
   }
-  out += results.empty() ? "]}\n" : "\n]}\n";
+  out += ev.pantographs.empty() ? "]}\n" : "\n]}\n";
   std::fputs(out.c_str(), stdout);
 }
 
-void print_table(const std::string& path, const io::ContactRun& run,
-                 const std::vector<PantographResult>& results,
-                 const post::EvaluationSection& section, const StatsArguments& args) {
+// `text` followed by spaces to `width` characters (UTF-8: σ, − and – are one each).
+std::string padded(const std::string& text, std::size_t width) {
+  const auto continuation = static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char ch) { return (ch & 0xC0) == 0x80; }));
+  const std::size_t shown = text.size() - continuation;
+  return text + std::string(width > shown ? width - shown : 0, ' ');
+}
+
+// The ranges' table of one pantograph: each statistic, its value, the range and ✓ or ✗.
+void print_acceptance(const PantographEvaluation& e, const post::EvaluationSection& run_section) {
+  const double speed_kmh = e.pantograph->speed * kmh_per_ms;
+  if (!e.statistics) return;
+  if (!e.acceptance) {
+    std::printf("\n%s at %g km/h: EN 50318 gives acceptance ranges at 250 and 300 km/h only\n",
+                e.pantograph->name.c_str(), speed_kmh);
+    return;
+  }
+  std::printf("\nEN 50318 acceptance ranges at %g km/h, pantograph %s:\n", speed_kmh,
+              e.pantograph->name.c_str());
+  if (e.section.x_start != run_section.x_start || e.section.x_end != run_section.x_end)
+    std::printf(
+        "  (evaluated over [%g, %g] m, not the run's evaluation section [%g, %g] m: the\n"
+        "  ranges hold for the reference case's whole section)\n",
+        e.section.x_start, e.section.x_end, run_section.x_start, run_section.x_end);
+  for (const post::AcceptanceCheck& c : *e.acceptance) {
+    char value[32] = "-";
+    if (c.value) std::snprintf(value, sizeof value, "%.2f", *c.value);
+    char range[48];
+    std::snprintf(range, sizeof range, "%g – %g", c.low, c.high);
+    if (c.low == c.high) std::snprintf(range, sizeof range, "%g", c.low);
+    std::printf("  %s %9s %-3s %s %s\n", padded(c.label, 30).c_str(), value, c.unit.c_str(),
+                padded(range, 11).c_str(),
+                c.pass    ? "✓"
+                : c.value ? "✗ out of range"
+                          : "✗ not measured (no support in the section)");
+  }
+  std::printf("  %zu of %zu statistics in range\n", checks_passed(*e.acceptance),
+              e.acceptance->size());
+}
+
+void print_table(const std::string& path, const RunEvaluation& ev, const StatsArguments& args) {
+  const io::ContactRun& run = ev.run;
   std::printf("catena stats: %s\n", path.c_str());
+  if (!ev.finished)
+    std::printf(
+        "  warning: the run did not finish (status '%s'): its record ends at t = %g s; each\n"
+        "  pantograph is evaluated over the part of the section it covered (a support passed\n"
+        "  just before the end may not show its full uplift)\n",
+        run.status.c_str(), run.t_end);
   std::printf(
       "  %zu %s every %g s (%g Hz); contact force low-pass filtered at %g Hz\n"
       "  (zero-phase 2nd-order Butterworth, forward and backward: -6 dB at %g Hz)\n",
       run.n_samples, args.steps ? "steps (--series steps)" : "samples", run.dt, 1.0 / run.dt,
       args.cutoff_hz, args.cutoff_hz);
-  std::printf("  evaluation section [%g, %g] m along the path (%s)\n\n", section.x_start,
-              section.x_end, args.section ? "--section" : "the run's evaluation section");
+  std::printf("  evaluation section [%g, %g] m along the path (%s)\n", ev.section.x_start,
+              ev.section.x_end, ev.section_given ? "--section" : "the run's evaluation section");
+  if (!ev.finished)
+    for (const PantographEvaluation& e : ev.pantographs) {
+      const double covered = e.statistics ? (e.section.x_end - e.section.x_start) /
+                                                (ev.section.x_end - ev.section.x_start)
+                                          : 0.0;
+      if (e.statistics)
+        std::printf("  %s: covered [%g, %g] m, %.0f %% of the section\n",
+                    e.pantograph->name.c_str(), e.section.x_start, e.section.x_end,
+                    100.0 * covered);
+      else
+        std::printf("  %s: did not reach the section\n", e.pantograph->name.c_str());
+    }
+  std::printf("\n");
   int width = 10;
-  for (const auto& r : results)
-    width = std::max(width, static_cast<int>(r.pantograph->name.size()));
+  for (const auto& e : ev.pantographs)
+    width = std::max(width, static_cast<int>(e.pantograph->name.size()));
   std::printf("%-*s %7s %8s %8s %8s %8s %8s %8s %8s %6s %7s\n", width, "pantograph", "speed",
               "samples", "mean", "std", "stat_max", "stat_min", "max", "min", "loss", "uplift");
   std::printf("%-*s %7s %8s %8s %8s %8s %8s %8s %8s %6s %7s\n", width, "", "km/h", "", "N", "N",
               "N", "N", "N", "N", "%", "mm");
-  for (const auto& r : results) {
-    const post::ContactStatistics& s = r.statistics;
+  for (const auto& e : ev.pantographs) {
+    if (!e.statistics) {
+      std::printf("%-*s %7.1f %8s  (did not reach the section)\n", width,
+                  e.pantograph->name.c_str(), e.pantograph->speed * kmh_per_ms, "0");
+      continue;
+    }
+    const post::ContactStatistics& s = *e.statistics;
     char uplift[32] = "-";
     if (s.max_uplift_at_support)
       std::snprintf(uplift, sizeof uplift, "%.2f", 1e3 * *s.max_uplift_at_support);
     std::printf("%-*s %7.1f %8zu %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %6.2f %7s\n", width,
-                r.pantograph->name.c_str(), r.pantograph->speed * kmh_per_ms, s.n_samples, s.mean,
+                e.pantograph->name.c_str(), e.pantograph->speed * kmh_per_ms, s.n_samples, s.mean,
                 s.standard_deviation, s.statistical_max, s.statistical_min, s.max, s.min,
                 s.contact_loss_percent, uplift);
   }
   if (!run.has_registration_nodes)
     std::printf("\nnote: the file has no /mesh/registration_nodes: no uplift at support\n");
-  else if (!results.empty() && results.front().statistics.n_supports == 0)
+  else if (ev.pantographs.front().statistics && ev.pantographs.front().statistics->n_supports == 0)
     std::printf(
         "\nnote: no registration (steady-arm) node lies in the section [%g, %g] m: "
         "no uplift at support\n",
-        section.x_start, section.x_end);
+        ev.pantographs.front().section.x_start, ev.pantographs.front().section.x_end);
+  if (!ev.ranges.empty())
+    for (const PantographEvaluation& e : ev.pantographs)
+      print_acceptance(e, ev.run.evaluation_section.value_or(ev.section));
 }
 
 // Rank 0's whole work: read, compute, print. Throws InputError for bad files/arguments.
 void stats_on_this_rank(const CommandLine& cl) {
-  const StatsArguments& args = cl.stats;
-  const io::ContactRun run =
-      args.steps ? io::read_contact_run_steps(args.file) : io::read_contact_run(args.file);
-  post::EvaluationSection section;
-  if (args.section) {
-    section = {(*args.section)[0], (*args.section)[1]};
-  } else if (run.evaluation_section) {
-    section = *run.evaluation_section;
-  } else {
-    throw InputError({args.file, 0, "evaluation_start"},
-                     "the run sets no evaluation section (root attributes evaluation_start, "
-                     "evaluation_end absent or 0): give one with --section X0 X1 (m along "
-                     "the path)");
-  }
-  post::ContactStatisticsOptions options;
-  options.dt = run.dt;
-  options.cutoff_hz = args.cutoff_hz;
-  options.section = section;
-  std::vector<PantographResult> results;
-  for (const post::PantographRecord& p : run.pantographs) {
-    try {
-      results.push_back({&p, post::contact_statistics(p, run.registration_points, options)});
-    } catch (const InputError& e) {
-      // Name the file, and the dataset or option the library's key stands for.
-      const std::string& k = e.where().key;
-      const std::string key = k == "cutoff" ? "--cutoff"
-                              : k == "dt"   ? io::contact_run_times_dataset()
-                                            : k;
-      throw InputError({args.file, 0, key}, e.message());
-    }
-  }
-  if (args.json)
-    print_json(results, section);
+  const RunEvaluation ev = evaluate_run(cl.stats);
+  if (cl.stats.json)
+    print_json(ev);
   else
-    print_table(args.file, run, results, section, args);
+    print_table(cl.stats.file, ev, cl.stats);
   std::fflush(stdout);
 }
 
 }  // namespace
 
 void command_stats(MPI_Comm comm, const CommandLine& cl) {
-  const int rank = mpi_rank(comm);
-  std::exception_ptr failure;
-  int failed = 0;
-  if (rank == 0) {
-    try {
-      stats_on_this_rank(cl);
-    } catch (...) {
-      failure = std::current_exception();
-      failed = 1;
-    }
-  }
-  // Every rank leaves alike: with rank 0's exception there, an InputError elsewhere (main
-  // prints rank 0's message only).
-  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
-  if (failure) std::rethrow_exception(failure);
-  if (failed) throw InputError({cl.stats.file, 0, ""}, "catena stats failed on rank 0");
+  on_rank_zero(comm, cl.stats.file, [&] { stats_on_this_rank(cl); });
 }
 
 }  // namespace catena::app

@@ -13,6 +13,12 @@ void command_run(MPI_Comm comm, const CommandLine& cl);
 // Collective; rank 0 reads the file and prints. `catena stats`: EN 50318 contact-force
 // statistics per pantograph of a dynamic run's output (command_stats.cpp).
 void command_stats(MPI_Comm comm, const CommandLine& cl);
+// Collective; rank 0 reads and writes. `catena export`: a dynamic run's contact-force series
+// and statistics as CSV (command_export.cpp).
+void command_export(MPI_Comm comm, const CommandLine& cl);
+// Collective; rank 0 reads and draws. `catena plot`: the figures of a run's output
+// (contact force, spectrum, uplift at supports, static shape; command_plot.cpp).
+void command_plot(MPI_Comm comm, const CommandLine& cl);
 // Collective; rank 0 prints. `catena elasticity`: the static elasticity curve of one span
 // of a catenary scene (command_elasticity.cpp).
 void command_elasticity(MPI_Comm comm, const CommandLine& cl);

@@ -20,6 +20,24 @@ constexpr const char* kMemoryOption =
                         (docs/scene.md, "Memory"); off: no check
 )";
 
+// The evaluation options of the commands that read a run's output (stats, export, plot).
+constexpr const char* kPostOptions =
+    R"(  --section X0 X1       evaluation section along the path, m (default: the run's
+                        evaluation_start/evaluation_end; required if the run sets none)
+  --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
+                        at the cutoff; the sampling rate must be >= 10 x the cutoff)
+  --series S            samples (default): the output's samples; steps: the contact
+                        force of every step (fixed steps), the uplift from the samples
+                        interpolated: fine statistics from a run whose fields are written
+                        at a coarse output.interval
+)";
+
+constexpr const char* kRangesOption =
+    R"(  --ranges R            acceptance ranges to check: en50318 (the EN 50318 reference
+                        case at 250 and 300 km/h) or none (default: the scene's
+                        catenary.acceptance)
+)";
+
 struct CommandHelp {
   const char* name;
   const char* usage;    // its line(s) under "Usage:"
@@ -59,21 +77,43 @@ const CommandHelp* commands() {
        false},
       {"stats",
        "  catena stats OUT.h5 [--json] [--section X0 X1] [--cutoff HZ] [--series "
-       "samples|steps]\n",
-       R"(  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5
-          (serial: run it without mpirun)
+       "samples|steps]\n"
+       "               [--ranges en50318|none]\n",
+       R"(  stats   EN 50318 contact-force statistics per pantograph of a dynamic run's OUT.h5,
+          checked against the acceptance ranges when the scene declares them
+          (catenary.acceptance); an unfinished run over the part it covered (serial:
+          run it without mpirun)
 )",
-       R"(Options of stats:
+       std::string(R"(Options of stats:
   --json                print JSON instead of a table
-  --section X0 X1       evaluation section along the path, m (default: the run's
-                        evaluation_start/evaluation_end; required if the run sets none)
-  --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
-                        at the cutoff; the sampling rate must be >= 10 x the cutoff)
-  --series S            samples (default): the output's samples; steps: the contact
-                        force of every step (fixed steps), the uplift from the samples
-                        interpolated: fine statistics from a run whose fields are written
-                        at a coarse output.interval
+)") + kPostOptions +
+           kRangesOption,
+       false},
+      {"export",
+       "  catena export OUT.h5 [--csv] [-o PREFIX] [--section X0 X1] [--cutoff HZ] [--series S]\n"
+       "               [--ranges en50318|none]\n",
+       R"(  export  a dynamic run's contact-force series (time, position, raw and filtered force
+          per pantograph) and its statistics as CSV: PREFIX_contact.csv,
+          PREFIX_statistics.csv
 )",
+       std::string(R"(Options of export:
+  --csv                 CSV files (the one format; the default)
+  -o PREFIX             the files' prefix (default: OUT.h5 without .h5)
+)") + kPostOptions +
+           kRangesOption,
+       false},
+      {"plot",
+       "  catena plot  OUT.h5 [-o PREFIX] [--format png,pdf] [--section X0 X1] [--cutoff HZ]\n"
+       "               [--series S]\n",
+       R"(  plot    the figures of a run or a static result: contact force against position,
+          its spectrum and the uplift at the supports per pantograph, the static shape
+          (a run without pantographs: the node that moves most): PREFIX_NAME.png
+          (needs /usr/bin/python3 with matplotlib and h5py)
+)",
+       std::string(R"(Options of plot:
+  -o PREFIX             the files' prefix (default: OUT.h5 without .h5)
+  --format F            png (default), pdf, or png,pdf
+)") + kPostOptions,
        false},
       {"modes",
        R"(  catena modes SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--count N] [PETSc options]
@@ -191,6 +231,8 @@ constexpr const char* kExamples = R"(Examples:
   mpirun -n 2 catena run meshes/default.yaml -o default.h5
   mpirun -n 4 catena run meshes/default.yaml --set lines[0].elements=2000 -log_view
   catena stats en50318_250.h5 --section 240 360
+  catena plot en50318_250.h5 --format png,pdf
+  catena export en50318_250.h5 -o results/en50318_250
   mpirun -n 2 catena elasticity meshes/simple_catenary.yaml --step 0.5 --json
   mpirun -n 2 catena study meshes/taut_string.yaml --vary integrator.dt=4e-4,2e-4,1e-4
 )";

@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
         catena::app::command_check(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "stats") {
         catena::app::command_stats(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "export") {
+        catena::app::command_export(PETSC_COMM_WORLD, cl);
+      } else if (cl.command == "plot") {
+        catena::app::command_plot(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "elasticity") {
         catena::app::command_elasticity(PETSC_COMM_WORLD, cl);
       } else if (cl.command == "modes") {

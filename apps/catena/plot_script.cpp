@@ -62,4 +62,30 @@ void draw_plot(const std::string& script, const std::vector<std::string>& args,
                 command.c_str());
 }
 
+bool draw_figures(const std::string& script, const std::vector<std::string>& args) {
+  const std::string python = "/usr/bin/python3";
+  const std::string path = script_path(script);
+  std::vector<std::string> words = {python, path};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);  // the script's lines follow ours
+  pid_t pid = 0;
+  int status = -1;
+  if (access(path.c_str(), R_OK) != 0) {
+    std::fprintf(stderr, "catena: the plot script %s is missing\n", path.c_str());
+    return false;
+  }
+  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) {
+    std::fprintf(stderr,
+                 "catena: cannot start %s (install Debian's python3-matplotlib and "
+                 "python3-h5py)\n",
+                 python.c_str());
+    return false;
+  }
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 }  // namespace catena::app

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -122,19 +123,26 @@ std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_c
 
 }  // namespace
 
-ContactRun read_contact_run(const std::string& path) {
+ContactRun read_contact_run(const std::string& path, UnfinishedRuns unfinished) {
   const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
   layout::require_transient_format(r.root(), path);
-  check_is_complete_dynamic_output(r);
+  if (unfinished == UnfinishedRuns::refused) check_is_complete_dynamic_output(r);
 
   ContactRun run;
+  run.status = dynamic_output_status(r);
+  if (r.has_attribute(r.root(), root_attribute::acceptance))
+    run.acceptance =
+        r.text_attribute(r.root(), root_attribute::acceptance, root_attribute::acceptance);
   if (!r.has_link(time_name)) r.fail(time_name, "missing: not a Catena dynamic output");
   const std::vector<hsize_t> time_dims = r.dims(time_name);
   if (time_dims.size() != 1) r.fail(time_name, "not one-dimensional");
   const hsize_t n = time_dims[0];
   run.n_samples = static_cast<std::size_t>(n);
-  run.dt = uniform_interval(r, r.doubles(time_name, {n}));
+  const std::vector<double> times = r.doubles(time_name, {n});
+  run.dt = uniform_interval(r, times);
+  run.t_end = times.back();
+  run.time = times;
   run.evaluation_section = evaluation_section(r);
 
   for (const char* name : {contact_force_name, contact_position_name})
@@ -207,8 +215,8 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& y, d
 
 }  // namespace
 
-ContactRun read_contact_run_steps(const std::string& path) {
-  ContactRun run = read_contact_run(path);
+ContactRun read_contact_run_steps(const std::string& path, UnfinishedRuns unfinished) {
+  ContactRun run = read_contact_run(path, unfinished);
   const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
   const std::vector<double> sample_times = r.doubles(time_name, {run.n_samples});
@@ -226,7 +234,10 @@ ContactRun read_contact_run_steps(const std::string& path) {
   // The series: the first sample (the start), then every step after it.
   std::vector<double> t{sample_times.front()};
   std::vector<std::size_t> rows{0};
-  for (std::size_t k = 0; k < step_time.size(); ++k)
+  // An unfinished run may have flushed steps beyond its last sample: no positions there.
+  const double t_last = run.status == "complete" ? std::numeric_limits<double>::infinity()
+                                                 : sample_times.back() + 1e-6 * run.dt;
+  for (std::size_t k = 0; k < step_time.size() && step_time[k] <= t_last; ++k)
     if (step_time[k] > t.front()) {
       t.push_back(step_time[k]);
       rows.push_back(k + 1);  // 0: the sample; k + 1: step k
@@ -282,10 +293,16 @@ ContactRun read_contact_run_steps(const std::string& path) {
     point.z = std::move(z);
   }
   run.n_samples = n;
+  run.time = std::move(t);
   return run;
 }
 
 const char* contact_run_times_dataset() { return time_name; }
+
+bool has_contact_forces(const std::string& path) {
+  const Hdf5ErrorPrintingSuppressed quiet;
+  return Reader(path).has_link(contact_force_name);
+}
 
 post::EvaluationSection evaluation_section_or_record(const ContactRun& run) {
   if (run.evaluation_section) return *run.evaluation_section;

@@ -186,9 +186,10 @@ class TimeSeriesFile {
   FileHandle file_;
 };
 
-// Throws unless the file is the output of a dynamic run that completed (root attributes
-// analysis = "dynamic", status = "complete"); call after the format check.
-inline void check_is_complete_dynamic_output(const TimeSeriesFile& r) {
+// The status of a dynamic run's output (root attribute status: "running" while it runs or
+// after a crash, then "complete", "interrupted" or "failed: ..."); throws unless the file is
+// a dynamic run's output (analysis = "dynamic"). Call after the format check.
+inline std::string dynamic_output_status(const TimeSeriesFile& r) {
   const std::string not_dynamic = "not a Catena dynamic output";
   const char* analysis_name = transient_layout::root_attribute::analysis;
   if (!r.has_attribute(r.root(), analysis_name))
@@ -199,9 +200,15 @@ inline void check_is_complete_dynamic_output(const TimeSeriesFile& r) {
   const char* status_name = transient_layout::root_attribute::status;
   if (!r.has_attribute(r.root(), status_name))
     r.fail(status_name, "missing: the file was not written by a complete dynamic run");
-  const std::string status = r.text_attribute(r.root(), status_name, status_name);
+  return r.text_attribute(r.root(), status_name, status_name);
+}
+
+// Throws unless the file is the output of a dynamic run that completed (root attributes
+// analysis = "dynamic", status = "complete"); call after the format check.
+inline void check_is_complete_dynamic_output(const TimeSeriesFile& r) {
+  const std::string status = dynamic_output_status(r);
   if (status != "complete")
-    r.fail(status_name,
+    r.fail(transient_layout::root_attribute::status,
            "the run's status is '" + status + "', not 'complete': statistics need a finished run");
 }
 

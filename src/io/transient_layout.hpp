@@ -102,6 +102,8 @@ inline constexpr const char* analysis = "analysis";            // string: analys
 inline constexpr const char* status = "status";                // string: "running", then the end
 inline constexpr const char* evaluation_start = "evaluation_start";  // float64, m
 inline constexpr const char* evaluation_end = "evaluation_end";      // float64, m
+// string: the acceptance ranges of the statistics ("en50318"); absent: none
+inline constexpr const char* acceptance = "acceptance";
 // After the run, the work statistics (float64) the caller of TransientWriter::close names.
 }  // namespace root_attribute
 inline constexpr const char* analysis_dynamic = "dynamic";

@@ -435,6 +435,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     write_string_attribute(root, attribute::status, layout::status_running);
     write_double_attribute(root, attribute::evaluation_start, model.evaluation_start);
     write_double_attribute(root, attribute::evaluation_end, model.evaluation_end);
+    if (!model.acceptance.empty())
+      write_string_attribute(root, attribute::acceptance, model.acceptance);
   });
   flush();
 }

@@ -24,7 +24,7 @@ const std::vector<std::string>& catenary_keys() {
       "dimension",     "spans",          "span_length", "span_lengths",       "system_height",
       "presag",        "presag_between", "stagger",     "element_length",     "contact_wire",
       "messenger",     "droppers",       "steady_arms", "messenger_supports", "evaluation_spans",
-      "run_out_spans", "stitch"};
+      "run_out_spans", "stitch",         "acceptance"};
   return keys;
 }
 
@@ -435,6 +435,17 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
     d.stitch = read_stitch(stitch, d.span_lengths);
   if (const Field spans = catenary.child("evaluation_spans"); spans.present())
     d.evaluation_spans = read_evaluation_spans(spans, static_cast<int>(d.span_lengths.size()));
+  if (const Field acceptance = catenary.child("acceptance"); acceptance.present()) {
+    if (acceptance.text() != "en50318")
+      acceptance.fail("unknown acceptance ranges '" + acceptance.text() +
+                      "'; accepted: en50318 (the EN 50318 reference case's ranges at 250 and "
+                      "300 km/h, checked by `catena stats`)");
+    if (!d.evaluation_spans)
+      acceptance.fail(
+          "the acceptance ranges hold over an evaluation section: give evaluation_spans "
+          "(EN 50318: the middle two spans of ten, [5, 6])");
+    build.model.acceptance = acceptance.text();
+  }
 
   build_catenary(d, catenary, build);
 }

@@ -169,7 +169,11 @@ std::string describe(const Model& model, int n_ranks_running) {
           "before the analysis (docs/catenary.md)");
     if (model.evaluation_end > model.evaluation_start)
       t.row("evaluation", "contact wire from " + format_number(model.evaluation_start) + " m to " +
-                              format_number(model.evaluation_end) + " m");
+                              format_number(model.evaluation_end) + " m" +
+                              (model.acceptance == "en50318"
+                                   ? "; the EN 50318 reference case: catena stats checks the "
+                                     "statistics at 250 and 300 km/h against its ranges"
+                                   : ""));
   }
   detail::describe_moving(model, t, notes);
   if (model.analysis == AnalysisType::dynamic && !detail::structure_is_damped(model))

@@ -14,7 +14,12 @@ stats_run.h5: 5 s at 1 kHz, two pantographs on a straight line from x = 0:
   registration nodes every 60 m from 0 to 360 m (plus 3 messenger nodes), each lifted by
   0.05 exp(-((x_leading - x_node) / 10 m)^2) m as the leading pantograph passes;
   evaluation section [100, 300] m.
-The variants, each breaking one thing: stats_running.h5 (status "running"),
+The variants, each changing one thing: stats_running.h5 (status "running": a run still
+going or crashed, read with a warning), stats_acceptance.h5 (root attribute acceptance =
+"en50318": the EN 50318 ranges checked), stats_unknown_acceptance.h5 ("en50367"),
+stats_interrupted.h5 (status "interrupted", the record ending at 3 s: the leading head at
+208 m, the trailing one at 250 m, inside the section; acceptance "en50318"),
+stats_interrupted_early.h5 (interrupted at 1 s, before either head reaches the section),
 stats_no_section.h5 (no evaluation section), stats_coarse.h5 (100 Hz sampling),
 stats_static.h5 (a static result), stats_no_pantographs.h5 (no contact datasets),
 stats_old_format.h5 (no format attribute: an older Catena's), stats_other_format.h5
@@ -48,8 +53,8 @@ FORMAT = "catena-transient-1"
 
 
 def write(path, dt=DT, status="complete", section=SECTION, static=False, contact=True,
-          file_format=FORMAT):
-    t = np.arange(0, round(DURATION / dt) + 1) * dt
+          file_format=FORMAT, duration=DURATION, acceptance=None):
+    t = np.arange(0, round(duration / dt) + 1) * dt
     x, force = signals(t)
     reference = np.zeros((len(REGISTRATION_X) + 3, 3))
     reference[: len(REGISTRATION_X), 0] = REGISTRATION_X
@@ -70,6 +75,8 @@ def write(path, dt=DT, status="complete", section=SECTION, static=False, contact
         f.attrs["status"] = status
         if section is not None:
             f.attrs["evaluation_start"], f.attrs["evaluation_end"] = section
+        if acceptance is not None:
+            f.attrs["acceptance"] = acceptance
         f["time"] = t
         f["mesh/node_positions"] = reference
         f["mesh/registration_nodes"] = np.arange(len(REGISTRATION_X), dtype=np.int64)
@@ -94,6 +101,11 @@ def main():
     write(os.path.join(out, "stats_no_pantographs.h5"), contact=False)
     write(os.path.join(out, "stats_old_format.h5"), file_format=None)
     write(os.path.join(out, "stats_other_format.h5"), file_format="catena-transient-0")
+    write(os.path.join(out, "stats_acceptance.h5"), acceptance="en50318")
+    write(os.path.join(out, "stats_unknown_acceptance.h5"), acceptance="en50367")
+    write(os.path.join(out, "stats_interrupted.h5"), status="interrupted", duration=3.0,
+          acceptance="en50318")
+    write(os.path.join(out, "stats_interrupted_early.h5"), status="interrupted", duration=1.0)
 
 
 if __name__ == "__main__":

@@ -227,6 +227,12 @@ TEST(CatenaryBuilder, SpatialCatenaryWithStaggerJoinsTheSpansAtTheSupports) {
   EXPECT_EQ(m.catenary->dimension, 3);
 }
 
+TEST(CatenaryBuilder, AcceptanceRangesAreTheScenesDeclaration) {
+  EXPECT_EQ(read_scene(scene_file, {}).acceptance, "");
+  const Model m = read_scene(scene_file, {"catenary.acceptance=en50318"});
+  EXPECT_EQ(m.acceptance, "en50318");
+}
+
 TEST(CatenaryBuilder, SpatialCatenaryWithoutStaggerSharesTheSupportNodes) {
   const Model m = read_scene(scene_file, {"catenary.dimension=3"});
   EXPECT_EQ(m.nodes.size(), 2u * (n_spans * elements_per_span + 1));
@@ -499,6 +505,10 @@ TEST(CatenaryBuilder, BadInputNamesTheKeyAndTheAcceptedRange) {
       {{"catenary.messenger_supports={fixed: true, stiffness: 5}"},
        {"catenary.messenger_supports.stiffness", "a fixed messenger support has no stiffness"}},
       {{"catenary.evaluation_spans=[3, 2]"}, {"catenary.evaluation_spans[1]", "comes before"}},
+      {{"catenary.acceptance=en50367"},
+       {"catenary.acceptance", "unknown acceptance ranges 'en50367'", "accepted: en50318"}},
+      {{"catenary.evaluation_spans=~", "catenary.acceptance=en50318"},
+       {"catenary.acceptance", "give evaluation_spans", "[5, 6]"}},
       {{"catenary.droppers.spacing=5"}, {"catenary.droppers.spacing", "unknown key"}},
       {{"catenary.droppers.model=rope"}, {"catenary.droppers.model", "accepted: bar"}},
       {{"catenary.droppers.EI=0.02"}, {"catenary.droppers.EI", "cable droppers only"}},

@@ -259,6 +259,9 @@ struct Model {
   // The span of the line the contact statistics are evaluated on, [x_start, x_end] in m
   // along the first contact's path (both 0: not set).
   double evaluation_start = 0.0, evaluation_end = 0.0;
+  // The acceptance ranges the run's contact-force statistics are checked against by
+  // `catena stats` (catenary.acceptance): "en50318", or empty for none.
+  std::string acceptance;
 
   AnalysisType analysis = AnalysisType::static_equilibrium;
   StaticOptions static_options;  // statics, and the initial equilibrium of dynamics

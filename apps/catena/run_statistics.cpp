@@ -1,0 +1,106 @@
+#include "run_statistics.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "catena/core/error.hpp"
+#include "catena/io/run_files.hpp"
+#include "catena/post/butterworth.hpp"
+
+namespace catena::app {
+namespace {
+
+constexpr double kmh_per_ms = 3.6;
+
+// The library's keys name its arguments; the user knows the file's datasets and the options.
+[[noreturn]] void rethrow_naming_file(const InputError& e, const std::string& file) {
+  const std::string& k = e.where().key;
+  const std::string key = k == "cutoff" ? "--cutoff"
+                          : k == "dt"   ? io::contact_run_times_dataset()
+                                        : k;
+  throw InputError({file, 0, key}, e.message());
+}
+
+post::EvaluationSection requested_section(const StatsArguments& args, const io::ContactRun& run) {
+  if (args.section) return {(*args.section)[0], (*args.section)[1]};
+  if (run.evaluation_section) return *run.evaluation_section;
+  throw InputError({args.file, 0, "evaluation_start"},
+                   "the run sets no evaluation section (root attributes evaluation_start, "
+                   "evaluation_end absent or 0): give one with --section X0 X1 (m along "
+                   "the path)");
+}
+
+std::string ranges_to_apply(const StatsArguments& args, const io::ContactRun& run) {
+  if (args.ranges) return *args.ranges == "none" ? "" : *args.ranges;
+  if (run.acceptance.empty() || run.acceptance == "en50318") return run.acceptance;
+  throw InputError({args.file, 0, "acceptance"},
+                   "unknown acceptance ranges '" + run.acceptance +
+                       "' (root attribute acceptance); accepted: en50318. Override with "
+                       "--ranges en50318|none");
+}
+
+}  // namespace
+
+RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage) {
+  // A run still going (or stopped) writes OUT.part.h5: point there from OUT.h5.
+  const std::string partial = io::partial_output_path(args.file);
+  if (!std::filesystem::exists(args.file) && std::filesystem::exists(partial))
+    throw InputError({args.file, 0, ""},
+                     "no such file; the run has not finished: its output so far is " + partial +
+                         " (give that file, or continue the run with catena run --restart)");
+  RunEvaluation out;
+  const auto unfinished = io::UnfinishedRuns::accepted;
+  out.run = args.steps ? io::read_contact_run_steps(args.file, unfinished)
+                       : io::read_contact_run(args.file, unfinished);
+  out.finished = out.run.status == "complete";
+  const bool covered_part = coverage == SectionCoverage::covered || !out.finished;
+  out.section = coverage == SectionCoverage::covered && !args.section
+                    ? io::evaluation_section_or_record(out.run)
+                    : requested_section(args, out.run);
+  out.section_given = args.section.has_value();
+  out.ranges = ranges_to_apply(args, out.run);
+
+  post::ContactStatisticsOptions options;
+  options.dt = out.run.dt;
+  options.cutoff_hz = args.cutoff_hz;
+  for (const post::PantographRecord& p : out.run.pantographs) {
+    PantographEvaluation e;
+    e.pantograph = &p;
+    e.section = out.section;
+    if (covered_part) {
+      // Only what the record covers: a partial section, or none.
+      const auto [lo, hi] = std::minmax_element(p.position.begin(), p.position.end());
+      e.section = {std::max(out.section.x_start, *lo), std::min(out.section.x_end, *hi)};
+    }
+    options.section = e.section;
+    try {
+      e.filtered_force = post::butterworth_lowpass_zero_phase(p.force, out.run.dt, args.cutoff_hz);
+      if (!covered_part || e.section.x_end > e.section.x_start)
+        e.statistics = post::contact_statistics(p, out.run.registration_points, options);
+    } catch (const InputError& error) {
+      rethrow_naming_file(error, args.file);
+    }
+    if (e.statistics && out.ranges == "en50318")
+      e.acceptance = post::check_en50318(*e.statistics, p.speed * kmh_per_ms);
+    out.pantographs.push_back(std::move(e));
+  }
+  const bool any = std::any_of(out.pantographs.begin(), out.pantographs.end(),
+                               [](const PantographEvaluation& e) { return e.statistics; });
+  if (!any && coverage == SectionCoverage::whole) {
+    std::ostringstream os;
+    os << "the run stopped (status '" << out.run.status << "') at t = " << out.run.t_end
+       << " s, before any pantograph reached the evaluation section [" << out.section.x_start
+       << ", " << out.section.x_end << "] m: no statistics (continue it with catena run "
+       << "--restart, or give --section X0 X1 within the part run)";
+    throw InputError({args.file, 0, "status"}, os.str());
+  }
+  return out;
+}
+
+std::size_t checks_passed(const std::vector<post::AcceptanceCheck>& checks) {
+  return static_cast<std::size_t>(std::count_if(
+      checks.begin(), checks.end(), [](const post::AcceptanceCheck& c) { return c.pass; }));
+}
+
+}  // namespace catena::app

@@ -1,0 +1,59 @@
+#pragma once
+// What `catena stats`, `catena export` and `catena plot` compute from a dynamic run's
+// output: per pantograph, the filtered contact force of the whole record, the EN 50318
+// statistics over the evaluation section and, when the scene declares them (or --ranges),
+// the acceptance ranges' checks. A run that did not complete (interrupted, failed, or
+// crashed while running) is evaluated over the part of the section each pantograph covered.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/io/contact_run_reader.hpp"
+#include "catena/post/contact_statistics.hpp"
+#include "catena/post/en50318_ranges.hpp"
+#include "cli.hpp"
+
+namespace catena::app {
+
+struct PantographEvaluation {
+  const post::PantographRecord* pantograph = nullptr;  // in RunEvaluation::run
+  // The section evaluated: the requested one, for an unfinished run cut to the contact
+  // positions the pantograph covered.
+  post::EvaluationSection section;
+  // None: an unfinished run stopped before this pantograph reached the section.
+  std::optional<post::ContactStatistics> statistics;
+  // The acceptance ranges' checks at its speed; none without ranges or at another speed.
+  std::optional<std::vector<post::AcceptanceCheck>> acceptance;
+  std::vector<double> filtered_force;  // N, the whole record, low-pass filtered at the cutoff
+};
+
+struct RunEvaluation {
+  io::ContactRun run;
+  post::EvaluationSection section;  // requested: --section, else the run's
+  bool section_given = false;       // by --section
+  bool finished = true;             // status "complete"
+  std::string ranges;               // the acceptance ranges applied ("en50318"), or empty
+  std::vector<PantographEvaluation> pantographs;  // in column order
+};
+
+// What a pantograph's statistics are taken over.
+enum class SectionCoverage {
+  // The whole section of a complete run (`catena stats`: the statistics are the run's
+  // answer), the part covered of an unfinished one.
+  whole,
+  // The part each pantograph covered, none where it covered nothing, and without a section
+  // the whole record (`catena export` and `catena plot`: the series matter as much).
+  covered,
+};
+
+// Not collective. Reads args.file and evaluates it. Throws catena::InputError naming the
+// file and the dataset or option at fault (reader errors; a cutoff the sampling cannot
+// carry; and with SectionCoverage::whole: no section, a finished run whose pantograph never
+// lies in the section, an unfinished run none of whose pantographs reached it).
+RunEvaluation evaluate_run(const StatsArguments& args,
+                           SectionCoverage coverage = SectionCoverage::whole);
+
+// Not collective. "8 of 8 in range" style count of `checks`.
+std::size_t checks_passed(const std::vector<post::AcceptanceCheck>& checks);
+
+}  // namespace catena::app
