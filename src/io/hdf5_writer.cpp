@@ -28,9 +28,9 @@
 #include "catena/core/version.hpp"
 #include "catena/io/atomic_file.hpp"
 #include "catena/io/output_error.hpp"
-#include "catena/model/element_kinds.hpp"
 #include "catenary_output.hpp"
 #include "collective_phase.hpp"
+#include "element_classes.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_parallel_write.hpp"
@@ -120,17 +120,6 @@ std::vector<int> support_rows_of(const std::vector<int>& my_support_nodes,
   return rows;
 }
 
-// Names of the element sets, sorted, so that the indices in /mesh/element_set do not
-// depend on the order in which the scene lists its lines.
-std::vector<std::string> element_set_names(const model::Model& model) {
-  std::vector<std::string> names;
-  for (const model::ElementDesc& element : model.elements)
-    if (!element.set.empty()) names.push_back(element.set);
-  std::sort(names.begin(), names.end());
-  names.erase(std::unique(names.begin(), names.end()), names.end());
-  return names;
-}
-
 std::size_t row_index(const RowBlock& block, std::int64_t k) {
   return static_cast<std::size_t>(block.begin + k);
 }
@@ -193,31 +182,8 @@ void write_mesh(const WriteContext& context, const RowBlock& node_block,
         return nodes;
       });
 
-  run_collective_phase(context.comm, [&] {
-    std::vector<std::int8_t> kinds;
-    for (std::int64_t k = 0; k < element_block.count; ++k)
-      kinds.push_back(static_cast<std::int8_t>(
-          model::element_kind_code(model.elements[row_index(element_block, k)].props)));
-    const DatasetHandle dataset = write_block_dataset<std::int8_t>(
-        context.file, {layout::element_kind, n_elements, 1}, element_block, kinds);
-    write_string_attribute({dataset.get(), context.file.path()}, "kinds",
-                           model::element_kind_names());
-  });
-  run_collective_phase(context.comm, [&] {
-    const std::vector<std::string> set_names = element_set_names(model);
-    std::vector<std::int32_t> set_indices;
-    for (std::int64_t k = 0; k < element_block.count; ++k) {
-      const std::string& set = model.elements[row_index(element_block, k)].set;
-      set_indices.push_back(
-          set.empty()
-              ? layout::no_set
-              : static_cast<std::int32_t>(
-                    std::lower_bound(set_names.begin(), set_names.end(), set) - set_names.begin()));
-    }
-    const DatasetHandle dataset = write_block_dataset<std::int32_t>(
-        context.file, {layout::element_set, n_elements, 1}, element_block, set_indices);
-    write_string_list_attribute({dataset.get(), context.file.path()}, "set_names", set_names);
-  });
+  run_collective_phase(context.comm,
+                       [&] { write_element_classes(context.file, model, element_block); });
 }
 
 // How the rows of the solution move from their owners to their writers.

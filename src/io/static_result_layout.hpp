@@ -17,8 +17,8 @@ inline constexpr const char* node_ids = mesh_layout::node_ids;
 inline constexpr const char* node_positions = mesh_layout::node_positions;
 inline constexpr const char* element_ids = mesh_layout::element_ids;
 inline constexpr const char* element_nodes = mesh_layout::element_nodes;
-inline constexpr const char* element_kind = "/mesh/element_kind";
-inline constexpr const char* element_set = "/mesh/element_set";
+inline constexpr const char* element_kind = mesh_layout::element_kind;
+inline constexpr const char* element_set = mesh_layout::element_set;
 
 inline constexpr const char* static_group = "/static";
 inline constexpr const char* positions = "/static/positions";
@@ -35,9 +35,7 @@ inline constexpr const char* reaction_moment = "/static/reaction_moment";
 
 inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
 
-// Values of /mesh/element_kind: model::element_kind_code; its attribute "kinds" lists the
-// names in code order (model::element_kind_names).
-// Value of /mesh/element_set for an element in no set.
-inline constexpr std::int32_t no_set = -1;
+// Values of /mesh/element_kind and /mesh/element_set: mesh_layout.hpp.
+inline constexpr std::int32_t no_set = mesh_layout::no_set;
 
 }  // namespace catena::io::static_layout

@@ -35,6 +35,10 @@ inline constexpr Dataset element_ids{mesh_layout::element_ids, nullptr};  // (n_
 // (n_elements, 2) int64: node indices (0-based rows) of the first and last node.
 inline constexpr Dataset element_nodes{mesh_layout::element_nodes, nullptr};
 inline constexpr int nodes_per_element = mesh_layout::nodes_per_element;
+// (n_elements,) int8 and int32: what each element is and the scene's set it belongs to
+// (mesh_layout.hpp, element_classes.hpp).
+inline constexpr Dataset element_kind{mesh_layout::element_kind, nullptr};
+inline constexpr Dataset element_set{mesh_layout::element_set, nullptr};
 // (n_constraints, 2) int64: node indices A and B of each constraint (B = −1: none). Only
 // with constraints.
 inline constexpr Dataset constraint_nodes{"/mesh/constraint_nodes", nullptr};

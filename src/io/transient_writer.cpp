@@ -13,6 +13,7 @@
 #include "catenary_output.hpp"
 #include "collective_hdf5_call.hpp"
 #include "collective_phase.hpp"
+#include "element_classes.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
@@ -373,6 +374,7 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
   }
   write_mesh(layout::element_ids, n_elements, 1, eb, element_ids);
   write_mesh(layout::element_nodes, n_elements, layout::nodes_per_element, eb, element_nodes);
+  write_element_classes(s.file, model, eb);
 
   if (s.has_constraints) {
     const RowBlock& cb = s.constraints.block();

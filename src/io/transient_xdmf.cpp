@@ -50,6 +50,10 @@ struct StoredNumber {
 };
 constexpr StoredNumber float64{"Float", 8, H5T_FLOAT};
 constexpr StoredNumber int64{"Int", 8, H5T_INTEGER};
+constexpr StoredNumber int32{"Int", 4, H5T_INTEGER};
+// /mesh/element_kind is stored as int8 and announced as int32, as in the static result's
+// XDMF: the readers let HDF5 convert on reading.
+constexpr StoredNumber int8{"Int", 1, H5T_INTEGER};
 
 std::string dimensions_text(const std::vector<std::int64_t>& dimensions) {
   std::string text;
@@ -114,6 +118,15 @@ class TransientXdmfText {
     data_item(12, layout::node_positions.path, {n_nodes, 3}, float64);
     xml_ << indent(10) << "</DataItem>\n";
     end_attribute();
+    // From the static equilibrium the run starts from (sample 0): the motion itself, which a
+    // magnified Warp By Vector shows without the static sag.
+    begin_attribute("displacement_from_static", "Vector", "Node");
+    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
+         << dimensions_text({n_nodes, 3}) << "\">\n";
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, 0);
+    xml_ << indent(10) << "</DataItem>\n";
+    end_attribute();
     sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
     sampled_attribute("slopes", "Vector", "Node", layout::slopes.path, {n_nodes, 3}, k);
     sampled_attribute("axial_force", "Scalar", "Cell", layout::axial_force.path, {n_elements}, k);
@@ -122,6 +135,12 @@ class TransientXdmfText {
     end_attribute();
     begin_attribute("element_ids", "Scalar", "Cell");
     data_item(10, layout::element_ids.path, {n_elements}, int64);
+    end_attribute();
+    begin_attribute("element_kind", "Scalar", "Cell");
+    data_item(10, layout::element_kind.path, {n_elements}, int32);
+    end_attribute();
+    begin_attribute("element_set", "Scalar", "Cell");
+    data_item(10, layout::element_set.path, {n_elements}, int32);
     end_attribute();
     xml_ << "      </Grid>\n";
   }
@@ -218,6 +237,8 @@ void check_datasets(const std::string& path, const SeriesShape& shape) {
       {layout::node_positions.path, {n, 3}, float64},
       {layout::element_ids.path, {e}, int64},
       {layout::element_nodes.path, {e, layout::nodes_per_element}, int64},
+      {layout::element_kind.path, {e}, int8},
+      {layout::element_set.path, {e}, int32},
       {layout::positions.path, {s, n, 3}, float64},
       {layout::velocities.path, {s, n, 3}, float64},
       {layout::slopes.path, {s, n, 3}, float64},
@@ -237,7 +258,8 @@ void check_datasets(const std::string& path, const SeriesShape& shape) {
     if (H5Tget_class(type.get()) != dataset.number.hdf5_class ||
         H5Tget_size(type.get()) != static_cast<std::size_t>(dataset.number.precision))
       throw Error("'" + path + "' at " + dataset.name + ": stored type is not " +
-                  (dataset.number.hdf5_class == H5T_FLOAT ? "float64" : "int64"));
+                  (dataset.number.hdf5_class == H5T_FLOAT ? "float" : "int") +
+                  std::to_string(8 * dataset.number.precision));
   }
 }
 

@@ -180,6 +180,8 @@ TEST_F(TransientWriterTest, WritesTheDocumentedObjectsAndRootAttributes) {
                                               "mesh/node_positions",
                                               "mesh/element_ids",
                                               "mesh/element_nodes",
+                                              "mesh/element_kind",
+                                              "mesh/element_set",
                                               "mesh/registration_nodes",
                                               "time",
                                               "samples",

@@ -16,6 +16,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "catena/core/error.hpp"
@@ -57,9 +58,11 @@ void write_dataset(hid_t file, const char* name, const std::vector<hsize_t>& dim
   std::vector<Value> values(n_values);
   for (hsize_t i = 0; i < n_values; ++i) values[i] = static_cast<Value>(i);
   if (n_values > 0) {
-    ASSERT_GE(H5Dwrite(dataset.get(), type == H5T_IEEE_F64LE ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64,
-                       H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-              0)
+    hid_t memory = H5T_NATIVE_DOUBLE;
+    if constexpr (std::is_same_v<Value, std::int64_t>) memory = H5T_NATIVE_INT64;
+    if constexpr (std::is_same_v<Value, std::int32_t>) memory = H5T_NATIVE_INT32;
+    if constexpr (std::is_same_v<Value, std::int8_t>) memory = H5T_NATIVE_INT8;
+    ASSERT_GE(H5Dwrite(dataset.get(), memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0)
         << name;
   }
 }
@@ -87,6 +90,8 @@ void write_series_file(const fs::path& path, const std::vector<double>& times,
   write_dataset<double>(file.get(), "/mesh/node_positions", {n, 3}, H5T_IEEE_F64LE, false);
   write_dataset<std::int64_t>(file.get(), "/mesh/element_ids", {e}, H5T_STD_I64LE, false);
   write_dataset<std::int64_t>(file.get(), "/mesh/element_nodes", {e, 2}, H5T_STD_I64LE, false);
+  write_dataset<std::int8_t>(file.get(), "/mesh/element_kind", {e}, H5T_STD_I8LE, false);
+  write_dataset<std::int32_t>(file.get(), "/mesh/element_set", {e}, H5T_STD_I32LE, false);
   for (const char* name : {"/samples/positions", "/samples/velocities", "/samples/slopes"})
     write_dataset<double>(file.get(), name, {s, n, 3}, H5T_IEEE_F64LE, true);
   write_dataset<double>(file.get(), "/samples/axial_force", {s, e}, H5T_IEEE_F64LE, true);
@@ -150,13 +155,16 @@ void check_hdf_references(const std::string& xml, const fs::path& hdf5_path,
     ASSERT_FALSE(dims.empty()) << "the XDMF refers to a missing dataset " << dataset;
     EXPECT_EQ(numbers((*match)[1]), dims) << dataset;
   }
-  // Per grid: element_nodes, positions twice (geometry and displacement), node_positions,
-  // velocities, slopes, axial_force, node_ids, element_ids.
-  EXPECT_EQ(n_items, 9 * count_of(xml, "GridType=\"Uniform\""));
+  // Per grid: element_nodes, positions four times (geometry, displacement, and sample k and
+  // sample 0 of displacement_from_static), node_positions, velocities, slopes, axial_force,
+  // node_ids, element_ids, element_kind, element_set.
+  EXPECT_EQ(n_items, 13 * count_of(xml, "GridType=\"Uniform\""));
 }
 
-// Every HyperSlab in grid k selects row k of its dataset, all of the row, stride 1.
+// Every HyperSlab in grid k selects row k of its dataset, all of the row, stride 1 — but
+// one: displacement_from_static's static position, row 0 of /samples/positions.
 void check_hyperslabs(const std::string& grid, std::int64_t k, hid_t file) {
+  int static_rows = 0;
   const std::regex hyperslab(
       R"re(<DataItem ItemType="HyperSlab" Dimensions="([^"]*)"[^>]*>(?:<!--[^>]*-->)?\s*)re"
       R"re(<DataItem Dimensions="3 ([0-9]+)"[^>]*Format="XML">([^<]*)</DataItem>\s*)re"
@@ -176,6 +184,10 @@ void check_hyperslabs(const std::string& grid, std::int64_t k, hid_t file) {
     const std::vector<std::int64_t> count(selection.begin() + 2 * rank, selection.end());
     std::vector<std::int64_t> expected_start(rank, 0), row = dims;
     expected_start[0] = k;
+    if (k > 0 && start[0] == 0 && dataset == "/samples/positions") {
+      ++static_rows;
+      expected_start[0] = 0;
+    }
     row[0] = 1;
     EXPECT_EQ(start, expected_start) << dataset << " in grid " << k;
     EXPECT_EQ(stride, std::vector<std::int64_t>(rank, 1)) << dataset;
@@ -185,9 +197,11 @@ void check_hyperslabs(const std::string& grid, std::int64_t k, hid_t file) {
   }
   std::sort(selected.begin(), selected.end());
   EXPECT_EQ(selected, (std::vector<std::string>{"/samples/axial_force", "/samples/positions",
+                                                "/samples/positions", "/samples/positions",
                                                 "/samples/positions", "/samples/slopes",
                                                 "/samples/velocities"}))
       << "grid " << k;
+  EXPECT_EQ(static_rows, k > 0 ? 1 : 0) << "grid " << k;
 }
 
 class TransientXdmfTest : public ::testing::Test {
@@ -235,9 +249,13 @@ TEST_F(TransientXdmfTest, OneGridPerSampleSelectingItsRow) {
                                 "Name=\"slopes\" AttributeType=\"Vector\" Center=\"Node\"",
                                 "Name=\"axial_force\" AttributeType=\"Scalar\" Center=\"Cell\"",
                                 "Name=\"node_ids\" AttributeType=\"Scalar\" Center=\"Node\"",
-                                "Name=\"element_ids\" AttributeType=\"Scalar\" Center=\"Cell\""})
+                                "Name=\"element_ids\" AttributeType=\"Scalar\" Center=\"Cell\"",
+                                "Name=\"displacement_from_static\" AttributeType=\"Vector\" "
+                                "Center=\"Node\"",
+                                "Name=\"element_kind\" AttributeType=\"Scalar\" Center=\"Cell\"",
+                                "Name=\"element_set\" AttributeType=\"Scalar\" Center=\"Cell\""})
     EXPECT_EQ(count_of(xml, attribute), sample_times.size()) << attribute;
-  EXPECT_EQ(count_of(xml, "Function=\"$0 - $1\""), sample_times.size());
+  EXPECT_EQ(count_of(xml, "Function=\"$0 - $1\""), 2 * sample_times.size());
   check_hdf_references(xml, h5, "run.h5");
 
   const OpenId file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
