@@ -210,6 +210,7 @@ void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl)
                                                   "'; accepted: samples (the default: "
                                                   "/samples), steps (every step's contact force)");
       st.steps = series == "steps";
+      st.series_given = true;
     } else if (a == "--ranges" && command != "plot") {
       const std::string& ranges = value("--ranges");
       if (ranges != "en50318" && ranges != "none")

@@ -16,6 +16,9 @@ struct StatsArguments {
   std::optional<std::array<double, 2>> section;  // --section X0 X1 [m]; else the file's
   double cutoff_hz = 20.0;                       // --cutoff HZ: low-pass cutoff (−6 dB point)
   bool steps = false;  // --series steps: the contact force of every step, not the samples'
+  // --series given: else the samples, or every step's when the samples are too coarse for
+  // the cutoff (fields written seldom)
+  bool series_given = false;
   // --ranges en50318|none: the acceptance ranges (default: the run's catenary.acceptance).
   std::optional<std::string> ranges;
   std::string output;                       // export, plot: -o PREFIX (default: OUT less .h5)

@@ -146,6 +146,7 @@ void print_acceptance(const PantographEvaluation& e, const post::EvaluationSecti
 void print_table(const std::string& path, const RunEvaluation& ev, const StatsArguments& args) {
   const io::ContactRun& run = ev.run;
   std::printf("catena stats: %s\n", path.c_str());
+  if (!ev.series_note.empty()) std::printf("  note: %s\n", ev.series_note.c_str());
   if (!ev.finished)
     std::printf(
         "  warning: the run did not finish (status '%s'): its record ends at t = %g s; each\n"
@@ -155,8 +156,8 @@ void print_table(const std::string& path, const RunEvaluation& ev, const StatsAr
   std::printf(
       "  %zu %s every %g s (%g Hz); contact force low-pass filtered at %g Hz\n"
       "  (zero-phase 2nd-order Butterworth, forward and backward: -6 dB at %g Hz)\n",
-      run.n_samples, args.steps ? "steps (--series steps)" : "samples", run.dt, 1.0 / run.dt,
-      args.cutoff_hz, args.cutoff_hz);
+      run.n_samples, ev.steps ? "steps" : "samples", run.dt, 1.0 / run.dt, args.cutoff_hz,
+      args.cutoff_hz);
   std::printf("  evaluation section [%g, %g] m along the path (%s)\n", ev.section.x_start,
               ev.section.x_end, ev.section_given ? "--section" : "the run's evaluation section");
   if (!ev.finished)

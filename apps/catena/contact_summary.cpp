@@ -11,10 +11,9 @@ namespace {
 
 void print_lines(const RunEvaluation& ev, const StatsArguments& args) {
   std::printf(
-      "contact force (%g Hz low-pass%s; catena stats %s%s for the table, catena plot "
-      "for the figures):\n",
-      args.cutoff_hz, args.steps ? ", every step's" : "", args.file.c_str(),
-      args.steps ? " --series steps" : "");
+      "contact force (%g Hz low-pass%s; catena stats %s for the table, catena plot for the "
+      "figures):\n",
+      args.cutoff_hz, ev.steps ? ", every step's" : "", args.file.c_str());
   for (const PantographEvaluation& e : ev.pantographs) {
     const char* name = e.pantograph->name.c_str();
     if (!e.statistics) {
@@ -43,15 +42,8 @@ void print_contact_summary(const std::string& file) {
   args.file = file;
   try {
     print_lines(evaluate_run(args, SectionCoverage::covered), args);
-  } catch (const std::exception& samples_error) {
-    // Samples too coarse for the cutoff (fields written seldom): a fixed-step run's every
-    // step carries the contact force. Not that either (adaptive steps): the first reason.
-    try {
-      args.steps = true;
-      print_lines(evaluate_run(args, SectionCoverage::covered), args);
-    } catch (const std::exception&) {
-      std::printf("contact force: no summary (%s)\n", samples_error.what());
-    }
+  } catch (const std::exception& e) {
+    std::printf("contact force: no summary (%s)\n", e.what());
   }
   std::fflush(stdout);
 }

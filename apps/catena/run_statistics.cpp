@@ -51,8 +51,25 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
                          " (give that file, or continue the run with catena run --restart)");
   RunEvaluation out;
   const auto unfinished = io::UnfinishedRuns::accepted;
+  out.steps = args.steps;
   out.run = args.steps ? io::read_contact_run_steps(args.file, unfinished)
                        : io::read_contact_run(args.file, unfinished);
+  const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * args.cutoff_hz);
+  if (!args.series_given && out.run.dt > coarsest * (1.0 + 1e-9)) {
+    // Fields written seldom (output.interval): the contact force of every step, if the
+    // steps are uniform; else the samples, which the statistics then refuse by name.
+    try {
+      io::ContactRun steps = io::read_contact_run_steps(args.file, unfinished);
+      std::ostringstream note;
+      note << "the samples are " << out.run.dt << " s apart, too coarse for the " << args.cutoff_hz
+           << " Hz cutoff (at most " << coarsest
+           << " s): the contact force of every step is evaluated (as --series steps)";
+      out.series_note = note.str();
+      out.run = std::move(steps);
+      out.steps = true;
+    } catch (const InputError&) {
+    }
+  }
   out.finished = out.run.status == "complete";
   const bool covered_part = coverage == SectionCoverage::covered || !out.finished;
   out.section = coverage == SectionCoverage::covered && !args.section

@@ -33,6 +33,10 @@ struct RunEvaluation {
   bool section_given = false;       // by --section
   bool finished = true;             // status "complete"
   std::string ranges;               // the acceptance ranges applied ("en50318"), or empty
+  // The series evaluated is every step's contact force (--series steps, or chosen because
+  // the samples are too coarse for the cutoff: then `series_note` says so).
+  bool steps = false;
+  std::string series_note;
   std::vector<PantographEvaluation> pantographs;  // in column order
 };
 
