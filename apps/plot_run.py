@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """The figures of one Catena output file, drawn by `catena plot` (docs/output.md, "Plots").
 
-    /usr/bin/python3 plot_run.py OUT.h5 PREFIX FORMATS [CONTACT_CSV STATISTICS_CSV X0 X1 CUTOFF]
+    /usr/bin/python3 plot_run.py OUT.h5 PREFIX FORMATS [CONTACT_CSV STATISTICS_CSV X0 X1 CUTOFF KIND]
 
 FORMATS is "png", "pdf" or "png,pdf". Writes PREFIX_NAME.FORMAT for each figure:
 
 - a dynamic run with pantographs (the CSV files are `catena export`'s, X0 X1 the evaluation
-  section, CUTOFF the low-pass in Hz):
+  section, CUTOFF the low-pass in Hz, KIND "section", or "record" when the run sets no
+  section and X0 X1 are the whole record's ends):
   contact_force  raw and filtered contact force against the position along the path, one
                  panel per pantograph, the evaluation section shaded, the supports
                  (registration points) marked, the statistics in the title;
@@ -22,6 +23,7 @@ FORMATS is "png", "pdf" or "png,pdf". Writes PREFIX_NAME.FORMAT for each figure:
 Prints the name of every file written, one a line.
 """
 import csv
+import os
 import sys
 
 import h5py
@@ -36,12 +38,37 @@ TRANSIENT = "catena-transient-1"
 STATIC = "catena-static-1"
 
 
+FIGURES = ["contact_force", "spectrum", "uplift", "static_shape", "displacement"]
+DRAWN = set()
+
+
 def save(fig, prefix, name, formats):
+    """Each figure written to a temporary sibling and renamed over the old one: a reader
+    sees the previous figure or the new one, never half of one."""
     for fmt in formats:
         path = f"{prefix}_{name}.{fmt}"
-        fig.savefig(path, dpi=130, bbox_inches="tight")
+        temporary = f"{prefix}_{name}.tmp-{os.getpid()}.{fmt}"
+        try:
+            fig.savefig(temporary, format=fmt, dpi=130, bbox_inches="tight")
+            os.replace(temporary, path)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+        DRAWN.add(path)
         print(path)
     plt.close(fig)
+
+
+def remove_stale(prefix, formats):
+    """A figure of an earlier plot to the same prefix that this file does not have (an
+    uplift without supports, a displacement of a run without pantographs) would pass for
+    this file's: removed, and said."""
+    for name in FIGURES:
+        for fmt in formats:
+            path = f"{prefix}_{name}.{fmt}"
+            if path not in DRAWN and os.path.exists(path):
+                os.remove(path)
+                print(f"plot: removed {path} (an earlier plot's; this file has no such figure)")
 
 
 def text(value):
@@ -89,7 +116,7 @@ def registration_x(f):
     return f["mesh/node_positions"][:, 0][rows], rows
 
 
-def contact_force_figure(series, statistics, supports_x, x0, x1, cutoff):
+def contact_force_figure(series, statistics, supports_x, x0, x1, cutoff, kind):
     names = pantograph_names(statistics)
     fig, axes = plt.subplots(len(names), 1, figsize=(11, 3.4 * len(names)), squeeze=False)
     for ax, name, stats in zip(axes[:, 0], names, statistics):
@@ -98,7 +125,8 @@ def contact_force_figure(series, statistics, supports_x, x0, x1, cutoff):
                 label="raw")
         ax.plot(position, series[f"{name}_force_filtered_N"], color="tab:blue", linewidth=1.0,
                 label=f"filtered ({cutoff:g} Hz)")
-        ax.axvspan(x0, x1, color="tab:green", alpha=0.08, label="evaluation section")
+        if kind == "section":
+            ax.axvspan(x0, x1, color="tab:green", alpha=0.08, label="evaluation section")
         low, high = position.min(), position.max()
         for i, x in enumerate(supports_x[(supports_x >= low) & (supports_x <= high)]):
             ax.axvline(x, color="k", linestyle=":", linewidth=0.7,
@@ -153,8 +181,7 @@ def spectrum_figure(series, statistics, supports_x, x0, x1, cutoff):
     ax.set_xlim(0, top)
     ax.set_xlabel("frequency (Hz)")
     ax.set_ylabel("amplitude (N)")
-    ax.set_title(f"Contact force spectrum over the section [{x0:g}, {x1:g}] m (Hann window)",
-                 fontsize=9)
+    ax.set_title(f"Contact force spectrum over [{x0:g}, {x1:g}] m (Hann window)", fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -215,7 +242,7 @@ def displacement_figure(f):
 
 
 def main():
-    if len(sys.argv) not in (4, 9):
+    if len(sys.argv) not in (4, 10):
         raise SystemExit(__doc__)
     path, prefix, formats = sys.argv[1], sys.argv[2], sys.argv[3].split(",")
     with h5py.File(path, "r") as f:
@@ -238,11 +265,12 @@ def main():
             return
         contact_csv, statistics_csv = sys.argv[4], sys.argv[5]
         x0, x1, cutoff = float(sys.argv[6]), float(sys.argv[7]), float(sys.argv[8])
+        kind = sys.argv[9]
         rows = read_rows(contact_csv)
         series = {key: np.array([float(r[key]) for r in rows]) for key in rows[0]}
         statistics = read_rows(statistics_csv)
         supports_x, _ = registration_x(f)
-        save(contact_force_figure(series, statistics, supports_x, x0, x1, cutoff), prefix,
+        save(contact_force_figure(series, statistics, supports_x, x0, x1, cutoff, kind), prefix,
              "contact_force", formats)
         save(spectrum_figure(series, statistics, supports_x, x0, x1, cutoff), prefix,
              "spectrum", formats)
@@ -253,3 +281,4 @@ def main():
 
 if __name__ == "__main__":
     main()
+    remove_stale(sys.argv[2], sys.argv[3].split(","))

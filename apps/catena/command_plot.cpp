@@ -19,6 +19,7 @@
 #include "plot_script.hpp"
 #include "rank_zero.hpp"
 #include "run_export.hpp"
+#include "run_statistics.hpp"
 
 namespace catena::app {
 namespace {
@@ -37,13 +38,15 @@ std::string number(double x) {
 
 OutputError nothing_drawn(const std::string& file) {
   return OutputError("catena plot " + file +
-                     ": no figure drawn (the plot script failed: its message is above)");
+                     ": the plot script failed (its message is above; the figures listed "
+                     "before it were drawn)");
 }
 
 void plot_on_this_rank(const StatsArguments& args) {
   const std::string prefix = args.output.empty() ? default_prefix(args.file) : args.output;
   std::vector<std::string> script_args{args.file, prefix, joined_formats(args.formats)};
   create_parent_directory(prefix + "_static_shape.png");
+  refuse_unfinished_name(args.file);
   if (!io::has_contact_forces(args.file)) {
     if (!draw_figures("plot_run.py", script_args)) throw nothing_drawn(args.file);
     return;
@@ -58,9 +61,10 @@ void plot_on_this_rank(const StatsArguments& args) {
   const io::TemporaryFile statistics(io::temporary_sibling(prefix + "_statistics.csv", getpid()));
   write_contact_csv(ev, contact.path());
   write_statistics_csv(ev, statistics.path());
-  script_args.insert(script_args.end(), {contact.path().string(), statistics.path().string(),
-                                         number(ev.section.x_start), number(ev.section.x_end),
-                                         number(args.cutoff_hz)});
+  script_args.insert(script_args.end(),
+                     {contact.path().string(), statistics.path().string(),
+                      number(ev.section.x_start), number(ev.section.x_end), number(args.cutoff_hz),
+                      args.section || ev.run.evaluation_section ? "section" : "record"});
   if (!draw_figures("plot_run.py", script_args)) throw nothing_drawn(args.file);
 }
 

@@ -38,6 +38,7 @@
 #include "initial_state.hpp"
 #include "log_stage.hpp"
 #include "modal_setup.hpp"
+#include "pantograph_travel.hpp"
 #include "progress_lines.hpp"
 #include "realtime_monitor.hpp"
 #include "resume_checkpoint.hpp"
@@ -67,7 +68,8 @@ class OutputObserver : public solvers::TransientObserver {
         schedule_(system.comm(), {output.flush_wall_seconds, output.checkpoint_wall_seconds}),
         progress_(progress),
         realtime_(realtime),
-        registration_(view_.position_rows(system.model().registration_nodes, 2)) {}
+        registration_(view_.position_rows(system.model().registration_nodes, 2)),
+        travel_(system.model(), system.dof_map().owned_nodes()) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
@@ -122,6 +124,7 @@ class OutputObserver : public solvers::TransientObserver {
     }
     // The modal model's forces are its own (its q leaves out the static correction).
     if (std::vector<double> own; integrator_.contact_forces_at(t, own)) contacts.force = own;
+    travel_.move(contacts.position, positions);
     const assembly::Reactions reactions = view_.reactions({q, v, {}, t});
     writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
                           {reactions.force, reactions.moment});
@@ -205,6 +208,7 @@ class OutputObserver : public solvers::TransientObserver {
   RealtimeMonitor& realtime_;
   // Where the registration nodes' heights lie in q (/steps/registration_height).
   assembly::StateView::ComponentRows registration_;
+  PantographTravel travel_;  // where the samples draw the pantographs
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;

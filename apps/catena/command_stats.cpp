@@ -79,7 +79,11 @@ void print_json(const RunEvaluation& ev) {
     out += i ? ",\n  " : "\n  ";
     out += "{\"name\": " + json_string(p.name);
     out += ", \"speed_kmh\": " + json_number(p.speed * kmh_per_ms);
-    out += ", \"section\": " + json_section(e.section);
+    out += ", \"section\": " + (e.statistics ? json_section(e.section) : std::string("null"));
+    out +=
+        ", \"coverage\": " + json_number(e.statistics ? (e.section.x_end - e.section.x_start) /
+                                                            (ev.section.x_end - ev.section.x_start)
+                                                      : 0.0);
     out += ", \"reached_section\": " + std::string(e.statistics ? "true" : "false");
     auto number = [&](auto member) {
       return e.statistics ? json_number((*e.statistics).*member) : std::string("null");
@@ -160,7 +164,14 @@ void print_table(const std::string& path, const RunEvaluation& ev, const StatsAr
       args.cutoff_hz);
   std::printf("  evaluation section [%g, %g] m along the path (%s)\n", ev.section.x_start,
               ev.section.x_end, ev.section_given ? "--section" : "the run's evaluation section");
-  if (!ev.finished)
+  const bool partial = std::any_of(ev.pantographs.begin(), ev.pantographs.end(),
+                                   [](const PantographEvaluation& e) { return e.partial; });
+  if (partial && ev.finished)
+    std::printf(
+        "  warning: the record does not cover the whole section for every pantograph (the\n"
+        "  run ends before it leaves the section, or starts inside it): each is evaluated\n"
+        "  over the part it covered\n");
+  if (partial)
     for (const PantographEvaluation& e : ev.pantographs) {
       const double covered = e.statistics ? (e.section.x_end - e.section.x_start) /
                                                 (ev.section.x_end - ev.section.x_start)
@@ -197,11 +208,13 @@ void print_table(const std::string& path, const RunEvaluation& ev, const StatsAr
   }
   if (!run.has_registration_nodes)
     std::printf("\nnote: the file has no /mesh/registration_nodes: no uplift at support\n");
-  else if (ev.pantographs.front().statistics && ev.pantographs.front().statistics->n_supports == 0)
-    std::printf(
-        "\nnote: no registration (steady-arm) node lies in the section [%g, %g] m: "
-        "no uplift at support\n",
-        ev.pantographs.front().section.x_start, ev.pantographs.front().section.x_end);
+  else
+    for (const PantographEvaluation& e : ev.pantographs)
+      if (e.statistics && e.statistics->n_supports == 0)
+        std::printf(
+            "\nnote: no registration (steady-arm) node lies in %s's section [%g, %g] m: no "
+            "uplift at support\n",
+            e.pantograph->name.c_str(), e.section.x_start, e.section.x_end);
   if (!ev.ranges.empty())
     for (const PantographEvaluation& e : ev.pantographs)
       print_acceptance(e, ev.run.evaluation_section.value_or(ev.section));

@@ -10,10 +10,17 @@ namespace catena::app {
 namespace {
 
 void print_lines(const RunEvaluation& ev, const StatsArguments& args) {
-  std::printf(
-      "contact force (%g Hz low-pass%s; catena stats %s for the table, catena plot for the "
-      "figures):\n",
-      args.cutoff_hz, ev.steps ? ", every step's" : "", args.file.c_str());
+  if (ev.run.evaluation_section)
+    std::printf(
+        "contact force (%g Hz low-pass%s; catena stats %s for the table, catena plot for the "
+        "figures):\n",
+        args.cutoff_hz, ev.steps ? ", every step's" : "", args.file.c_str());
+  else
+    std::printf(
+        "contact force over the whole record, start-up included (the scene sets no evaluation "
+        "section: catenary.evaluation_spans; %g Hz low-pass%s; catena stats %s --section X0 X1 "
+        "for the table over a section of your choice):\n",
+        args.cutoff_hz, ev.steps ? ", every step's" : "", args.file.c_str());
   for (const PantographEvaluation& e : ev.pantographs) {
     const char* name = e.pantograph->name.c_str();
     if (!e.statistics) {
@@ -31,6 +38,7 @@ void print_lines(const RunEvaluation& ev, const StatsArguments& args) {
     if (e.acceptance)
       std::printf("; EN 50318: %zu of %zu in range", checks_passed(*e.acceptance),
                   e.acceptance->size());
+    if (e.partial && ev.run.evaluation_section) std::printf(" (part of the section only)");
     std::printf("\n");
   }
 }

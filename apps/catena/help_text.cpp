@@ -23,7 +23,8 @@ constexpr const char* kMemoryOption =
 // The evaluation options of the commands that read a run's output (stats, export, plot).
 constexpr const char* kPostOptions =
     R"(  --section X0 X1       evaluation section along the path, m (default: the run's
-                        evaluation_start/evaluation_end; required if the run sets none)
+                        evaluation_start/evaluation_end; if the run sets none, stats
+                        requires one, export and plot take the whole record)
   --cutoff HZ           low-pass cutoff, Hz (default 20; zero-phase Butterworth, -6 dB
                         at the cutoff; the sampling rate must be >= 10 x the cutoff)
   --series S            samples (default): the output's samples; steps: the contact

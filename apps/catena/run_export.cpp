@@ -74,9 +74,11 @@ void write_statistics_csv(const RunEvaluation& ev, const std::filesystem::path& 
   }
   out += '\n';
   for (const PantographEvaluation& e : ev.pantographs) {
+    // The section evaluated; empty cells where the pantograph covered none of it.
+    const std::string start = e.statistics ? number(e.section.x_start) : "";
+    const std::string end = e.statistics ? number(e.section.x_end) : "";
     out += field(e.pantograph->name) + ',' + number(e.pantograph->speed * kmh_per_ms) + ',' +
-           number(e.section.x_start) + ',' + number(e.section.x_end) + ',' +
-           (ev.finished ? "1" : "0") + ',';
+           start + ',' + end + ',' + (ev.finished ? "1" : "0") + ',';
     if (e.statistics) {
       const post::ContactStatistics& s = *e.statistics;
       out += std::to_string(s.n_samples);

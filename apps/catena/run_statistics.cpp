@@ -1,6 +1,7 @@
 #include "run_statistics.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -20,6 +21,22 @@ constexpr double kmh_per_ms = 3.6;
                           : k == "dt"   ? io::contact_run_times_dataset()
                                         : k;
   throw InputError({file, 0, key}, e.message());
+}
+
+// The part of `section` the pantograph's record covers. Where the record ends inside the
+// section (a run stopped, or too short), the last 2/cutoff seconds of travel are left out:
+// the zero-phase filter's backward pass starts there from the last value, and its start-up
+// transient (on a contact-force-like test signal: 0.07 N one cutoff period before the end)
+// is 0.001 N two periods before it.
+post::EvaluationSection covered_part_of(const post::EvaluationSection& section,
+                                        const post::PantographRecord& p, double cutoff_hz) {
+  auto [lo, hi] = std::minmax_element(p.position.begin(), p.position.end());
+  double low = *lo, high = *hi;
+  const double edge = std::abs(p.speed) * 2.0 / cutoff_hz;
+  const bool forward = p.position.back() >= p.position.front();
+  if (forward && high < section.x_end) high -= edge;
+  if (!forward && low > section.x_start) low += edge;
+  return {std::max(section.x_start, low), std::min(section.x_end, high)};
 }
 
 post::EvaluationSection requested_section(const StatsArguments& args, const io::ContactRun& run) {
@@ -42,13 +59,17 @@ std::string ranges_to_apply(const StatsArguments& args, const io::ContactRun& ru
 
 }  // namespace
 
-RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage) {
+void refuse_unfinished_name(const std::string& file) {
   // A run still going (or stopped) writes OUT.part.h5: point there from OUT.h5.
-  const std::string partial = io::partial_output_path(args.file);
-  if (!std::filesystem::exists(args.file) && std::filesystem::exists(partial))
-    throw InputError({args.file, 0, ""},
+  const std::string partial = io::partial_output_path(file);
+  if (!std::filesystem::exists(file) && std::filesystem::exists(partial))
+    throw InputError({file, 0, ""},
                      "no such file; the run has not finished: its output so far is " + partial +
                          " (give that file, or continue the run with catena run --restart)");
+}
+
+RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage) {
+  refuse_unfinished_name(args.file);
   RunEvaluation out;
   const auto unfinished = io::UnfinishedRuns::accepted;
   out.steps = args.steps;
@@ -71,7 +92,6 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
     }
   }
   out.finished = out.run.status == "complete";
-  const bool covered_part = coverage == SectionCoverage::covered || !out.finished;
   out.section = coverage == SectionCoverage::covered && !args.section
                     ? io::evaluation_section_or_record(out.run)
                     : requested_section(args, out.run);
@@ -82,19 +102,31 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
   options.dt = out.run.dt;
   options.cutoff_hz = args.cutoff_hz;
   for (const post::PantographRecord& p : out.run.pantographs) {
+    for (std::size_t k = 0; k < p.force.size(); ++k)
+      if (!std::isfinite(p.force[k]) || !std::isfinite(p.position[k])) {
+        std::ostringstream os;
+        os << "pantograph '" << p.name << "': the contact "
+           << (std::isfinite(p.force[k]) ? "position" : "force") << " of sample " << k
+           << " (t = " << out.run.time[k]
+           << " s) is not a number: the run diverged there; no statistics";
+        throw InputError(
+            {args.file, 0, out.steps ? "/steps/contact_force" : "/samples/contact_force"},
+            os.str());
+      }
     PantographEvaluation e;
     e.pantograph = &p;
-    e.section = out.section;
-    if (covered_part) {
-      // Only what the record covers: a partial section, or none.
-      const auto [lo, hi] = std::minmax_element(p.position.begin(), p.position.end());
-      e.section = {std::max(out.section.x_start, *lo), std::min(out.section.x_end, *hi)};
-    }
+    e.section = covered_part_of(out.section, p, args.cutoff_hz);
+    e.partial = e.section.x_end - e.section.x_start <
+                (out.section.x_end - out.section.x_start) - std::abs(p.speed) * out.run.dt;
     options.section = e.section;
     try {
       e.filtered_force = post::butterworth_lowpass_zero_phase(p.force, out.run.dt, args.cutoff_hz);
-      if (!covered_part || e.section.x_end > e.section.x_start)
+      if (e.section.x_end > e.section.x_start) {
         e.statistics = post::contact_statistics(p, out.run.registration_points, options);
+      } else if (coverage == SectionCoverage::whole && out.finished) {
+        options.section = out.section;  // names the part the record covers
+        post::contact_statistics(p, out.run.registration_points, options);
+      }
     } catch (const InputError& error) {
       rethrow_naming_file(error, args.file);
     }

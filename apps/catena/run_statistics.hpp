@@ -2,8 +2,10 @@
 // What `catena stats`, `catena export` and `catena plot` compute from a dynamic run's
 // output: per pantograph, the filtered contact force of the whole record, the EN 50318
 // statistics over the evaluation section and, when the scene declares them (or --ranges),
-// the acceptance ranges' checks. A run that did not complete (interrupted, failed, or
-// crashed while running) is evaluated over the part of the section each pantograph covered.
+// the acceptance ranges' checks. Each pantograph is evaluated over the part of the section
+// its record covers: all of it for a complete run long enough, less for a run that did not
+// complete (interrupted, failed, or crashed while running) or ended early, which the
+// commands then say.
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,9 +19,11 @@ namespace catena::app {
 
 struct PantographEvaluation {
   const post::PantographRecord* pantograph = nullptr;  // in RunEvaluation::run
-  // The section evaluated: the requested one, for an unfinished run cut to the contact
-  // positions the pantograph covered.
+  // The section evaluated: the requested one cut to what the pantograph's record covers
+  // (less the filter's end transient where the record ends inside it); empty (end before
+  // start) when it covers none of it.
   post::EvaluationSection section;
+  bool partial = false;  // the record covers less than the requested section
   // None: an unfinished run stopped before this pantograph reached the section.
   std::optional<post::ContactStatistics> statistics;
   // The acceptance ranges' checks at its speed; none without ranges or at another speed.
@@ -56,6 +60,10 @@ enum class SectionCoverage {
 // lies in the section, an unfinished run none of whose pantographs reached it).
 RunEvaluation evaluate_run(const StatsArguments& args,
                            SectionCoverage coverage = SectionCoverage::whole);
+
+// Not collective. Throws catena::InputError naming OUT.part.h5 when `file` (OUT.h5) does
+// not exist but the unfinished run's output does.
+void refuse_unfinished_name(const std::string& file);
 
 // Not collective. "8 of 8 in range" style count of `checks`.
 std::size_t checks_passed(const std::vector<post::AcceptanceCheck>& checks);

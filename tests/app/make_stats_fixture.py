@@ -20,6 +20,7 @@ going or crashed, read with a warning), stats_acceptance.h5 (root attribute acce
 stats_interrupted.h5 (status "interrupted", the record ending at 3 s: the leading head at
 208 m, the trailing one at 250 m, inside the section; acceptance "en50318"),
 stats_interrupted_early.h5 (interrupted at 1 s, before either head reaches the section),
+stats_short.h5 (complete, but only 3 s: the record ends inside the section),
 stats_no_section.h5 (no evaluation section), stats_coarse.h5 (100 Hz sampling),
 stats_static.h5 (a static result), stats_no_pantographs.h5 (no contact datasets),
 stats_old_format.h5 (no format attribute: an older Catena's), stats_other_format.h5
@@ -106,6 +107,7 @@ def main():
     write(os.path.join(out, "stats_interrupted.h5"), status="interrupted", duration=3.0,
           acceptance="en50318")
     write(os.path.join(out, "stats_interrupted_early.h5"), status="interrupted", duration=1.0)
+    write(os.path.join(out, "stats_short.h5"), duration=3.0)
 
 
 if __name__ == "__main__":

@@ -28,4 +28,11 @@ struct PathStations {
 // Not collective.
 PathStations path_stations(const Model& model, const std::vector<int>& elements);
 
+// Not collective. The point at arc length s (clamped to [0, length]) of the path `elements`
+// on the reference geometry, on the chord of the element holding it: where a moving load
+// or a pantograph's contact is at s. Consecutive elements share a node; each element is
+// walked from that shared node, whatever the order of its own nodes.
+Vec3 path_point(const Model& model, const std::vector<int>& elements, const PathStations& stations,
+                double s);
+
 }  // namespace catena::model

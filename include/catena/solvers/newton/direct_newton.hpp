@@ -41,10 +41,10 @@ KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSy
 
 // Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
 // partition interface (interface_schur.hpp) rather than factored whole: on more than one
-// rank (MUMPS, which pivots, took 15 times as long per solve on EN 50318 at np 2: 4.4 ms
-// against 0.29 ms; docs/performance.md), unless the options choose another preconditioner
-// or package (-<prefix>pc_type or -<prefix>pc_factor_mat_solver_type, e.g. `-hht_pc_type
-// lu`: MUMPS).
+// rank (MUMPS, which pivots, took over ten times as long per solve on EN 50318 at np 2;
+// docs/performance.md, "Two ranks: the interface Schur solve"), unless the options choose another
+// preconditioner or package (-<prefix>pc_type or -<prefix>pc_factor_mat_solver_type, e.g.
+// `-hht_pc_type lu`: MUMPS).
 bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting);
 
 // Relative Newton update at which an iterate is converged to round-off (SNES stol).
