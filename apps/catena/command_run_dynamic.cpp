@@ -232,10 +232,13 @@ void write_xdmf(int rank, const std::string& path, const model::Model& m) {
   if (rank != 0) return;
   try {
     const std::vector<double> times = io::read_sample_times(path);
-    if (!times.empty())
-      io::write_transient_xdmf(path, io::transient_xdmf_path(path),
-                               static_cast<std::int64_t>(m.nodes.size()),
-                               static_cast<std::int64_t>(m.elements.size()), times);
+    if (times.empty()) return;
+    const auto n_nodes = static_cast<std::int64_t>(m.nodes.size());
+    const auto n_elements = static_cast<std::int64_t>(m.elements.size());
+    io::write_transient_xdmf(path, io::transient_xdmf_path(path), n_nodes, n_elements, times,
+                             io::XdmfReaders::xdmf3);
+    io::write_transient_xdmf(path, io::transient_xdmf2_path(path), n_nodes, n_elements, times,
+                             io::XdmfReaders::xdmf2);
   } catch (const Error& e) {
     std::fprintf(stderr, "catena: warning: no XDMF for %s: %s\n", path.c_str(), e.what());
   }
@@ -306,6 +309,7 @@ void publish_completed_output(MPI_Comm comm, const std::string& partial,
       why = "cannot rename " + partial + " to " + output + ": " + std::strerror(errno);
     std::error_code ignored;
     std::filesystem::remove(io::transient_xdmf_path(partial), ignored);
+    std::filesystem::remove(io::transient_xdmf2_path(partial), ignored);
   }
   broadcast_string(comm, why, 0);
   if (!why.empty()) throw Error(why);
@@ -596,10 +600,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         k.factorizations, k.residual_evaluations, wall, stepping,
         stepping / std::max(report.t_reached - t_begin, 1e-300));
     if (realtime_summary) RealtimeMonitor::print(rank, *realtime_summary, m.output.interval);
-    std::printf("output: %s (%ld samples; ParaView: %s), checkpoint %s%s\n", written.c_str(),
-                report.samples, io::transient_xdmf_path(written).c_str(),
-                io::checkpoint_path(output).c_str(),
-                report.interrupted ? "; --restart continues the run" : "");
+    std::printf(
+        "output: %s (%ld samples; ParaView: %s, or %s with the displacements), "
+        "checkpoint %s%s\n",
+        written.c_str(), report.samples, io::transient_xdmf_path(written).c_str(),
+        io::transient_xdmf2_path(written).c_str(), io::checkpoint_path(output).c_str(),
+        report.interrupted ? "; --restart continues the run" : "");
     if (!m.contacts.empty() && !report.interrupted) print_contact_summary(written);
   }
   if (report.interrupted) {

@@ -70,11 +70,12 @@ std::string output_path_problem(const std::string& path) {
 void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_line) {
   const std::string key = from_command_line ? "-o" : "output.file";
   // The same on every rank: a name, not the file system.
-  if (fs::path(m.output.file).extension() == ".xmf")
+  if (const std::string extension = fs::path(m.output.file).extension().string();
+      extension == ".xmf" || extension == ".xmf2")
     throw InputError({m.source_file, 0, key},
-                     "the output file '" + m.output.file +
-                         "' ends in .xmf, the name of the XDMF description Catena writes "
-                         "beside the HDF5 results; expected an HDF5 name such as '" +
+                     "the output file '" + m.output.file + "' ends in " + extension +
+                         ", the name of an XDMF description Catena writes beside the HDF5 "
+                         "results; expected an HDF5 name such as '" +
                          fs::path(m.output.file).replace_extension(".h5").string() + "'");
   std::string problem;
   if (mpi_rank(comm) == 0) problem = output_path_problem(m.output.file);

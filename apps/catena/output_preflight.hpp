@@ -18,7 +18,7 @@ std::string output_path_problem(const std::string& path);
 
 // Collective. Rank 0 checks m.output.file (set by the scene's output.file or by -o); every
 // rank throws the same InputError naming the key, the path and the reason. A name ending in
-// .xmf (the XDMF companion's) is refused for every analysis.
+// .xmf or .xmf2 (the XDMF companions') is refused for every analysis.
 void check_output_path(MPI_Comm comm, const model::Model& m, bool from_command_line);
 
 // Collective. The modal basis a modal run names (analysis.modal_basis), if any: a file to

@@ -1,14 +1,18 @@
-// write_transient_xdmf: the XDMF description of a time-series file. Dataset names:
+// write_transient_xdmf: the XDMF descriptions of a time-series file. Dataset names:
 // transient_layout.hpp; what ParaView shows: docs/output.md ("Time series", ParaView).
 //
 // One Uniform grid per sample inside a temporal collection. Every grid repeats the HDF
-// references to the mesh datasets (one line each); the sampled datasets are HyperSlab
-// DataItems (XDMF's own way to select part of a dataset) choosing row k: start (k, 0, 0),
-// stride 1, count (1, n_nodes, 3). ParaView's "XDMF Reader" reads only that slab from the
-// file. ParaView's Xdmf3 readers (checked: 5.11) do not resolve HyperSlab items and show
-// the grid without points; Xdmf3 has a selection syntax of its own inside the HDF
-// reference, which the XDMF Reader in turn cannot read, so one file serves one of them:
-// the XDMF Reader, which docs/output.md names.
+// references to the mesh datasets (one line each) and selects row k of the sampled
+// datasets: start (k, 0, 0), stride 1, count (1, n_nodes, 3), so that a reader reads only
+// that sample from the file. ParaView has two families of XDMF readers, which accept
+// different ways of selecting (checked with ParaView 5.11's pvpython on a run's files):
+//   - the Xdmf3 readers (Xdmf3 Reader S and T, the default for .xmf) take the selection
+//     inside the HDF reference, "file:/dataset|start:stride:count:dimensions", and show a
+//     grid of 0 points for a HyperSlab item; they drop Function items (computed fields);
+//   - the XDMF Reader (the one ParaView picks for .xmf2) takes XDMF's HyperSlab items and
+//     Function items, and fails on the "|" syntax.
+// So each run gets NAME.xmf for the first and NAME.xmf2 for the second, which also carries
+// the displacements (Functions of the samples and the mesh).
 #include "catena/io/transient_xdmf.hpp"
 
 #include <hdf5.h>
@@ -75,14 +79,21 @@ std::string time_text(double t) {
 // Writes the XML of the grids, all pointing into one HDF5 file.
 class TransientXdmfText {
  public:
-  TransientXdmfText(const std::string& hdf5_file_name, const SeriesShape& shape)
-      : file_name_(xml_escaped(hdf5_file_name)), shape_(shape) {}
+  TransientXdmfText(const std::string& hdf5_file_name, const SeriesShape& shape,
+                    XdmfReaders readers)
+      : file_name_(xml_escaped(hdf5_file_name)), shape_(shape), readers_(readers) {}
 
   std::string document(const std::vector<double>& times) {
     xml_ << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
          << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
          << "<!-- Catena time series (dynamic run): " << shape_.n_samples
-         << " samples; layout in Catena's docs/output.md. Open with ParaView's XDMF Reader. -->\n"
+         << " samples; layout in Catena's docs/output.md. "
+         << (readers_ == XdmfReaders::xdmf3
+                 ? "For ParaView's Xdmf3 readers (the default); the .xmf2 beside it, with the "
+                   "displacements, for its XDMF Reader."
+                 : "For ParaView's XDMF Reader (with the displacements); the .xmf beside it for "
+                   "the Xdmf3 readers.")
+         << " -->\n"
          << "<Xdmf Version=\"3.0\">\n"
          << "  <Domain>\n"
          << "    <Grid Name=\"samples\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
@@ -111,22 +122,7 @@ class TransientXdmfText {
     sample_slab(10, layout::positions.path, {n_nodes, 3}, k, "sample " + std::to_string(k));
     xml_ << "        </Geometry>\n";
 
-    begin_attribute("displacement", "Vector", "Node");
-    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
-         << dimensions_text({n_nodes, 3}) << "\">\n";
-    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
-    data_item(12, layout::node_positions.path, {n_nodes, 3}, float64);
-    xml_ << indent(10) << "</DataItem>\n";
-    end_attribute();
-    // From the static equilibrium the run starts from (sample 0): the motion itself, which a
-    // magnified Warp By Vector shows without the static sag.
-    begin_attribute("displacement_from_static", "Vector", "Node");
-    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
-         << dimensions_text({n_nodes, 3}) << "\">\n";
-    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
-    sample_slab(12, layout::positions.path, {n_nodes, 3}, 0);
-    xml_ << indent(10) << "</DataItem>\n";
-    end_attribute();
+    if (readers_ == XdmfReaders::xdmf2) displacements(k);
     sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
     sampled_attribute("slopes", "Vector", "Node", layout::slopes.path, {n_nodes, 3}, k);
     sampled_attribute("axial_force", "Scalar", "Cell", layout::axial_force.path, {n_elements}, k);
@@ -143,6 +139,28 @@ class TransientXdmfText {
     data_item(10, layout::element_set.path, {n_elements}, int32);
     end_attribute();
     xml_ << "      </Grid>\n";
+  }
+
+  // The displacement from the mesh and from the static equilibrium (sample 0): Functions
+  // of the samples and the mesh, which only the XDMF Reader evaluates.
+  void displacements(std::int64_t k) {
+    const std::int64_t n_nodes = shape_.n_nodes;
+    begin_attribute("displacement", "Vector", "Node");
+    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
+         << dimensions_text({n_nodes, 3}) << "\">\n";
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
+    data_item(12, layout::node_positions.path, {n_nodes, 3}, float64);
+    xml_ << indent(10) << "</DataItem>\n";
+    end_attribute();
+    // From the static equilibrium the run starts from (sample 0): the motion itself, which a
+    // magnified Warp By Vector shows without the static sag.
+    begin_attribute("displacement_from_static", "Vector", "Node");
+    xml_ << indent(10) << "<DataItem ItemType=\"Function\" Function=\"$0 - $1\" Dimensions=\""
+         << dimensions_text({n_nodes, 3}) << "\">\n";
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, k);
+    sample_slab(12, layout::positions.path, {n_nodes, 3}, 0);
+    xml_ << indent(10) << "</DataItem>\n";
+    end_attribute();
   }
 
   static std::string indent(int n_spaces) {
@@ -169,6 +187,17 @@ class TransientXdmfText {
     std::vector<std::int64_t> start(full.size(), 0), stride(full.size(), 1);
     start[0] = k;
 
+    if (readers_ == XdmfReaders::xdmf3) {
+      // The selection inside the HDF reference: start:stride:count:dimensions.
+      xml_ << indent(n_spaces) << "<DataItem Dimensions=\"" << dimensions_text(count)
+           << "\" NumberType=\"" << float64.xdmf_type << "\" Precision=\"" << float64.precision
+           << "\" Format=\"HDF\">";
+      if (!comment.empty()) xml_ << "<!-- " << comment << " -->";
+      xml_ << file_name_ << ':' << dataset << '|' << dimensions_text(start) << ':'
+           << dimensions_text(stride) << ':' << dimensions_text(count) << ':'
+           << dimensions_text(full) << "</DataItem>\n";
+      return;
+    }
     const std::string inner = indent(n_spaces + 2);
     xml_ << indent(n_spaces) << "<DataItem ItemType=\"HyperSlab\" Dimensions=\""
          << dimensions_text(count) << "\" NumberType=\"" << float64.xdmf_type << "\" Precision=\""
@@ -199,6 +228,7 @@ class TransientXdmfText {
   std::ostringstream xml_;
   std::string file_name_;
   SeriesShape shape_;
+  XdmfReaders readers_;
 };
 
 // A dataset the XDMF refers to, with the shape and storage it announces.
@@ -280,6 +310,10 @@ std::string transient_xdmf_path(const std::string& hdf5_path) {
   return xdmf_path_for(fs::path(hdf5_path)).string();
 }
 
+std::string transient_xdmf2_path(const std::string& hdf5_path) {
+  return transient_xdmf_path(hdf5_path) + "2";
+}
+
 std::vector<double> read_sample_times(const std::string& hdf5_path) {
   const Hdf5ErrorPrintingSuppressed quiet_hdf5;
   const FileHandle file = open_time_series(hdf5_path);
@@ -300,7 +334,7 @@ std::vector<double> read_sample_times(const std::string& hdf5_path) {
 
 void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_path,
                           std::int64_t n_nodes, std::int64_t n_elements,
-                          const std::vector<double>& times) {
+                          const std::vector<double>& times, XdmfReaders readers) {
   const Hdf5ErrorPrintingSuppressed quiet_hdf5;
   try {
     check_paths(hdf5_path, xdmf_path);
@@ -311,7 +345,7 @@ void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_
     const SeriesShape shape{static_cast<std::int64_t>(times.size()), n_nodes, n_elements};
     check_datasets(hdf5_path, shape);
     const std::string text =
-        TransientXdmfText(fs::path(hdf5_path).filename().string(), shape).document(times);
+        TransientXdmfText(fs::path(hdf5_path).filename().string(), shape, readers).document(times);
 
     const fs::path target(xdmf_path);
     TemporaryFile temporary(temporary_sibling(target, ::getpid()));

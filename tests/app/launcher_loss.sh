@@ -10,7 +10,7 @@ set -u
 catena=$1 mpiexec=$2 dir=$3
 fail() { echo "launcher_loss: FAILED: $*"; exit 1; }
 status() { /usr/bin/python3 -c "import h5py, sys; print(h5py.File(sys.argv[1]).attrs['status'])" "$1"; }
-clean() { rm -f "$1" "$1".chk "$1".lock "${1%.h5}".part.h5 "${1%.h5}".xmf "${1%.h5}".part.xmf; }
+clean() { rm -f "$1" "$1".chk "$1".lock "${1%.h5}".part.h5 "${1%.h5}".xmf "${1%.h5}".part.xmf "${1%.h5}".xmf2 "${1%.h5}".part.xmf2; }
 # Long enough never to finish before it is stopped: 20 s of it take 8.5 s on 2 ranks since
 # HHT solves by the partition interface, and a run that completed before the kill of B
 # left no partial output (seen once under ctest -j2 load).

@@ -16,7 +16,7 @@ set -u
 catena=$1 dir=$2
 fail() { echo "run_files: FAILED: $*"; exit 1; }
 status() { /usr/bin/python3 -c "import h5py, sys; print(h5py.File(sys.argv[1]).attrs['status'])" "$1"; }
-clean() { rm -f "$1" "$1".chk "$1".lock "${1%.h5}".part.h5 "${1%.h5}".xmf "${1%.h5}".part.xmf; }
+clean() { rm -f "$1" "$1".chk "$1".lock "${1%.h5}".part.h5 "${1%.h5}".xmf "${1%.h5}".part.xmf "${1%.h5}".xmf2 "${1%.h5}".part.xmf2; }
 scene=meshes/cable_pendulum.yaml
 # Waits until the run logging to $1 is in its dynamics (the stop handling covers stepping).
 in_dynamics() {

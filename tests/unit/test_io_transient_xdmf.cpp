@@ -28,6 +28,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using catena::test::directory_listing;
+// The flavour most tests check: HyperSlab items (the XDMF Reader's); the Xdmf3 readers'
+// flavour has a test of its own below.
+constexpr catena::io::XdmfReaders legacy = catena::io::XdmfReaders::xdmf2;
 using catena::test::OpenId;
 
 constexpr std::int64_t n_nodes = 4;
@@ -235,7 +238,7 @@ TEST_F(TransientXdmfTest, OneGridPerSampleSelectingItsRow) {
   write_series_file(h5, sample_times);
   const std::string xmf = catena::io::transient_xdmf_path(h5.string());
   catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements,
-                                   catena::io::read_sample_times(h5.string()));
+                                   catena::io::read_sample_times(h5.string()), legacy);
   EXPECT_EQ(directory_listing(directory_), (std::vector<std::string>{"run.h5", "run.xmf"}));
 
   const std::string xml = read_text(xmf);
@@ -282,12 +285,77 @@ TEST_F(TransientXdmfTest, OneGridPerSampleSelectingItsRow) {
   EXPECT_EQ(at, std::string::npos) << "more grids than samples";
 }
 
+// The Xdmf3 readers' flavour: no HyperSlab or Function item; every sampled HDF reference of
+// grid k selects row k in the "|start:stride:count:dimensions" syntax, with the dataset's
+// shape as dimensions and the DataItem's Dimensions equal to the count; the mesh datasets
+// referenced whole; no displacement attributes.
+TEST_F(TransientXdmfTest, TheXdmf3FlavourSelectsTheSampleInsideTheReference) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  const std::string xmf = catena::io::transient_xdmf_path(h5.string());
+  EXPECT_EQ(catena::io::transient_xdmf2_path(h5.string()), xmf + "2");
+  catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, sample_times,
+                                   catena::io::XdmfReaders::xdmf3);
+  const std::string xml = read_text(xmf);
+  EXPECT_EQ(count_of(xml, "HyperSlab"), 0u);
+  EXPECT_EQ(count_of(xml, "Function"), 0u);
+  EXPECT_EQ(count_of(xml, "Name=\"displacement"), 0u);
+  EXPECT_EQ(count_of(xml, "GridType=\"Uniform\""), sample_times.size());
+  const OpenId file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0);
+  const std::regex item(
+      R"re(<DataItem Dimensions="([^"]*)"[^>]*Format="HDF">(?:<!--[^>]*-->)?run\.h5:([^<|]*)(?:\|([^<]*))?</DataItem>)re");
+  std::vector<std::int64_t> per_grid;
+  std::int64_t grid = -1, selections = 0, whole = 0;
+  const std::string grid_tag = "<Grid Name=\"sample_";
+  for (std::size_t at = xml.find(grid_tag); at != std::string::npos;) {
+    ++grid;
+    const std::size_t next = xml.find(grid_tag, at + 1);
+    const std::string text = xml.substr(at, next == std::string::npos ? next : next - at);
+    for (auto m = std::sregex_iterator(text.begin(), text.end(), item); m != std::sregex_iterator();
+         ++m) {
+      const std::string dataset = (*m)[2];
+      const std::vector<std::int64_t> dims = dataset_dims(file.get(), dataset);
+      ASSERT_FALSE(dims.empty()) << dataset;
+      if (!(*m)[3].matched) {
+        ++whole;
+        EXPECT_EQ(numbers((*m)[1]), dims) << dataset;
+        continue;
+      }
+      ++selections;
+      std::string selection = (*m)[3];
+      std::replace(selection.begin(), selection.end(), ':', ' ');
+      const std::vector<std::int64_t> values = numbers(selection);
+      const std::size_t rank = dims.size();
+      ASSERT_EQ(values.size(), 4 * rank) << dataset;
+      std::vector<std::int64_t> start(rank, 0), stride(rank, 1), count = dims;
+      start[0] = grid;
+      count[0] = 1;
+      EXPECT_EQ(std::vector<std::int64_t>(values.begin(), values.begin() + rank), start);
+      EXPECT_EQ(std::vector<std::int64_t>(values.begin() + rank, values.begin() + 2 * rank),
+                stride);
+      EXPECT_EQ(std::vector<std::int64_t>(values.begin() + 2 * rank, values.begin() + 3 * rank),
+                count);
+      EXPECT_EQ(std::vector<std::int64_t>(values.begin() + 3 * rank, values.end()), dims);
+      EXPECT_EQ(numbers((*m)[1]), count) << dataset;
+    }
+    at = next;
+  }
+  const auto n = static_cast<std::int64_t>(sample_times.size());
+  EXPECT_EQ(grid + 1, n);
+  // Per grid: positions, velocities, slopes, axial_force selected; element_nodes, node_ids,
+  // element_ids, element_kind, element_set whole.
+  EXPECT_EQ(selections, 4 * n);
+  EXPECT_EQ(whole, 5 * n);
+}
+
 TEST_F(TransientXdmfTest, ReplacesAnOldXdmfAndEscapesTheFileName) {
   const fs::path h5 = directory_ / "a&b.h5";
   const fs::path xmf = directory_ / "a&b.xmf";
   write_series_file(h5, sample_times);
   std::ofstream(xmf) << "stale";
-  catena::io::write_transient_xdmf(h5.string(), xmf.string(), n_nodes, n_elements, sample_times);
+  catena::io::write_transient_xdmf(h5.string(), xmf.string(), n_nodes, n_elements, sample_times,
+                                   legacy);
   const std::string xml = read_text(xmf);
   EXPECT_EQ(xml.find("stale"), std::string::npos);
   EXPECT_EQ(xml.find("a&b.h5"), std::string::npos);
@@ -320,7 +388,7 @@ TEST_F(TransientXdmfTest, RefusesAFileWithoutSamples) {
                  [&] {
                    catena::io::write_transient_xdmf(h5.string(),
                                                     (directory_ / "empty.xmf").string(), n_nodes,
-                                                    n_elements, times);
+                                                    n_elements, times, legacy);
                  },
                  {"empty.xmf", "no samples"}, {"empty.h5"});
 }
@@ -333,25 +401,29 @@ TEST_F(TransientXdmfTest, RefusesShapesThatDoNotMatchTheFile) {
   expect_refused(
       directory_,
       [&] {
-        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes + 1, n_elements, sample_times);
+        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes + 1, n_elements, sample_times,
+                                         legacy);
       },
       {"run.xmf", "/mesh/node_ids", "shape (4), expected (5)"}, only_h5);
   expect_refused(
       directory_,
       [&] {
-        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements - 1, sample_times);
+        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements - 1, sample_times,
+                                         legacy);
       },
       {"/mesh/element_ids"}, only_h5);
   const std::vector<double> fewer(sample_times.begin(), sample_times.end() - 1);
   expect_refused(
       directory_,
-      [&] { catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, fewer); },
+      [&] {
+        catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, fewer, legacy);
+      },
       {"/time", "shape (5), expected (4)"}, only_h5);
   expect_refused(
       directory_,
       [&] {
         catena::io::write_transient_xdmf((directory_ / "missing.h5").string(), xmf, n_nodes,
-                                         n_elements, sample_times);
+                                         n_elements, sample_times, legacy);
       },
       {"H5Fopen", "missing.h5"}, only_h5);
 }
@@ -369,7 +441,7 @@ TEST_F(TransientXdmfTest, RefusesAFileOfAnotherFormat) {
     expect_refused(directory_,
                    [&] {
                      catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements,
-                                                      sample_times);
+                                                      sample_times, legacy);
                    },
                    {"other.xmf", "other.h5", found, "expected 'catena-transient-1'"}, {"other.h5"});
   }
@@ -386,13 +458,13 @@ TEST_F(TransientXdmfTest, RefusesAnXdmfOutsideTheHdf5Directory) {
                  [&] {
                    catena::io::write_transient_xdmf(h5.string(),
                                                     (directory_ / "elsewhere" / "run.xmf").string(),
-                                                    n_nodes, n_elements, sample_times);
+                                                    n_nodes, n_elements, sample_times, legacy);
                  },
                  {"base name"}, {"elsewhere", "run.h5"});
   expect_refused(directory_,
                  [&] {
                    catena::io::write_transient_xdmf(h5.string(), h5.string(), n_nodes, n_elements,
-                                                    sample_times);
+                                                    sample_times, legacy);
                  },
                  {"would replace"}, {"elsewhere", "run.h5"});
   EXPECT_TRUE(fs::is_empty(directory_ / "elsewhere"));

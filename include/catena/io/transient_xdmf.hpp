@@ -1,9 +1,10 @@
 #pragma once
-// The XDMF 3 description of a dynamic run's time-series HDF5 file (docs/output.md, "Time
+// The XDMF descriptions of a dynamic run's time-series HDF5 file (docs/output.md, "Time
 // series"), so that ParaView can play the run: a temporal collection with one polyline grid
-// per sample, whose geometry and fields are HyperSlab selections of sample k of the
-// /samples datasets. The XDMF only points into the HDF5 file, by its base name, so the
-// pair can be moved together.
+// per sample, whose geometry and fields are selections of sample k of the /samples
+// datasets — written in two flavours, one for each family of ParaView's XDMF readers
+// (XdmfReaders). The XDMF only points into the HDF5 file, by its base name, so the files
+// can be moved together.
 //
 // For the caller's rank 0, after the parallel HDF5 file is closed on every rank: these
 // functions open it with serial HDF5 (the default file access property list).
@@ -12,7 +13,7 @@
 //     const std::vector<double> times = catena::io::read_sample_times(path);
 //     if (!times.empty())
 //       catena::io::write_transient_xdmf(path, catena::io::transient_xdmf_path(path),
-//                                        n_nodes, n_elements, times);
+//                                        n_nodes, n_elements, times, XdmfReaders::xdmf3);
 //   }
 #include <cstdint>
 #include <string>
@@ -20,9 +21,24 @@
 
 namespace catena::io {
 
+// Which of ParaView's XDMF readers a description is for (checked with ParaView 5.11).
+enum class XdmfReaders {
+  // Xdmf3 Reader S/T, ParaView's default for .xmf: the sample selected inside each HDF
+  // reference ("file:/dataset|start:stride:count:dimensions"); no computed fields, which
+  // these readers drop.
+  xdmf3,
+  // The XDMF Reader, which ParaView picks for .xmf2: XDMF HyperSlab items, and the
+  // displacements from the mesh and from the static equilibrium as Function items.
+  xdmf2,
+};
+
 // Not collective. `hdf5_path` with its extension replaced by ".xmf" (appended if none), the
 // same rule as for static results.
 std::string transient_xdmf_path(const std::string& hdf5_path);
+
+// Not collective. `hdf5_path` with its extension replaced by ".xmf2": the description for
+// ParaView's XDMF Reader beside the .xmf.
+std::string transient_xdmf2_path(const std::string& hdf5_path);
 
 // Not collective. The sample times /time [s] of a closed time-series file.
 // Throws catena::Error naming the file and the failing HDF5 call, or catena::InputError
@@ -40,6 +56,6 @@ std::vector<double> read_sample_times(const std::string& hdf5_path);
 // outside them. Throws catena::Error naming the files.
 void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_path,
                           std::int64_t n_nodes, std::int64_t n_elements,
-                          const std::vector<double>& times);
+                          const std::vector<double>& times, XdmfReaders readers);
 
 }  // namespace catena::io
