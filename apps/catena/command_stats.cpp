@@ -48,7 +48,10 @@ std::string json_string(const std::string& s) {
 }
 
 std::string json_section(const post::EvaluationSection& s) {
-  return "[" + json_number(s.x_start) + ", " + json_number(s.x_end) + "]";
+  // Appended, not "[" + ...: GCC 12 warns falsely (-Wrestrict) on a literal + a temporary.
+  std::string out = "[";
+  out.append(json_number(s.x_start)).append(", ").append(json_number(s.x_end)).append("]");
+  return out;
 }
 
 std::string json_acceptance(const PantographEvaluation& e, const std::string& ranges) {

@@ -28,14 +28,29 @@ constexpr double kmh_per_ms = 3.6;
 // the zero-phase filter's backward pass starts there from the last value, and its start-up
 // transient (on a contact-force-like test signal: 0.07 N one cutoff period before the end)
 // is 0.001 N two periods before it.
+// A record that reaches an end of the section but for round-off (240.0 is stored as
+// 239.99999999998892 by some step sequences) covers it: the ends are widened as the
+// statistics widen them (contact_statistics.hpp).
 post::EvaluationSection covered_part_of(const post::EvaluationSection& section,
-                                        const post::PantographRecord& p, double cutoff_hz) {
+                                        const post::PantographRecord& p, double dt,
+                                        double cutoff_hz) {
   auto [lo, hi] = std::minmax_element(p.position.begin(), p.position.end());
   double low = *lo, high = *hi;
   const double edge = std::abs(p.speed) * 2.0 / cutoff_hz;
+  const auto round_off = [&](double x) {
+    return std::max(1e-6 * std::abs(p.speed) * dt, 1e-9 * std::abs(x));
+  };
   const bool forward = p.position.back() >= p.position.front();
-  if (forward && high < section.x_end) high -= edge;
-  if (!forward && low > section.x_start) low += edge;
+  // Snapped to the section's ends where the record reaches them; else cut, the record's
+  // last end by the filter's edge.
+  if (high >= section.x_end - round_off(section.x_end))
+    high = section.x_end;
+  else if (forward)
+    high -= edge;
+  if (low <= section.x_start + round_off(section.x_start))
+    low = section.x_start;
+  else if (!forward)
+    low += edge;
   return {std::max(section.x_start, low), std::min(section.x_end, high)};
 }
 
@@ -115,7 +130,7 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
       }
     PantographEvaluation e;
     e.pantograph = &p;
-    e.section = covered_part_of(out.section, p, args.cutoff_hz);
+    e.section = covered_part_of(out.section, p, out.run.dt, args.cutoff_hz);
     e.partial = e.section.x_end - e.section.x_start <
                 (out.section.x_end - out.section.x_start) - std::abs(p.speed) * out.run.dt;
     options.section = e.section;
