@@ -45,8 +45,8 @@ OutputError nothing_drawn(const std::string& file) {
 void plot_on_this_rank(const StatsArguments& args) {
   const std::string prefix = args.output.empty() ? default_prefix(args.file) : args.output;
   std::vector<std::string> script_args{args.file, prefix, joined_formats(args.formats)};
-  create_parent_directory(prefix + "_static_shape.png");
   refuse_unfinished_name(args.file);
+  create_parent_directory(prefix + "_static_shape.png");
   if (!io::has_contact_forces(args.file)) {
     if (!draw_figures("plot_run.py", script_args)) throw nothing_drawn(args.file);
     return;

@@ -20,8 +20,6 @@
 namespace catena::app {
 namespace {
 
-constexpr double kmh_per_ms = 3.6;
-
 // Shortest decimal that reads back as the same double; null for NaN/inf (not JSON).
 std::string json_number(double x) {
   if (!std::isfinite(x)) return "null";

@@ -10,8 +10,6 @@
 namespace catena::app {
 namespace {
 
-constexpr double kmh_per_ms = 3.6;
-
 std::string number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.10g", x);

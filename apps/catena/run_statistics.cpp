@@ -12,8 +12,6 @@
 namespace catena::app {
 namespace {
 
-constexpr double kmh_per_ms = 3.6;
-
 // The library's keys name its arguments; the user knows the file's datasets and the options.
 [[noreturn]] void rethrow_naming_file(const InputError& e, const std::string& file) {
   const std::string& k = e.where().key;
@@ -27,7 +25,7 @@ constexpr double kmh_per_ms = 3.6;
 // section (a run stopped, or too short), the last 2/cutoff seconds of travel are left out:
 // the zero-phase filter's backward pass starts there from the last value, and its start-up
 // transient (on a contact-force-like test signal: 0.07 N one cutoff period before the end)
-// is 0.001 N two periods before it.
+// is 0.0015 N two periods before it (tests/unit/test_post_contact_statistics.cpp).
 // A record that reaches an end of the section but for round-off (240.0 is stored as
 // 239.99999999998892 by some step sequences) covers it: the ends are widened as the
 // statistics widen them (contact_statistics.hpp).
@@ -137,7 +135,8 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
     try {
       e.filtered_force = post::butterworth_lowpass_zero_phase(p.force, out.run.dt, args.cutoff_hz);
       if (e.section.x_end > e.section.x_start) {
-        e.statistics = post::contact_statistics(p, out.run.registration_points, options);
+        e.statistics =
+            post::contact_statistics(p, e.filtered_force, out.run.registration_points, options);
       } else if (coverage == SectionCoverage::whole && out.finished) {
         options.section = out.section;  // names the part the record covers
         post::contact_statistics(p, out.run.registration_points, options);

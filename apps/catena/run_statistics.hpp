@@ -17,6 +17,8 @@
 
 namespace catena::app {
 
+inline constexpr double kmh_per_ms = 3.6;  // a speed in m/s times this is in km/h
+
 struct PantographEvaluation {
   const post::PantographRecord* pantograph = nullptr;  // in RunEvaluation::run
   // The section evaluated: the requested one cut to what the pantograph's record covers

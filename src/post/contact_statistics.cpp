@@ -83,7 +83,22 @@ ContactStatistics contact_statistics(const PantographRecord& pantograph,
                                      const ContactStatisticsOptions& options) {
   check_sampling(options.dt, options.cutoff_hz);
   check_section(options.section);
+  // Filter the whole record, then evaluate inside the section.
+  const std::vector<double> filtered =
+      butterworth_lowpass_zero_phase(pantograph.force, options.dt, options.cutoff_hz);
+  return contact_statistics(pantograph, filtered, supports, options);
+}
+
+ContactStatistics contact_statistics(const PantographRecord& pantograph,
+                                     std::span<const double> filtered,
+                                     std::span<const RegistrationPoint> supports,
+                                     const ContactStatisticsOptions& options) {
+  check_sampling(options.dt, options.cutoff_hz);
+  check_section(options.section);
   const std::size_t n = pantograph.force.size();
+  if (filtered.size() != n)
+    throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
+                " force samples but " + std::to_string(filtered.size()) + " filtered ones");
   if (pantograph.position.size() != n)
     throw Error("contact statistics of '" + pantograph.name + "': " + std::to_string(n) +
                 " force samples but " + std::to_string(pantograph.position.size()) + " positions");
@@ -94,10 +109,6 @@ ContactStatistics contact_statistics(const PantographRecord& pantograph,
 
   const std::vector<std::size_t> rows = section_samples(pantograph, options);
   const double tolerance = end_tolerance(options.section, pantograph.speed, options.dt);
-
-  // Filter the whole record, then evaluate inside the section.
-  const std::vector<double> filtered =
-      butterworth_lowpass_zero_phase(pantograph.force, options.dt, options.cutoff_hz);
 
   ContactStatistics s;
   s.n_samples = rows.size();

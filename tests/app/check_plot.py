@@ -5,6 +5,7 @@ what a short run has, even where its pantograph never reached the evaluation sec
 - a catenary run with a pantograph (RUN.h5): contact_force, spectrum, uplift and
   static_shape, as PNG and PDF, each a valid file of its kind and not empty; the files the
   command prints are exactly those; no temporary file is left beside them;
+- the pantograph's stage nodes written under its contact point (they travel with it);
 - a dynamic run without pantographs and a static result, run here (cable_pendulum,
   hanging_cable, briefly): static_shape and displacement, static_shape alone.
 Usage: check_plot.py CATENA RUN.h5 OUTDIR
@@ -34,6 +35,28 @@ def plot(catena, args, expected, outdir):
     assert not leftovers, leftovers
 
 
+def check_pantograph_travel(run_file):
+    """The time series draws each pantograph under its contact point: its stage nodes (the
+    elements of the set 'pantograph NAME') move along x by the contact point's travel along
+    the path (a straight line in x here, so arc length and x agree to the wire's slope)."""
+    import h5py
+    import numpy as np
+    with h5py.File(run_file, "r") as f:
+        sets = list(f["mesh/element_set"].attrs["set_names"])
+        element_set = f["mesh/element_set"][:]
+        nodes = f["mesh/element_nodes"][:]
+        positions = f["samples/positions"]
+        travel = f["samples/contact_position"][:, 0] - f["samples/contact_position"][0, 0]
+        name = next(s for s in sets if s.startswith("pantograph "))
+        stage_nodes = np.unique(nodes[element_set == sets.index(name)])
+        for node in stage_nodes:
+            x = positions[:, int(node), 0]
+            worst = np.abs((x - x[0]) - travel).max()
+            assert worst < 1e-3, (name, node, worst)
+    print(f"{name}: {len(stage_nodes)} stage nodes travel with the contact point "
+          f"({travel[-1]:.2f} m): ok")
+
+
 def main():
     catena, run_file, outdir = sys.argv[1], sys.argv[2], sys.argv[3]
     shutil.rmtree(outdir, ignore_errors=True)
@@ -52,6 +75,8 @@ def main():
     with open(prefix + "_far_statistics.csv") as f:
         lines = f.read().splitlines()
     assert lines[1].split(",")[5:8] == ["0", "", ""], lines[1]
+
+    check_pantograph_travel(run_file)
 
     env = dict(os.environ)
     pendulum, cable = os.path.join(outdir, "pendulum.h5"), os.path.join(outdir, "cable.h5")

@@ -90,6 +90,15 @@ ContactStatistics contact_statistics(const PantographRecord& pantograph,
                                      std::span<const RegistrationPoint> supports,
                                      const ContactStatisticsOptions& options);
 
+// Not collective. As above, with the whole record's force already filtered: `filtered` is
+// butterworth_lowpass_zero_phase(pantograph.force, options.dt, options.cutoff_hz), for a
+// caller that needs the filtered series too (it is not filtered again). Throws as above,
+// and catena::Error when `filtered` is not as long as the record.
+ContactStatistics contact_statistics(const PantographRecord& pantograph,
+                                     std::span<const double> filtered,
+                                     std::span<const RegistrationPoint> supports,
+                                     const ContactStatisticsOptions& options);
+
 // Not collective. The rows of `pantograph`'s samples in options.section (step 2 above),
 // ascending. Throws catena::InputError (key "section") when the section is empty, reversed
 // or holds no sample.
