@@ -29,6 +29,7 @@
 #include "catena/io/run_files.hpp"
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
+#include "catena/post/contact_resolution.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
@@ -137,6 +138,9 @@ class OutputObserver : public solvers::TransientObserver {
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
+    resolution_.resize(record.contact_force.size());
+    for (std::size_t c = 0; c < record.contact_force.size(); ++c)
+      resolution_[c].add(record.contact_force[c]);
     registration_heights(record.registration_height);
     {
       const LogStage stage("Output");
@@ -159,6 +163,9 @@ class OutputObserver : public solvers::TransientObserver {
   }
 
   bool stop_requested() override { return StopSignal::requested(); }
+
+  // Per contact (model order), how well this run's steps resolved its force.
+  const std::vector<post::ContactResolution>& contact_resolution() const { return resolution_; }
 
   // Collective. z of every registration node at the current state (rank 0 writes them).
   void registration_heights(std::vector<double>& heights) const {
@@ -212,6 +219,7 @@ class OutputObserver : public solvers::TransientObserver {
   double last_dt_ = 0.0;
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
+  std::vector<post::ContactResolution> resolution_;
   std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
   TestHooks hooks_ = TestHooks::from_environment();
 };
@@ -223,6 +231,26 @@ void warn_fixed_steps_cut(const solvers::TransientReport& r) {
                "catena: warning: %ld fixed step%s cut after Newton failures; the smallest "
                "step taken was %g s; a smaller integrator.dt would avoid the retries\n",
                r.fixed_steps_cut, r.fixed_steps_cut == 1 ? " was" : "s were", r.smallest_cut_dt);
+}
+
+// Not collective (rank 0). Names each pantograph whose contact force the steps did not
+// resolve (post/contact_resolution.hpp): its statistics are then the step's.
+void warn_unresolved_contact(const model::Model& m,
+                             const std::vector<post::ContactResolution>& resolution) {
+  for (std::size_t c = 0; c < resolution.size() && c < m.contacts.size(); ++c) {
+    if (!resolution[c].unresolved()) continue;
+    std::fprintf(stderr,
+                 "catena: warning: pantograph '%s': the steps do not resolve its contact force "
+                 "(roughness %.2f > %.1f: the force changes from step to step by more than a "
+                 "sine with 9 steps per period does); the contact spring's own mode "
+                 "(contact.stiffness %g N/m between the head and the wire) is the usual cause, "
+                 "and the force statistics are then the step's, not the line's: halve "
+                 "integrator.dt until this warning goes, lower contact.stiffness, or use an "
+                 "L-stable method (radau) (docs/accuracy.md, \"Where each method stops "
+                 "working\")\n",
+                 m.contacts[c].name.c_str(), resolution[c].roughness(),
+                 post::ContactResolution::kUnresolved, m.contacts[c].stiffness);
+  }
 }
 
 // Not collective (rank 0). The ParaView description of the closed output (all its samples,
@@ -574,6 +602,12 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   // build), over the simulated time this process stepped: what `catena study` compares.
   run_statistics.emplace_back("stepping_wall_seconds", stepping);
   run_statistics.emplace_back("t_started", t_begin);
+  if (!observer.contact_resolution().empty()) {
+    double roughest = 0.0;
+    for (const post::ContactResolution& r : observer.contact_resolution())
+      roughest = std::max(roughest, r.roughness());
+    run_statistics.emplace_back("contact_force_roughness", roughest);
+  }
   std::optional<RealtimeSummary> realtime_summary;
   if (realtime.enabled()) {
     realtime_summary = realtime.summary(comm);
@@ -591,6 +625,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   write_xdmf(rank, written, m);
   if (rank == 0) {
     warn_fixed_steps_cut(report);
+    warn_unresolved_contact(m, observer.contact_resolution());
     std::printf(
         "%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
         "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall, of which "

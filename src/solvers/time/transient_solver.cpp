@@ -8,6 +8,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/time/state_guard.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -22,7 +23,11 @@ class Driver {
  public:
   Driver(assembly::SecondOrderSystem& system, TimeIntegrator& integrator,
          const TransientOptions& options, TransientObserver& observer)
-      : system_(system), in_(integrator), options_(options), observer_(observer) {
+      : system_(system),
+        in_(integrator),
+        options_(options),
+        observer_(observer),
+        guard_(system, options.t_end, options.step.dt) {
     const StepControl& c = options.step;
     doubling_ = c.adaptive &&
                 (c.estimate == ErrorEstimate::step_doubling ||
@@ -185,18 +190,23 @@ class Driver {
   // Samples up to t not yet taken (t_start's at the beginning) straight to the observer.
   void emit_samples_up_to(double t) {
     if (options_.sample_interval <= 0.0) {
-      observer_.sample(t, in_.q(), in_.v());
-      ++report_.samples;
+      take_sample(t, in_.q(), in_.v());
       return;
     }
     while (sample_time(next_sample_) <= t * (1 + 1e-13) + 1e-300) {
       const double ts = std::min(sample_time(next_sample_), t);
       in_.interpolate(ts, q_sample_.get(), v_sample_.get());
-      observer_.sample(ts, q_sample_.get(), v_sample_.get());
-      ++report_.samples;
+      take_sample(ts, q_sample_.get(), v_sample_.get());
       ++next_sample_;
     }
     committed_sample_ = next_sample_;
+  }
+
+  // Collective. A state goes to the observer only once the guard has passed it.
+  void take_sample(double t, Vec q, Vec v) {
+    guard_.check(in_.name(), t, q, v);
+    observer_.sample(t, q, v);
+    ++report_.samples;
   }
 
   void buffer_samples_up_to(double t) {
@@ -216,10 +226,7 @@ class Driver {
   }
 
   void release_pending_samples() {
-    for (PendingSample& p : pending_) {
-      observer_.sample(p.t, p.q.get(), p.v.get());
-      ++report_.samples;
-    }
+    for (PendingSample& p : pending_) take_sample(p.t, p.q.get(), p.v.get());
     pending_.clear();
     committed_sample_ = next_sample_;
   }
@@ -266,6 +273,7 @@ class Driver {
   TimeIntegrator& in_;
   const TransientOptions& options_;
   TransientObserver& observer_;
+  StateGuard guard_;
   bool doubling_ = false;
   int k_ = 1;
   ErrorTolerance tol_;

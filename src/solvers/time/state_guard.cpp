@@ -1,0 +1,124 @@
+#include "catena/solvers/time/state_guard.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+#include "catena/model/unknown_kinds.hpp"
+
+namespace catena::solvers {
+namespace {
+
+// Not collective. The diagonal of the box around the mesh nodes (at least 1 m, so that a
+// model of one point has a size).
+double size_of(const model::Model& m) {
+  if (m.nodes.empty()) return 1.0;
+  Vec3 lo = m.nodes.front().position, hi = lo;
+  for (const model::Node& n : m.nodes) {
+    lo = lo.cwiseMin(n.position);
+    hi = hi.cwiseMax(n.position);
+  }
+  return std::max(1.0, (hi - lo).norm());
+}
+
+// Not collective. The farthest a prescribed motion carries its node from the mesh by t_end.
+double prescribed_travel(const model::Model& m, double t_end) {
+  double travel = 0.0;
+  for (const model::Constraint& c : m.constraints)
+    if (c.type == model::ConstraintType::prescribed)
+      travel = std::max(travel, c.velocity.norm() * t_end + c.amplitude.norm());
+  return travel;
+}
+
+}  // namespace
+
+StateGuard::StateGuard(const assembly::SecondOrderSystem& system, double t_end, double dt)
+    : system_(system), dt_(dt) {
+  const model::Model& m = system.model();
+  size_ = size_of(m);
+  position_bound_ = kReachFactor * size_ + prescribed_travel(m, t_end);
+  reference_ = system.create_vector();
+  system.reference_state(reference_.get());
+  const assembly::DofMap& dofs = system.dof_map();
+  bound_.assign(static_cast<std::size_t>(dofs.n_owned()), 0.0);
+  for (const int n : dofs.owned_nodes()) {
+    const model::UnknownKindInfo& kind = model::kind_info(dofs.node_kind(n));
+    for (int k = 0; k < dofs.node_dofs(n); ++k) {
+      const PetscInt g = dofs.global_dof(n, k);
+      if (g < 0) continue;
+      const bool position = kind.position >= 0 && k >= kind.position && k < kind.position + 3;
+      bound_[static_cast<std::size_t>(g - dofs.first_owned())] =
+          position ? position_bound_ : kReachFactor;
+    }
+  }
+}
+
+std::string StateGuard::unstable_step() const {
+  std::ostringstream os;
+  os << ": the step (dt = " << dt_
+     << " s) is unstable for this scene; a smaller integrator.dt keeps it bounded "
+        "(docs/accuracy.md, \"Where each method stops working\", lists the measured limits)";
+  return os.str();
+}
+
+void StateGuard::check(const std::string& who, double t, Vec q, Vec v) const {
+  const PetscScalar *x = nullptr, *u = nullptr, *r = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &x));
+  CATENA_PETSC(VecGetArrayRead(v, &u));
+  CATENA_PETSC(VecGetArrayRead(reference_.get(), &r));
+  const PetscInt first = system_.dof_map().first_owned();
+  // The first entry that is not finite (a global index; n_global if none), and the entry
+  // furthest beyond its bound, as (change / bound, global index) for MPI_MAXLOC.
+  long not_finite = static_cast<long>(system_.dof_map().n_global());
+  struct {
+    double ratio;
+    int index;
+  } worst{0.0, -1};
+  for (std::size_t i = 0; i < bound_.size(); ++i) {
+    const PetscInt g = first + static_cast<PetscInt>(i);
+    if (!std::isfinite(x[i]) || !std::isfinite(u[i])) {
+      not_finite = std::min(not_finite, static_cast<long>(g));
+      continue;
+    }
+    if (bound_[i] <= 0.0) continue;
+    const double ratio = std::abs(x[i] - r[i]) / bound_[i];
+    if (ratio > worst.ratio) worst = {ratio, static_cast<int>(g)};
+  }
+  CATENA_PETSC(VecRestoreArrayRead(reference_.get(), &r));
+  CATENA_PETSC(VecRestoreArrayRead(v, &u));
+  CATENA_PETSC(VecRestoreArrayRead(q, &x));
+  MPI_Allreduce(MPI_IN_PLACE, &not_finite, 1, MPI_LONG, MPI_MIN, system_.comm());
+  MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, system_.comm());
+  std::ostringstream os;
+  os.precision(4);
+  if (not_finite < static_cast<long>(system_.dof_map().n_global())) {
+    os << who << ": the state is not finite at t = " << t << " s (first at "
+       << system_.describe_dof(static_cast<PetscInt>(not_finite)) << ")" << unstable_step();
+    throw NumericalError(os.str());
+  }
+  if (worst.ratio <= 1.0) return;
+  const assembly::DofMap& dofs = system_.dof_map();
+  const model::UnknownKindInfo& kind =
+      model::kind_info(dofs.node_kind(dofs.node_of_global(worst.index)));
+  const int component = dofs.component_of_global(worst.index);
+  const bool position =
+      kind.position >= 0 && component >= kind.position && component < kind.position + 3;
+  os << who << ": the motion grew without bound (energy growth) at t = " << t
+     << " s: " << system_.describe_dof(worst.index);
+  if (position)
+    os << " is " << worst.ratio * position_bound_ << " m from its mesh position, beyond "
+       << position_bound_ << " m (" << kReachFactor << " times the model's size, " << size_ << " m"
+       << (position_bound_ > kReachFactor * size_ ? ", and the prescribed motions' travel" : "")
+       << ")";
+  else
+    os << " changed by " << worst.ratio * kReachFactor << ", beyond " << kReachFactor
+       << " (a unit tangent stretched tenfold)";
+  os << ", which no motion of the scene reaches" << unstable_step();
+  throw NumericalError(os.str());
+}
+
+}  // namespace catena::solvers

@@ -1,0 +1,167 @@
+#!/usr/bin/python3
+"""One case of the extremes suite (docs/accuracy.md, "Where each method stops working").
+
+Runs `catena run SCENE --set ...` at a setting at or past some method's limit and passes
+if Catena's answer is one of the two a user may get there:
+
+  * the run completes (exit 0) with an output that is all finite and bounded: no node of
+    the structure further than --max-displacement from its mesh position, the plucked
+    string's energy (--string-energy) never above its start by more than the tolerance;
+  * the run stops with exit code 3 and a message that names the cause (the step fell
+    below its minimum, a state that is not finite, energy growth), and whatever it wrote
+    before is finite.
+
+--expect says which of the two the case must give (or `either`), --warn/--no-warn what
+the run must (not) say, --loss-of-contact whether contact must be lost (past the wire's
+wave speed it must be counted). A crash, a hang (the CTest timeout), another exit code or
+NaN in a file fails the case. Prints one line with what happened, for the table.
+"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+CAUSES = r"step size fell below its minimum|state is not finite|grew without bound"
+
+
+def finite_file(path):
+    """(True, "") if every sample dataset of `path` is finite, else (False, which)."""
+    with h5py.File(path, "r") as f:
+        for name in ("positions", "velocities", "slopes", "contact_force", "axial_force"):
+            key = "samples/" + name
+            if key in f and not np.all(np.isfinite(f[key][:])):
+                return False, key
+    return True, ""
+
+
+def structure_displacement(path):
+    """Largest distance of a structure node from its mesh position (pantograph stage nodes,
+    which travel along the line in the output, left out)."""
+    with h5py.File(path, "r") as f:
+        positions = f["samples/positions"][:]
+        mesh = f["mesh/node_positions"][:]
+        keep = np.ones(mesh.shape[0], bool)
+        if "pantographs" in f and len(f["pantographs"]):
+            # the stage nodes are drawn under their contact point: they travel along x
+            keep = np.abs(positions[:, :, 0] - mesh[None, :, 0]).max(axis=0) < 1.0
+        d = np.linalg.norm(positions[:, keep, :] - mesh[None, keep, :], axis=2)
+        return float(d.max())
+
+
+def string_energy(path, tension, mass_per_length):
+    """Per sample, ½μ∫|v|² dx + ½T∫|w'|² dx of a straight string along x (trapezoid over
+    the nodes; w' from the slopes): the plucked string's energy to small-amplitude order."""
+    with h5py.File(path, "r") as f:
+        x = f["mesh/node_positions"][:, 0]
+        v = f["samples/velocities"][:]
+        s = f["samples/slopes"][:]
+    order = np.argsort(x)
+    x = x[order]
+    kinetic = 0.5 * mass_per_length * np.trapz(np.sum(v[:, order, :] ** 2, axis=2), x, axis=1)
+    slope = s[:, order, 1:] / np.linalg.norm(s[:, order, :], axis=2, keepdims=True)
+    potential = 0.5 * tension * np.trapz(np.sum(slope**2, axis=2), x, axis=1)
+    return kinetic + potential
+
+
+def contact_force(path):
+    """The first pantograph's sampled contact force, or None without pantographs."""
+    with h5py.File(path, "r") as f:
+        if "samples/contact_force" not in f or f["samples/contact_force"].shape[1] == 0:
+            return None
+        return f["samples/contact_force"][:, 0]
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--catena", required=True)
+    p.add_argument("--scene", required=True)
+    p.add_argument("--output", required=True, help="the case's output file (OUT.h5)")
+    p.add_argument("--set", action="append", default=[], dest="sets")
+    p.add_argument("--petsc", action="append", default=[], help="a PETSc option (repeat)")
+    p.add_argument("--expect", choices=("bounded", "stops", "either"), required=True)
+    p.add_argument("--warn", help="a regex the run's output must match")
+    p.add_argument("--no-warn", help="a regex the run's output must not match")
+    p.add_argument("--max-displacement", type=float, help="m, structure nodes, if completed")
+    p.add_argument("--loss-of-contact", choices=("some", "none"))
+    p.add_argument("--string-energy", nargs=3, type=float,
+                   metavar=("TENSION", "MASS_PER_LENGTH", "GROWTH"),
+                   help="the energy never above its start by more than GROWTH (relative)")
+    a = p.parse_args()
+
+    for stale in (a.output, a.output.replace(".h5", ".part.h5")):
+        if os.path.exists(stale):
+            os.remove(stale)
+    cmd = [a.catena, "run", a.scene, "-o", a.output, "--quiet"]
+    for s in a.sets:
+        cmd += ["--set", s]
+    for o in a.petsc:
+        cmd += o.split(" ", 1)
+    run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    out = run.stdout
+    problems = []
+    verdict = ""
+    if run.returncode == 0:
+        verdict = "completed"
+        if a.expect == "stops":
+            problems.append("completed, but the case must stop with exit 3")
+        ok, which = finite_file(a.output)
+        if not ok:
+            problems.append(f"{which} holds values that are not finite")
+        else:
+            d = structure_displacement(a.output)
+            verdict += f", largest displacement {d:.3g} m"
+            if a.max_displacement is not None and d > a.max_displacement:
+                problems.append(f"a node moved {d:.3g} m > {a.max_displacement} m")
+            force = contact_force(a.output)
+            if force is not None:
+                loss = float(np.mean(force <= 0.0) * 100.0)
+                verdict += f", contact force std {force.std():.2f} N, loss of contact {loss:.2f} %"
+            if a.loss_of_contact:
+                if force is None:
+                    problems.append("no contact force in the output")
+                    loss = 0.0
+                elif (loss > 0) != (a.loss_of_contact == "some"):
+                    problems.append(f"loss of contact {loss:.2f} %, expected {a.loss_of_contact}")
+            if a.string_energy:
+                tension, mu, growth = a.string_energy
+                e = string_energy(a.output, tension, mu)
+                drift = e.max() / e[0] - 1.0
+                verdict += f", energy max/start - 1 = {drift:.2e}, end/start = {e[-1] / e[0]:.4f}"
+                if not math.isfinite(drift) or drift > growth:
+                    problems.append(f"the energy grew by {drift:.3g} > {growth}")
+    elif run.returncode == 3:
+        cause = re.search(CAUSES, out)
+        verdict = "stopped (exit 3): " + (cause.group(0) if cause else "no cause named")
+        if a.expect == "bounded":
+            problems.append("stopped, but the case must complete")
+        if not cause:
+            problems.append("exit 3 without a named cause")
+        partial = a.output.replace(".h5", ".part.h5")
+        if os.path.exists(partial):
+            ok, which = finite_file(partial)
+            if not ok:
+                problems.append(f"{partial}: {which} holds values that are not finite")
+    else:
+        verdict = f"exit {run.returncode}"
+        problems.append(f"exit code {run.returncode}: neither a result nor a named failure")
+    if a.warn and not re.search(a.warn, out):
+        problems.append(f"the output does not say /{a.warn}/")
+    if a.no_warn and re.search(a.no_warn, out):
+        problems.append(f"the output says /{a.no_warn}/")
+    roughness = re.search(r"roughness ([0-9.]+)", out)
+    if roughness:
+        verdict += f", contact force roughness {roughness.group(1)}"
+    print(out)
+    print(f"extremes: {os.path.basename(a.output)}: {verdict}")
+    for problem in problems:
+        print("extremes: FAIL: " + problem, file=sys.stderr)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
