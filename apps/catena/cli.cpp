@@ -137,7 +137,7 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     st.cutoff_hz = parse_positive(value("--cutoff"), "--cutoff", "Hz", "a frequency in Hz, > 0");
   } else if (a == "-o" || a == "--output") {
     st.directory = value("-o");
-  } else if (a == "--restart" || a == "--realtime" || a == "--ids") {
+  } else if (a == "--restart" || a == "--realtime" || a == "--ids" || a == "--error-bar") {
     throw InputError({"", 0, a}, "'" + a +
                                      "' is not an option of study (a study resumes by itself: "
                                      "run the same command again); accepted: --vary, "
@@ -331,6 +331,13 @@ CommandLine parse_command_line(int argc, char** argv) {
                          "not of " +
                              cl.command);
       cl.realtime = true;
+    } else if (a == "--error-bar") {
+      if (cl.command != "run")
+        throw InputError({"", 0, "--error-bar"},
+                         "'--error-bar' is an option of run (catena run SCENE.yaml --error-bar), "
+                         "not of " +
+                             cl.command);
+      cl.error_bar = true;
     } else if (a == "--ids") {
       if (cl.command != "check")
         throw InputError(

@@ -63,6 +63,7 @@ struct CommandLine {
   bool restart = false;                // --restart: continue from OUT.h5.chk
   bool ids = false;                    // check --ids: list the catenary builder's ids
   bool realtime = false;               // run --realtime: measure against the wall clock
+  bool error_bar = false;              // run --error-bar: Richardson at 2 dt and 4 dt
   // --memory-limit GIB: the memory per host a run may use (default: physical memory);
   // 0 (--memory-limit off): no memory check.
   std::optional<double> memory_limit_gib;

@@ -16,6 +16,7 @@
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "commands.hpp"
+#include "error_bar.hpp"
 #include "log_stage.hpp"
 #include "output_preflight.hpp"
 #include "progress_lines.hpp"
@@ -111,6 +112,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
     throw InputError({cl.scene, 0, "--realtime"},
                      "--realtime measures a dynamic run against the wall clock; this scene's "
                      "analysis is static (analysis.type: static)");
+  check_error_bar_request(cl, m);
   // Before any solving: a run must not end by finding that it cannot write its results.
   check_output_path(comm, m, cl.output.has_value());
   check_modal_basis_path(comm, m);
@@ -120,6 +122,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   shape_catenary(comm, m);  // a `catenary` scene: dropper lengths before any analysis
   if (m.analysis == model::AnalysisType::dynamic) {
     run_dynamic(comm, cl, m);
+    if (cl.error_bar) run_error_bar(comm, cl, m);
     return;
   }
   if (cl.restart)

@@ -51,7 +51,7 @@ const CommandHelp* commands() {
   static const CommandHelp all[] = {
       {"run",
        R"(  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
-               [--quiet] [--realtime] [--memory-limit GIB] [PETSc options]
+               [--quiet] [--realtime] [--error-bar] [--memory-limit GIB] [PETSc options]
 )",
        R"(  run     solve the scene (static equilibrium or dynamics) and write OUT.h5 (+ OUT.xmf
           for ParaView)
@@ -68,6 +68,10 @@ const CommandHelp* commands() {
   --realtime            dynamics: report whether each output interval ended within the
                         wall clock (hardware in the loop) and the wall time per step:
                         mean, 99th percentile, worst (also in OUT.h5's statistics)
+  --error-bar           dynamics, fixed steps: then run the scene at 2 dt and 4 dt
+                        (OUT.error_bar/) and estimate this run's time-discretisation
+                        error of its statistics or probe track (Richardson, observed
+                        order; stored in OUT.h5 /error_bar; about 0.75 of the run again)
 )" + kMemoryOption,
        true},
       {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB] [--ids]\n",

@@ -1,0 +1,23 @@
+#pragma once
+// `catena run --error-bar`: after a completed fixed-step dynamic run, the same scene at
+// 2 dt and 4 dt (OUT.error_bar/), and from the three runs Richardson's estimate of the
+// run's own time-discretisation error on what users read — the EN 50318 statistics and the
+// filtered contact force of each pantograph, or a probe node's track — with the order of
+// convergence the three runs show (study/richardson.hpp). Stored in OUT.h5 (/error_bar)
+// and printed. Costs about 0.75 of the run again (half and a quarter of its steps).
+#include <mpi.h>
+
+#include "catena/model/model.hpp"
+#include "cli.hpp"
+
+namespace catena::app {
+
+// Not collective. Throws catena::InputError (key "--error-bar") when the scene cannot have
+// one: a static analysis or adaptive steps (a step of its own choosing has no 2 dt).
+void check_error_bar_request(const CommandLine& cl, const model::Model& m);
+
+// Collective. Runs the comparison runs and reports; a comparison that cannot run or be
+// compared is reported (stderr) and leaves the run without an error bar, not failed.
+void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
+
+}  // namespace catena::app

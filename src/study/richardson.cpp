@@ -1,0 +1,61 @@
+#include "catena/study/richardson.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace catena::study {
+namespace {
+
+// 2ᵖ for p in [1/2, 6]: the observed orders an estimate is scaled with.
+constexpr double kLowest = 1.4142135623730951, kHighest = 64.0;
+
+}  // namespace
+
+void richardson(double at_2dt, double at_4dt, bool signed_difference, io::ErrorBarEntry& out) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // 2ᵖ from the two differences (NaN when they do not give one).
+  double two_p = nan;
+  if (at_2dt != 0.0) two_p = signed_difference ? (at_4dt - at_2dt) / at_2dt : at_4dt / at_2dt - 1.0;
+  if (std::isfinite(two_p) && two_p >= kLowest && two_p <= kHighest) {
+    out.order = std::log2(two_p);
+    out.estimate = at_2dt / (two_p - 1.0);
+  } else {
+    out.order = nan;
+    out.estimate = signed_difference ? at_2dt : std::abs(at_2dt);
+  }
+}
+
+std::vector<io::ErrorBarEntry> richardson_error_bar(const CaseErrors& at_2dt,
+                                                    const CaseErrors& at_4dt) {
+  struct Measure {
+    const char* name;
+    const char* unit;
+    double CaseErrors::*field;
+    bool signed_difference;
+  };
+  static constexpr Measure measures[] = {
+      {"mean", "%", &CaseErrors::mean, true},
+      {"std", "%", &CaseErrors::std, true},
+      {"stat_max", "%", &CaseErrors::stat_max, true},
+      {"stat_min", "%", &CaseErrors::stat_min, true},
+      {"max", "%", &CaseErrors::max, true},
+      {"min", "%", &CaseErrors::min, true},
+      {"uplift", "%", &CaseErrors::uplift, true},
+      {"force_rms_filtered", "N", &CaseErrors::force_rms_filtered, false},
+      {"probe_rms", "m", &CaseErrors::probe_rms, false},
+  };
+  std::vector<io::ErrorBarEntry> entries;
+  for (const Measure& m : measures) {
+    const double a = at_2dt.*m.field, b = at_4dt.*m.field;
+    if (std::isnan(a) || std::isnan(b)) continue;
+    io::ErrorBarEntry e;
+    e.measure = m.name;
+    e.unit = m.unit;
+    richardson(a, b, m.signed_difference, e);
+    entries.push_back(e);
+  }
+  return entries;
+}
+
+}  // namespace catena::study

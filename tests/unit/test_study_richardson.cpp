@@ -1,0 +1,61 @@
+// study::richardson against quantities with a known error S(h) = S* + C hᵖ, and its bound
+// where three runs do not converge monotonically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "catena/study/richardson.hpp"
+
+namespace catena::study {
+namespace {
+
+TEST(Richardson, RecoversOrderAndErrorOfAPowerLaw) {
+  for (const double p : {1.0, 2.0, 3.0, 5.0}) {
+    const double c = 0.7, h = 0.1, exact = 26.0;
+    const auto s = [&](double step) { return exact + c * std::pow(step, p); };
+    io::ErrorBarEntry e;
+    richardson(s(2 * h) - s(h), s(4 * h) - s(h), true, e);
+    EXPECT_NEAR(e.order, p, 1e-6) << p;
+    EXPECT_NEAR(e.estimate, s(h) - exact, 1e-6 * std::abs(s(h) - exact)) << p;
+  }
+}
+
+TEST(Richardson, NormsOfDifferencesGiveTheRunsOwnError) {
+  // ‖X(kh) − X(h)‖ = (kᵖ − 1) E for a series whose error is E(h) = E·(step/h)ᵖ along one shape.
+  const double p = 2.0, error = 3e-4;
+  io::ErrorBarEntry e;
+  richardson((std::pow(2.0, p) - 1) * error, (std::pow(4.0, p) - 1) * error, false, e);
+  EXPECT_NEAR(e.order, p, 1e-12);
+  EXPECT_NEAR(e.estimate, error, 1e-15);
+}
+
+TEST(Richardson, DifferencesOfOppositeSignGiveTheBound) {
+  io::ErrorBarEntry e;
+  richardson(-0.030 - 0.004, 0.058 - 0.004, true, e);  // oscillating convergence
+  EXPECT_TRUE(std::isnan(e.order));
+  EXPECT_DOUBLE_EQ(e.estimate, -0.034);  // S(2h) − S(h): the bound of order 1
+}
+
+TEST(Richardson, OrdersOutsideTheSaneRangeGiveTheBound) {
+  io::ErrorBarEntry e;
+  richardson(1.0, 1.2, true, e);  // 2ᵖ = 0.2
+  EXPECT_TRUE(std::isnan(e.order));
+  richardson(1e-6, 1.0, true, e);  // 2ᵖ ≈ 10⁶
+  EXPECT_TRUE(std::isnan(e.order));
+  EXPECT_DOUBLE_EQ(e.estimate, 1e-6);
+}
+
+TEST(Richardson, OnlyMeasuredQuantitiesAreReported) {
+  CaseErrors a, b;
+  a.probe_rms = 3e-4;
+  b.probe_rms = 15e-4;  // 2ᵖ = 4: p = 2
+  const auto entries = richardson_error_bar(a, b);
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].measure, "probe_rms");
+  EXPECT_EQ(entries[0].unit, "m");
+  EXPECT_NEAR(entries[0].order, 2.0, 1e-12);
+  EXPECT_NEAR(entries[0].estimate, 1e-4, 1e-16);
+}
+
+}  // namespace
+}  // namespace catena::study
