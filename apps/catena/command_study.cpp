@@ -24,6 +24,8 @@
 #include "catena/study/case_measures.hpp"
 #include "catena/study/case_queue.hpp"
 #include "catena/study/case_record.hpp"
+#include "catena/study/richardson.hpp"
+#include "catena/study/richardson.hpp"
 #include "catena/study/study_plan.hpp"
 #include "catena/study/study_table.hpp"
 #include "commands.hpp"
@@ -182,6 +184,20 @@ void report(const CommandLine& cl, std::vector<StudyCase>& cases, const fs::path
       }
     }
     rows.push_back(row);
+  }
+  // The error bar each case would report by itself (catena run --error-bar), where the
+  // study ran its method at 2 and 4 times its step: set beside its true error.
+  const auto siblings = study::dt_siblings(rows);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!siblings[i]) continue;
+    const auto file = [&](std::size_t j) { return (cases_dir / (rows[j].name + ".h5")).string(); };
+    try {
+      const study::ReferenceRun own(file(i), reference.probes(), cl.study.cutoff_hz);
+      rows[i].estimates = study::richardson_error_bar(own.errors_of(file(siblings[i]->at_2dt)),
+                                                      own.errors_of(file(siblings[i]->at_4dt)));
+    } catch (const InputError&) {
+      // Not comparable with its siblings (a record that ends early): no error bar.
+    }
   }
   write_study_report(cl, rows, reference, directory, reference_description);
 }

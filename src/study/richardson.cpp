@@ -1,8 +1,10 @@
 #include "catena/study/richardson.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 
 namespace catena::study {
 namespace {
@@ -56,6 +58,34 @@ std::vector<io::ErrorBarEntry> richardson_error_bar(const CaseErrors& at_2dt,
     entries.push_back(e);
   }
   return entries;
+}
+
+std::vector<std::optional<DtSiblings>> dt_siblings(const std::vector<StudyRow>& rows) {
+  constexpr std::string_view key = "integrator.dt=";
+  // The step of a row varied in integrator.dt alone, else NaN.
+  const auto step = [&](const StudyRow& r) {
+    double dt = std::numeric_limits<double>::quiet_NaN();
+    if (!r.completed || r.setting.rfind(key, 0) != 0) return dt;
+    const std::string value = r.setting.substr(key.size());
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), dt);
+    return ec == std::errc() && end == value.data() + value.size() && dt > 0.0
+               ? dt
+               : std::numeric_limits<double>::quiet_NaN();
+  };
+  std::vector<std::optional<DtSiblings>> out(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double dt = step(rows[i]);
+    if (std::isnan(dt)) continue;
+    std::optional<std::size_t> at[2];
+    for (std::size_t j = 0; j < rows.size(); ++j) {
+      if (rows[j].method != rows[i].method) continue;
+      const double other = step(rows[j]);
+      for (int k = 0; k < 2; ++k)
+        if (std::abs(other - (k == 0 ? 2.0 : 4.0) * dt) <= 1e-9 * other) at[k] = j;
+    }
+    if (at[0] && at[1]) out[i] = DtSiblings{*at[0], *at[1]};
+  }
+  return out;
 }
 
 }  // namespace catena::study

@@ -53,6 +53,26 @@ std::string accepted_measures() {
 
 std::string number(double x) { return std::isfinite(x) ? number_text(x) : ""; }
 
+// The error-bar columns: an estimate (or its order) of one measure.
+struct EstimateColumn {
+  const char* measure;
+  bool order;
+  const char* column;
+};
+constexpr EstimateColumn estimate_columns[] = {
+    {"std", false, "std_error_estimate_percent"},
+    {"std", true, "std_estimate_order"},
+    {"force_rms_filtered", false, "force_rms_filtered_estimate_N"},
+    {"probe_rms", false, "probe_rms_estimate_m"},
+    {"probe_rms", true, "probe_rms_estimate_order"},
+};
+
+double estimate_cell(const StudyRow& r, const EstimateColumn& c) {
+  for (const io::ErrorBarEntry& e : r.estimates)
+    if (e.measure == c.measure) return c.order ? e.order : e.estimate;
+  return not_measured;
+}
+
 }  // namespace
 
 std::string csv_field(const std::string& s) {
@@ -81,6 +101,7 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
       "wall_per_simulated_second,newton_iterations,factorisations,residual_evaluations,"
       "linear_solves,case_wall_seconds,n_ranks";
   for (const Measure& m : measures) out += std::string(",") + m.column;
+  for (const EstimateColumn& c : estimate_columns) out += std::string(",") + c.column;
   out += ",message\n";
   for (const StudyRow& r : rows) {
     const io::RunWork& w = r.work;
@@ -103,6 +124,7 @@ std::string csv_text(const std::vector<StudyRow>& rows) {
     cell(number(r.case_seconds));
     count(w.n_ranks);
     for (const Measure& m : measures) cell(number(r.errors.*m.field));
+    for (const EstimateColumn& c : estimate_columns) cell(number(estimate_cell(r, c)));
     cell(csv_field(r.message));
     out += "\n";
   }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "catena/study/richardson.hpp"
 
@@ -55,6 +57,43 @@ TEST(Richardson, OnlyMeasuredQuantitiesAreReported) {
   EXPECT_EQ(entries[0].unit, "m");
   EXPECT_NEAR(entries[0].order, 2.0, 1e-12);
   EXPECT_NEAR(entries[0].estimate, 1e-4, 1e-16);
+}
+
+StudyRow dt_row(const std::string& method, const std::string& setting, bool completed = true) {
+  StudyRow r;
+  r.method = method;
+  r.setting = setting;
+  r.completed = completed;
+  return r;
+}
+
+TEST(DtSiblings, SameMethodAtTwiceAndFourTimesTheStep) {
+  const std::vector<StudyRow> rows = {
+      dt_row("reference", "integrator.dt=0.000125"), dt_row("hht", "integrator.dt=0.001"),
+      dt_row("hht", "integrator.dt=5e-04"),          dt_row("hht", "integrator.dt=0.00025"),
+      dt_row("radau", "integrator.dt=0.002"),        dt_row("radau", "integrator.dt=0.001"),
+      dt_row("radau", "integrator.dt=0.0005"),       dt_row("linear", "integrator.dt=0.001", false),
+      dt_row("linear", "integrator.dt=5e-04"),       dt_row("linear", "integrator.dt=0.00025"),
+      dt_row("hht", "catenary.element_length=0.25")};
+  const auto s = dt_siblings(rows);
+  ASSERT_EQ(s.size(), rows.size());
+  ASSERT_TRUE(s[3].has_value());  // hht at 0.25 ms: 0.5 and 1 ms
+  EXPECT_EQ(s[3]->at_2dt, 2u);
+  EXPECT_EQ(s[3]->at_4dt, 1u);
+  EXPECT_FALSE(s[2].has_value());  // no hht at 2 ms
+  EXPECT_FALSE(s[0].has_value());  // the reference is its own method
+  ASSERT_TRUE(s[6].has_value());
+  EXPECT_EQ(s[6]->at_4dt, 4u);
+  EXPECT_FALSE(s[9].has_value());   // its run at 4 dt failed
+  EXPECT_FALSE(s[10].has_value());  // not varied in the step
+}
+
+TEST(DtSiblings, EstimatesGoToTheirColumns) {
+  StudyRow r = dt_row("hht", "integrator.dt=0.00025");
+  r.estimates.push_back({"std", "%", -0.0079, 2.7});
+  const std::string csv = csv_text({r});
+  EXPECT_NE(csv.find(",std_error_estimate_percent,std_estimate_order,"), std::string::npos);
+  EXPECT_NE(csv.find(",-0.0079,2.7,"), std::string::npos) << csv;
 }
 
 }  // namespace

@@ -13,6 +13,8 @@
 // S(2h) − S(h) itself, and the order is reported as NaN.
 //
 // Not collective: plain numbers.
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "catena/io/error_bar_record.hpp"
@@ -29,5 +31,13 @@ void richardson(double at_2dt, double at_4dt, bool signed_difference, io::ErrorB
 // contact force's RMS difference (N), the probe track's (m).
 std::vector<io::ErrorBarEntry> richardson_error_bar(const CaseErrors& at_2dt,
                                                     const CaseErrors& at_4dt);
+
+// The cases of a study a row's error bar comes from: completed rows of the same method
+// whose only varied resolution key is integrator.dt, at 2 and 4 times the row's.
+struct DtSiblings {
+  std::size_t at_2dt = 0, at_4dt = 0;
+};
+// Not collective. Per row, its siblings if the study has both.
+std::vector<std::optional<DtSiblings>> dt_siblings(const std::vector<StudyRow>& rows);
 
 }  // namespace catena::study

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "catena/io/error_bar_record.hpp"
 #include "catena/io/run_summary_reader.hpp"
 
 namespace catena::study {
@@ -46,6 +47,10 @@ struct StudyRow {
   double case_seconds = 0.0;  // s, the whole case (scene, statics, dynamics, output)
   io::RunWork work;           // from its output (completed cases)
   CaseErrors errors;
+  // The error bar `catena run --error-bar` would give this case: Richardson's estimate from
+  // the study's cases of the same method at 2 and 4 times its step, where it has both
+  // (study/richardson.hpp); empty otherwise.
+  std::vector<io::ErrorBarEntry> estimates;
 };
 
 // Not collective. The wall time of the time stepping per simulated second (0 if none ran).
