@@ -15,7 +15,9 @@
 // the observer hears of each such cut and the report counts them, since a dt that keeps
 // failing costs a failed solve per step and says the step is too long.
 // Below dt_min the run stops with a NumericalError naming the time, step, residual and
-// the worst DOF (node and component).
+// the worst DOF (node and component). Every sample passes the state guard before the
+// observer sees it (state_guard.hpp): a state that is not finite or has grown beyond any
+// motion of the scene stops the run with a NumericalError instead of being written.
 #include <petscvec.h>
 
 #include <optional>
