@@ -324,26 +324,13 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.overrides.push_back(a.substr(6));
     } else if (a == "--restart") {
       cl.restart = true;
-    } else if (a == "--realtime") {
-      if (cl.command != "run")
-        throw InputError({"", 0, "--realtime"},
-                         "'--realtime' is an option of run (catena run SCENE.yaml --realtime), "
-                         "not of " +
-                             cl.command);
-      cl.realtime = true;
-    } else if (a == "--error-bar") {
-      if (cl.command != "run")
-        throw InputError({"", 0, "--error-bar"},
-                         "'--error-bar' is an option of run (catena run SCENE.yaml --error-bar), "
-                         "not of " +
-                             cl.command);
-      cl.error_bar = true;
-    } else if (a == "--ids") {
-      if (cl.command != "check")
-        throw InputError(
-            {"", 0, "--ids"},
-            "'--ids' is an option of check (catena check SCENE.yaml --ids), not of " + cl.command);
-      cl.ids = true;
+    } else if (a == "--realtime" || a == "--error-bar" || a == "--ids") {
+      // Flags of one command each.
+      const std::string owner = a == "--ids" ? "check" : "run";
+      if (cl.command != owner)
+        throw InputError({"", 0, a}, "'" + a + "' is an option of " + owner + " (catena " + owner +
+                                         " SCENE.yaml " + a + "), not of " + cl.command);
+      (a == "--realtime" ? cl.realtime : a == "--error-bar" ? cl.error_bar : cl.ids) = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
     } else if (a == "--progress") {
