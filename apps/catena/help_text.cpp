@@ -71,7 +71,7 @@ const CommandHelp* commands() {
   --error-bar           dynamics, fixed steps: then run the scene at 2 dt and 4 dt
                         (OUT.error_bar/) and estimate this run's time-discretisation
                         error of its statistics or probe track (Richardson, observed
-                        order; stored in OUT.h5 /error_bar; about 0.75 of the run again)
+                        order; stored in OUT.h5 /error_bar; up to the run's cost again)
 )" + kMemoryOption,
        true},
       {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB] [--ids]\n",
