@@ -137,7 +137,12 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     st.cutoff_hz = parse_positive(value("--cutoff"), "--cutoff", "Hz", "a frequency in Hz, > 0");
   } else if (a == "-o" || a == "--output") {
     st.directory = value("-o");
-  } else if (a == "--restart" || a == "--realtime" || a == "--ids" || a == "--error-bar") {
+  } else if (a == "--error-bar") {
+    throw InputError({"", 0, a},
+                     "'--error-bar' is not an option of study: study.csv sets each case's error "
+                     "bar beside its true error wherever the study runs its method at 2 and 4 "
+                     "times its step (the *_estimate_* columns, docs/study.md)");
+  } else if (a == "--restart" || a == "--realtime" || a == "--ids") {
     throw InputError({"", 0, a}, "'" + a +
                                      "' is not an option of study (a study resumes by itself: "
                                      "run the same command again); accepted: --vary, "

@@ -33,6 +33,7 @@
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
+#include "catena/solvers/time/state_guard.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
 #include "contact_summary.hpp"
@@ -70,12 +71,17 @@ class OutputObserver : public solvers::TransientObserver {
         progress_(progress),
         realtime_(realtime),
         registration_(view_.position_rows(system.model().registration_nodes, 2)),
-        travel_(system.model(), system.dof_map().owned_nodes()) {}
+        travel_(system.model(), system.dof_map().owned_nodes()),
+        guard_(system, system.model().dynamic_options.duration,
+               system.model().dynamic_options.integrator.dt) {}
 
   // Collective. Flushes the output, then writes the checkpoint of the integrator's
   // current (accepted) state, recording how many output rows belong to it.
   void checkpoint() {
     const LogStage stage("Output");
+    // A checkpoint holds a state a run can continue from: never one the guard refuses (the
+    // driver checks only the sampled states, and steps are taken between samples).
+    guard_.check(integrator_.name(), integrator_.time(), integrator_.q(), integrator_.v());
     writer_.flush();
     io::CheckpointFacts facts;
     facts.time = integrator_.time();
@@ -138,6 +144,22 @@ class OutputObserver : public solvers::TransientObserver {
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
+    // Between samples the guard does not see the state: a contact force that is not finite
+    // stops the run here, before it is written.
+    bool finite = true;
+    for (const double f : record.contact_force) finite = finite && std::isfinite(f);
+    if (!system_.model().contacts.empty() && any_rank(system_.comm(), !finite)) {
+      std::size_t c = 0;
+      while (c < record.contact_force.size() && std::isfinite(record.contact_force[c])) ++c;
+      const auto& contacts = system_.model().contacts;
+      std::ostringstream why;
+      why << integrator_.name() << ": the contact force of pantograph '"
+          << (c < contacts.size() ? contacts[c].name : std::string("?"))
+          << "' is not finite at t = " << r.time << " s: the step (dt = " << r.dt
+          << " s) is unstable for this scene; a smaller integrator.dt keeps it bounded "
+             "(docs/accuracy.md, \"Where each method stops working\")";
+      throw NumericalError(why.str());
+    }
     resolution_.resize(record.contact_force.size());
     for (std::size_t c = 0; c < record.contact_force.size(); ++c)
       resolution_[c].add(record.contact_force[c]);
@@ -220,6 +242,7 @@ class OutputObserver : public solvers::TransientObserver {
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
   std::vector<post::ContactResolution> resolution_;
+  solvers::StateGuard guard_;                   // on the state a checkpoint saves
   std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
   TestHooks hooks_ = TestHooks::from_environment();
 };

@@ -25,7 +25,6 @@
 #include "catena/study/case_queue.hpp"
 #include "catena/study/case_record.hpp"
 #include "catena/study/richardson.hpp"
-#include "catena/study/richardson.hpp"
 #include "catena/study/study_plan.hpp"
 #include "catena/study/study_table.hpp"
 #include "commands.hpp"
@@ -193,8 +192,9 @@ void report(const CommandLine& cl, std::vector<StudyCase>& cases, const fs::path
     const auto file = [&](std::size_t j) { return (cases_dir / (rows[j].name + ".h5")).string(); };
     try {
       const study::ReferenceRun own(file(i), reference.probes(), cl.study.cutoff_hz);
-      rows[i].estimates = study::richardson_error_bar(own.errors_of(file(siblings[i]->at_2dt)),
-                                                      own.errors_of(file(siblings[i]->at_4dt)));
+      rows[i].estimates = study::worst_estimates(
+          study::richardson_error_bar(own.errors_by_part(file(siblings[i]->at_2dt)),
+                                      own.errors_by_part(file(siblings[i]->at_4dt))));
     } catch (const InputError&) {
       // Not comparable with its siblings (a record that ends early): no error bar.
     }

@@ -35,13 +35,25 @@ void print_error_bar(const io::ErrorBarRecord& r, const fs::path& directory) {
       "time-discretisation error of this run (dt %g s)\n",
       r.coarse_dt[0], r.coarse_dt[1], directory.c_str(), r.dt);
   for (const io::ErrorBarEntry& e : r.entries) {
-    std::printf("  %-19s %+.2g %s", e.measure.c_str(), e.estimate, e.unit.c_str());
+    std::printf("  %-10s %-19s %+.2g %s", e.part.c_str(), e.measure.c_str(), e.estimate,
+                e.unit.c_str());
     if (std::isnan(e.order))
-      std::printf("  (a bound: the three runs do not converge at one order)\n");
+      std::printf("  (rough: the three runs do not converge at one order)\n");
     else
       std::printf("  (observed order %.2f)\n", e.order);
   }
   std::fflush(stdout);
+}
+
+// Collective. The first failure any rank met (its text from the lowest such rank), on
+// every rank: one rank's failure stops every rank's error bar at the same point.
+std::string agreed_failure(MPI_Comm comm, const std::string& mine) {
+  const int size = mpi_size(comm);
+  int from = mine.empty() ? size : mpi_rank(comm);
+  MPI_Allreduce(MPI_IN_PLACE, &from, 1, MPI_INT, MPI_MIN, comm);
+  std::string failure = from < size ? mine : std::string();
+  if (from < size) broadcast_string(comm, failure, from);
+  return failure;
 }
 
 }  // namespace
@@ -71,7 +83,7 @@ void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m) 
     fs::create_directories(directory, ec);
     if (ec) failure = "cannot create " + directory.string() + ": " + ec.message();
   }
-  broadcast_string(comm, failure, 0);
+  failure = agreed_failure(comm, failure);
   for (const int factor : kFactors) {
     if (!failure.empty()) break;
     const double dt = factor * record.dt;
@@ -96,23 +108,26 @@ void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m) 
       command_run(comm, coarse);
     } catch (const Error& e) {
       failure = "the run at dt " + exact(dt) + " s failed (" + e.what() + ")";
+    } catch (const RunInterrupted&) {
+      // The run itself is complete: a stop during its error bar costs the error bar only.
+      failure = "the run at dt " + exact(dt) + " s was interrupted";
     }
+    failure = agreed_failure(comm, failure);
   }
   if (rank == 0 && failure.empty()) {
     try {
-      const study::ReferenceRun run(output.string(), {}, 20.0);
-      record.entries = study::richardson_error_bar(run.errors_of(record.coarse_files[0]),
-                                                   run.errors_of(record.coarse_files[1]));
+      const study::ReferenceRun run(output.string(), {}, StatsArguments{}.cutoff_hz);
+      record.entries = study::richardson_error_bar(run.errors_by_part(record.coarse_files[0]),
+                                                   run.errors_by_part(record.coarse_files[1]));
       io::write_error_bar(output.string(), record);
       print_error_bar(record, directory);
     } catch (const Error& e) {
       failure = e.what();
     }
   }
-  broadcast_string(comm, failure, 0);
   if (!failure.empty() && rank == 0) {
-    std::fprintf(stderr, "catena: warning: no error bar for %s: %s\n", output.c_str(),
-                 failure.c_str());
+    std::fprintf(stderr, "catena: warning: no error bar for %s: %s; the run itself is complete\n",
+                 output.c_str(), failure.c_str());
     std::fflush(stderr);
   }
 }

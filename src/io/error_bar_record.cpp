@@ -29,9 +29,20 @@ void write_error_bar(const std::string& path, const ErrorBarRecord& record) {
                              record.coarse_dt[i]);
     write_string_list_attribute(at, "coarse_files", record.coarse_files);
     for (const ErrorBarEntry& e : record.entries) {
-      write_double_attribute(at, e.measure.c_str(), e.estimate);
-      write_double_attribute(at, (e.measure + "_order").c_str(), e.order);
-      write_string_attribute(at, (e.measure + "_unit").c_str(), e.unit);
+      std::string name = e.part;
+      for (char& c : name)
+        if (c == '/') c = '_';
+      const std::string object = "/error_bar/" + name;
+      if (H5Lexists(group.get(), name.c_str(), H5P_DEFAULT) <= 0)
+        GroupHandle(checked_hdf5_id(
+            H5Gcreate2(group.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+            "H5Gcreate", path, object));
+      const GroupHandle part(checked_hdf5_id(H5Gopen2(group.get(), name.c_str(), H5P_DEFAULT),
+                                             "H5Gopen", path, object));
+      const AttributeTarget on{part.get(), path};
+      write_double_attribute(on, e.measure.c_str(), e.estimate);
+      write_double_attribute(on, (e.measure + "_order").c_str(), e.order);
+      write_string_attribute(on, (e.measure + "_unit").c_str(), e.unit);
     }
   } catch (const OutputError&) {
     throw;

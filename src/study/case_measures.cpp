@@ -55,8 +55,8 @@ ReferenceRun::ReferenceRun(const std::string& path, std::vector<std::int64_t> pr
   for (std::int64_t id : probes_) tracks_.push_back(io::read_node_track(path, id));
 }
 
-CaseErrors ReferenceRun::errors_of(const std::string& path) const {
-  CaseErrors e;
+std::vector<PartErrors> ReferenceRun::errors_by_part(const std::string& path) const {
+  std::vector<PartErrors> parts;
   if (has_pantographs_) {
     const io::ContactRun run = io::read_contact_run(path);
     const std::vector<double> reference_times = sample_times(contact_.n_samples, contact_.dt);
@@ -68,6 +68,7 @@ CaseErrors ReferenceRun::errors_of(const std::string& path) const {
       if (match == run.pantographs.end())
         throw InputError({path, 0, "/pantographs"},
                          "no pantograph '" + ref.name + "' as in the reference " + path_);
+      CaseErrors& e = parts.emplace_back(PartErrors{ref.name, {}}).errors;
       try {
         post::PantographRecord on_reference_times = ref;
         on_reference_times.force = post::resample_linear(run_times, match->force, reference_times);
@@ -113,10 +114,38 @@ CaseErrors ReferenceRun::errors_of(const std::string& path) const {
         on_reference_times[3 * k + static_cast<std::size_t>(c)] = resampled[k];
     }
     const post::TrackDifference d = post::track_difference(on_reference_times, ref.positions);
-    keep_worst(e.probe_rms, d.rms);
-    keep_worst(e.probe_max, d.max);
+    CaseErrors& e =
+        parts.emplace_back(PartErrors{"node " + std::to_string(ref.node_id), {}}).errors;
+    e.probe_rms = d.rms;
+    e.probe_max = d.max;
   }
-  return e;
+  return parts;
+}
+
+CaseErrors worst_of(const std::vector<PartErrors>& parts) {
+  static constexpr double CaseErrors::*fields[] = {&CaseErrors::force_rms,
+                                                   &CaseErrors::force_max,
+                                                   &CaseErrors::force_rms_filtered,
+                                                   &CaseErrors::force_max_filtered,
+                                                   &CaseErrors::mean,
+                                                   &CaseErrors::std,
+                                                   &CaseErrors::stat_max,
+                                                   &CaseErrors::stat_min,
+                                                   &CaseErrors::max,
+                                                   &CaseErrors::min,
+                                                   &CaseErrors::uplift,
+                                                   &CaseErrors::loss,
+                                                   &CaseErrors::probe_rms,
+                                                   &CaseErrors::probe_max};
+  CaseErrors worst;
+  for (const PartErrors& p : parts)
+    for (const auto field : fields)
+      if (std::isfinite(p.errors.*field)) keep_worst(worst.*field, p.errors.*field);
+  return worst;
+}
+
+CaseErrors ReferenceRun::errors_of(const std::string& path) const {
+  return worst_of(errors_by_part(path));
 }
 
 }  // namespace catena::study

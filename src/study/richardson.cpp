@@ -1,5 +1,6 @@
 #include "catena/study/richardson.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -15,21 +16,22 @@ constexpr double kLowest = 1.4142135623730951, kHighest = 64.0;
 }  // namespace
 
 void richardson(double at_2dt, double at_4dt, bool signed_difference, io::ErrorBarEntry& out) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  // 2ᵖ from the two differences (NaN when they do not give one).
-  double two_p = nan;
-  if (at_2dt != 0.0) two_p = signed_difference ? (at_4dt - at_2dt) / at_2dt : at_4dt / at_2dt - 1.0;
-  if (std::isfinite(two_p) && two_p >= kLowest && two_p <= kHighest) {
-    out.order = std::log2(two_p);
-    out.estimate = at_2dt / (two_p - 1.0);
-  } else {
-    out.order = nan;
-    out.estimate = signed_difference ? at_2dt : std::abs(at_2dt);
+  out.order = std::numeric_limits<double>::quiet_NaN();
+  if (at_2dt == 0.0) {  // the runs at h and 2h agree: nothing to scale
+    out.estimate = 0.0;
+    return;
   }
+  const double two_p = signed_difference ? (at_4dt - at_2dt) / at_2dt : at_4dt / at_2dt - 1.0;
+  if (!(two_p > 0.0)) {  // differences of opposite sign (or a NaN): no order
+    out.estimate = at_2dt;
+    return;
+  }
+  if (two_p >= kLowest && two_p <= kHighest) out.order = std::log2(two_p);
+  out.estimate = at_2dt / (std::clamp(two_p, kLowest, kHighest) - 1.0);
 }
 
-std::vector<io::ErrorBarEntry> richardson_error_bar(const CaseErrors& at_2dt,
-                                                    const CaseErrors& at_4dt) {
+std::vector<io::ErrorBarEntry> richardson_error_bar(const std::vector<PartErrors>& at_2dt,
+                                                    const std::vector<PartErrors>& at_4dt) {
   struct Measure {
     const char* name;
     const char* unit;
@@ -48,16 +50,35 @@ std::vector<io::ErrorBarEntry> richardson_error_bar(const CaseErrors& at_2dt,
       {"probe_rms", "m", &CaseErrors::probe_rms, false},
   };
   std::vector<io::ErrorBarEntry> entries;
-  for (const Measure& m : measures) {
-    const double a = at_2dt.*m.field, b = at_4dt.*m.field;
-    if (std::isnan(a) || std::isnan(b)) continue;
-    io::ErrorBarEntry e;
-    e.measure = m.name;
-    e.unit = m.unit;
-    richardson(a, b, m.signed_difference, e);
-    entries.push_back(e);
+  for (std::size_t i = 0; i < at_2dt.size() && i < at_4dt.size(); ++i) {
+    if (at_2dt[i].name != at_4dt[i].name) continue;  // not the same part
+    for (const Measure& m : measures) {
+      const double a = at_2dt[i].errors.*m.field, b = at_4dt[i].errors.*m.field;
+      if (std::isnan(a) || std::isnan(b)) continue;
+      io::ErrorBarEntry e;
+      e.part = at_2dt[i].name;
+      e.measure = m.name;
+      e.unit = m.unit;
+      richardson(a, b, m.signed_difference, e);
+      entries.push_back(e);
+    }
   }
   return entries;
+}
+
+std::vector<io::ErrorBarEntry> worst_estimates(const std::vector<io::ErrorBarEntry>& entries) {
+  std::vector<io::ErrorBarEntry> worst;
+  for (const io::ErrorBarEntry& e : entries) {
+    const auto same = std::find_if(worst.begin(), worst.end(), [&](const io::ErrorBarEntry& w) {
+      return w.measure == e.measure;
+    });
+    if (same == worst.end())
+      worst.push_back(e);
+    else if (std::abs(e.estimate) > std::abs(same->estimate))
+      *same = e;
+  }
+  for (io::ErrorBarEntry& w : worst) w.part.clear();
+  return worst;
 }
 
 std::vector<std::optional<DtSiblings>> dt_siblings(const std::vector<StudyRow>& rows) {

@@ -63,6 +63,7 @@ constexpr EstimateColumn estimate_columns[] = {
     {"std", false, "std_error_estimate_percent"},
     {"std", true, "std_estimate_order"},
     {"force_rms_filtered", false, "force_rms_filtered_estimate_N"},
+    {"force_rms_filtered", true, "force_rms_filtered_estimate_order"},
     {"probe_rms", false, "probe_rms_estimate_m"},
     {"probe_rms", true, "probe_rms_estimate_order"},
 };

@@ -27,7 +27,10 @@ def main():
     with h5py.File(run_path, "r") as f:
         if "error_bar" not in f:
             sys.exit(f"{run_path} has no /error_bar")
-        bar = dict(f["error_bar"].attrs)
+        parts = list(f["error_bar"])
+        if len(parts) != 1 or not parts[0].startswith("node "):
+            sys.exit(f"/error_bar holds {parts}, expected one probe node")
+        bar = dict(f["error_bar"][parts[0]].attrs)
     estimate, order = float(bar["probe_rms"]), float(bar["probe_rms_order"])
     print(f"node index {node}: true RMS error {true:.4g} m, estimate {estimate:.4g} m "
           f"(ratio {estimate / true:.3f}), observed order {order:.3f}")

@@ -30,25 +30,30 @@ CAUSES = r"step size fell below its minimum|state is not finite|grew without bou
 
 
 def finite_file(path):
-    """(True, "") if every sample dataset of `path` is finite, else (False, which)."""
+    """(True, "") if every sample and step dataset of `path` is finite, else (False, which)."""
     with h5py.File(path, "r") as f:
-        for name in ("positions", "velocities", "slopes", "contact_force", "axial_force"):
-            key = "samples/" + name
-            if key in f and not np.all(np.isfinite(f[key][:])):
-                return False, key
+        for group in ("samples", "steps"):
+            for name in f.get(group, {}):
+                data = f[group][name]
+                if data.dtype.kind == "f" and not np.all(np.isfinite(data[:])):
+                    return False, f"{group}/{name}"
     return True, ""
 
 
 def structure_displacement(path):
-    """Largest distance of a structure node from its mesh position (pantograph stage nodes,
-    which travel along the line in the output, left out)."""
+    """Largest distance of a structure node from its mesh position, the pantographs' stage
+    nodes left out (the output draws them under their contact point, travelling along x):
+    the nodes of the elements in the sets named "pantograph NAME"."""
     with h5py.File(path, "r") as f:
         positions = f["samples/positions"][:]
         mesh = f["mesh/node_positions"][:]
         keep = np.ones(mesh.shape[0], bool)
-        if "pantographs" in f and len(f["pantographs"]):
-            # the stage nodes are drawn under their contact point: they travel along x
-            keep = np.abs(positions[:, :, 0] - mesh[None, :, 0]).max(axis=0) < 1.0
+        names = [n.decode() if isinstance(n, bytes) else str(n)
+                 for n in f["mesh/element_set"].attrs.get("set_names", [])]
+        stage_sets = [i for i, n in enumerate(names) if n.startswith("pantograph ")]
+        if stage_sets:
+            in_stage = np.isin(f["mesh/element_set"][:], stage_sets)
+            keep[np.unique(f["mesh/element_nodes"][:][in_stage])] = False
         d = np.linalg.norm(positions[:, keep, :] - mesh[None, keep, :], axis=2)
         return float(d.max())
 

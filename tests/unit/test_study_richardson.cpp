@@ -31,32 +31,59 @@ TEST(Richardson, NormsOfDifferencesGiveTheRunsOwnError) {
   EXPECT_NEAR(e.estimate, error, 1e-15);
 }
 
-TEST(Richardson, DifferencesOfOppositeSignGiveTheBound) {
+TEST(Richardson, DifferencesOfOppositeSignGiveTheNearerDifference) {
   io::ErrorBarEntry e;
   richardson(-0.030 - 0.004, 0.058 - 0.004, true, e);  // oscillating convergence
   EXPECT_TRUE(std::isnan(e.order));
-  EXPECT_DOUBLE_EQ(e.estimate, -0.034);  // S(2h) − S(h): the bound of order 1
+  EXPECT_DOUBLE_EQ(e.estimate, -0.034);  // S(2h) − S(h)
 }
 
-TEST(Richardson, OrdersOutsideTheSaneRangeGiveTheBound) {
+TEST(Richardson, OrdersOutsideTheRangeAreClamped) {
   io::ErrorBarEntry e;
-  richardson(1.0, 1.2, true, e);  // 2ᵖ = 0.2
+  richardson(1.0, 2.2, true, e);  // 2ᵖ = 1.2: p = 0.26, clamped to 1/2
   EXPECT_TRUE(std::isnan(e.order));
-  richardson(1e-6, 1.0, true, e);  // 2ᵖ ≈ 10⁶
+  EXPECT_NEAR(e.estimate, 1.0 / (std::sqrt(2.0) - 1.0), 1e-12);
+  richardson(1e-6, 1.0, true, e);  // 2ᵖ ≈ 10⁶: clamped to 6
   EXPECT_TRUE(std::isnan(e.order));
-  EXPECT_DOUBLE_EQ(e.estimate, 1e-6);
+  EXPECT_NEAR(e.estimate, 1e-6 / 63.0, 1e-18);
+  richardson(0.0, 1.0, true, e);  // the runs at h and 2h agree
+  EXPECT_EQ(e.estimate, 0.0);
 }
 
 TEST(Richardson, OnlyMeasuredQuantitiesAreReported) {
   CaseErrors a, b;
   a.probe_rms = 3e-4;
   b.probe_rms = 15e-4;  // 2ᵖ = 4: p = 2
-  const auto entries = richardson_error_bar(a, b);
+  const auto entries = richardson_error_bar({{"node 31", a}}, {{"node 31", b}});
   ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].part, "node 31");
   EXPECT_EQ(entries[0].measure, "probe_rms");
   EXPECT_EQ(entries[0].unit, "m");
   EXPECT_NEAR(entries[0].order, 2.0, 1e-12);
   EXPECT_NEAR(entries[0].estimate, 1e-4, 1e-16);
+}
+
+TEST(Richardson, EachPantographOnItsOwnThenTheWorstForTheStudy) {
+  // Two pantographs whose σ converge at different orders: each gets its own estimate.
+  CaseErrors a2, a4, b2, b4;
+  a2.std = 0.3;  // p = 1: 2ᵖ = (0.9 − 0.3)/0.3
+  a4.std = 0.9;
+  b2.std = -0.03;  // p = 2
+  b4.std = -0.15;
+  const auto entries = richardson_error_bar({{"leading", a2}, {"trailing", b2}},
+                                            {{"leading", a4}, {"trailing", b4}});
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].part, "leading");
+  EXPECT_NEAR(entries[0].order, 1.0, 1e-12);
+  EXPECT_NEAR(entries[0].estimate, 0.3, 1e-12);
+  EXPECT_EQ(entries[1].part, "trailing");
+  EXPECT_NEAR(entries[1].order, 2.0, 1e-12);
+  EXPECT_NEAR(entries[1].estimate, -0.01, 1e-12);
+  const auto worst = worst_estimates(entries);
+  ASSERT_EQ(worst.size(), 1u);
+  EXPECT_EQ(worst[0].part, "");
+  EXPECT_NEAR(worst[0].estimate, 0.3, 1e-12);
+  EXPECT_NEAR(worst[0].order, 1.0, 1e-12);
 }
 
 StudyRow dt_row(const std::string& method, const std::string& setting, bool completed = true) {
@@ -90,7 +117,7 @@ TEST(DtSiblings, SameMethodAtTwiceAndFourTimesTheStep) {
 
 TEST(DtSiblings, EstimatesGoToTheirColumns) {
   StudyRow r = dt_row("hht", "integrator.dt=0.00025");
-  r.estimates.push_back({"std", "%", -0.0079, 2.7});
+  r.estimates.push_back({"", "std", "%", -0.0079, 2.7});
   const std::string csv = csv_text({r});
   EXPECT_NE(csv.find(",std_error_estimate_percent,std_estimate_order,"), std::string::npos);
   EXPECT_NE(csv.find(",-0.0079,2.7,"), std::string::npos) << csv;

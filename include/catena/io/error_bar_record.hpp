@@ -9,13 +9,14 @@
 namespace catena::io {
 
 struct ErrorBarEntry {
+  std::string part;     // the pantograph's name, or the probe ("node 31")
   std::string measure;  // "std", "mean", ..., "force_rms_filtered", "probe_rms"
   std::string unit;     // "%" (of the run's own value), "N", "m"
   // The estimated error of the run: run − converged value for a statistic, the RMS of the
   // difference for a series.
   double estimate = 0.0;
-  // The observed order it was scaled with; NaN when the three runs were not in the
-  // asymptotic range and `estimate` is the bound run at 2 dt − run (order 1) instead.
+  // The observed order it was scaled with; NaN when the three runs do not converge at one
+  // order in [1/2, 6] and `estimate` is a rough size instead (study/richardson.hpp).
   double order = 0.0;
 };
 
@@ -28,9 +29,10 @@ struct ErrorBarRecord {
 
 // Not collective (one process, the file closed elsewhere). Writes `record` into the group
 // /error_bar of the complete output `path` (replacing an earlier one): attributes
-// `method` = "richardson", `dt`, `coarse_dt` (list as coarse_dt_1, coarse_dt_2, ...),
-// `coarse_files`, and per entry `<measure>` (the estimate), `<measure>_order` and
-// `<measure>_unit`. Throws catena::OutputError naming the file if it cannot.
+// `method` = "richardson", `dt`, `coarse_dt_1`, `coarse_dt_2`, `coarse_files`, and per part
+// a group /error_bar/<part> ('/' in a name written as '_') with, per entry, `<measure>`
+// (the estimate), `<measure>_order` and `<measure>_unit`. Throws catena::OutputError naming
+// the file if it cannot.
 void write_error_bar(const std::string& path, const ErrorBarRecord& record);
 
 }  // namespace catena::io

@@ -14,6 +14,15 @@
 
 namespace catena::study {
 
+// The errors of one part of a run: a pantograph (its name) or a probe ("node 31").
+struct PartErrors {
+  std::string name;
+  CaseErrors errors;  // the pantograph's measures, or the probe's
+};
+
+// Not collective. Each measure's worst (largest magnitude, its sign kept) over the parts.
+CaseErrors worst_of(const std::vector<PartErrors>& parts);
+
 class ReferenceRun {
  public:
   // Not collective. Reads the reference output `path`: its contact forces if it has
@@ -26,6 +35,9 @@ class ReferenceRun {
   // naming that file when it cannot be compared (another set of pantographs, a record that
   // ends early, sampling too coarse for the cutoff).
   CaseErrors errors_of(const std::string& path) const;
+  // Not collective. The same per part: each pantograph (in the reference's order), then
+  // each probe.
+  std::vector<PartErrors> errors_by_part(const std::string& path) const;
 
   const std::vector<std::int64_t>& probes() const { return probes_; }
   bool has_pantographs() const { return has_pantographs_; }
