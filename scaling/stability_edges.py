@@ -8,7 +8,10 @@ it, at 600 km/h (past the wire's wave speed, 438 km/h), and the plucked taut str
 OUT_DIR/stability_edges.csv (one row per run) and OUT_DIR/stability_edges.md (the table:
 per case and method, what each step gave). A benchmark: about 15 minutes on one core.
 
-  /usr/bin/python3 scaling/stability_edges.py build/apps/catena OUT_DIR
+  /usr/bin/python3 scaling/stability_edges.py build/apps/catena OUT_DIR [CASE ...]
+
+With CASE names (wire, wire_contact_x100, wire_600kmh, string) only those are run: two
+invocations with different OUT_DIRs share a 2-core machine.
 """
 import csv
 import os
@@ -63,9 +66,14 @@ def outcome(line):
 
 def main():
     catena, out_dir = sys.argv[1], sys.argv[2]
+    chosen = sys.argv[3:] or list(CASES)
+    unknown = [c for c in chosen if c not in CASES]
+    if unknown:
+        sys.exit(f"stability_edges: unknown case {unknown[0]}; accepted: {', '.join(CASES)}")
     os.makedirs(out_dir, exist_ok=True)
     rows = []
-    for case, (scene, case_sets) in CASES.items():
+    for case in chosen:
+        scene, case_sets = CASES[case]
         for method, method_sets in METHODS.items():
             if case == "string" and method == "modal":
                 continue  # the string has no pantograph: the modal model has no loads to carry
@@ -101,7 +109,7 @@ def main():
         w.writeheader()
         w.writerows(rows)
     with open(os.path.join(out_dir, "stability_edges.md"), "w") as f:
-        for case in CASES:
+        for case in chosen:
             f.write(f"\n{case}\n\n| method | " + " | ".join(f"{dt:g} s" for dt in STEPS)
                     + " |\n|---|" + "---|" * len(STEPS) + "\n")
             for method in METHODS:
