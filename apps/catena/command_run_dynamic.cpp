@@ -8,6 +8,7 @@
 // as "failed: ..." where it can and names the checkpoint that is kept.
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -144,26 +145,11 @@ class OutputObserver : public solvers::TransientObserver {
       for (const auto& c :
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
-    // Between samples the guard does not see the state: a contact force that is not finite
-    // stops the run here, before it is written.
-    bool finite = true;
-    for (const double f : record.contact_force) finite = finite && std::isfinite(f);
-    if (!system_.model().contacts.empty() && any_rank(system_.comm(), !finite)) {
-      std::size_t c = 0;
-      while (c < record.contact_force.size() && std::isfinite(record.contact_force[c])) ++c;
-      const auto& contacts = system_.model().contacts;
-      std::ostringstream why;
-      why << integrator_.name() << ": the contact force of pantograph '"
-          << (c < contacts.size() ? contacts[c].name : std::string("?"))
-          << "' is not finite at t = " << r.time << " s: the step (dt = " << r.dt
-          << " s) is unstable for this scene; a smaller integrator.dt keeps it bounded "
-             "(docs/accuracy.md, \"Where each method stops working\")";
-      throw NumericalError(why.str());
-    }
+    registration_heights(record.registration_height);
+    refuse_not_finite(r, record);
     resolution_.resize(record.contact_force.size());
     for (std::size_t c = 0; c < record.contact_force.size(); ++c)
       resolution_[c].add(record.contact_force[c]);
-    registration_heights(record.registration_height);
     {
       const LogStage stage("Output");
       writer_.append_step(record);
@@ -188,6 +174,33 @@ class OutputObserver : public solvers::TransientObserver {
 
   // Per contact (model order), how well this run's steps resolved its force.
   const std::vector<post::ContactResolution>& contact_resolution() const { return resolution_; }
+
+  // Collective. Between samples the guard does not see the state: a step record whose
+  // contact force or registration height is not finite stops the run before it is written.
+  void refuse_not_finite(const solvers::StepRecord& r, const io::StepRecord& record) const {
+    const auto finite = [](const std::vector<double>& values) {
+      return std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); });
+    };
+    const model::Model& m = system_.model();
+    if (m.contacts.empty() && m.registration_nodes.empty()) return;
+    const bool contact_ok = finite(record.contact_force);
+    if (!any_rank(system_.comm(), !(contact_ok && finite(record.registration_height)))) return;
+    std::ostringstream why;
+    why << integrator_.name() << ": the ";
+    if (!contact_ok) {
+      const auto bad = std::find_if(record.contact_force.begin(), record.contact_force.end(),
+                                    [](double x) { return !std::isfinite(x); });
+      const auto c = static_cast<std::size_t>(bad - record.contact_force.begin());
+      why << "contact force of pantograph '"
+          << (c < m.contacts.size() ? m.contacts[c].name : std::string("?")) << "'";
+    } else {
+      why << "height of a registration point";
+    }
+    why << " is not finite at t = " << r.time << " s: the step (dt = " << r.dt
+        << " s) is unstable for this scene; a smaller integrator.dt keeps it bounded "
+           "(docs/accuracy.md, \"Where each method stops working\")";
+    throw NumericalError(why.str());
+  }
 
   // Collective. z of every registration node at the current state (rank 0 writes them).
   void registration_heights(std::vector<double>& heights) const {
