@@ -9,10 +9,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/io/error_bar_record.hpp"
 #include "commands.hpp"
 #include "rank_zero.hpp"
 #include "run_statistics.hpp"
@@ -68,7 +70,42 @@ std::string json_acceptance(const PantographEvaluation& e, const std::string& ra
   return out + "]}";
 }
 
-void print_json(const RunEvaluation& ev) {
+// The run's error bar (catena run --error-bar) as JSON, "null" without one.
+std::string json_error_bar(const std::optional<io::ErrorBarRecord>& bar) {
+  if (!bar) return "null";
+  std::string out = "{\"dt\": " + json_number(bar->dt) + ", \"coarse_dt\": [";
+  for (std::size_t i = 0; i < bar->coarse_dt.size(); ++i)
+    out += (i ? ", " : "") + json_number(bar->coarse_dt[i]);
+  out += "], \"entries\": [";
+  for (std::size_t i = 0; i < bar->entries.size(); ++i) {
+    const io::ErrorBarEntry& e = bar->entries[i];
+    out += i ? ", " : "";
+    out += "{\"part\": " + json_string(e.part) + ", \"measure\": " + json_string(e.measure) +
+           ", \"estimate\": " + json_number(e.estimate) + ", \"order\": " + json_number(e.order) +
+           ", \"unit\": " + json_string(e.unit) + "}";
+  }
+  return out + "]}";
+}
+
+// The run's error bar under the table, if it has one.
+void print_error_bar(const std::optional<io::ErrorBarRecord>& bar) {
+  if (!bar) return;
+  std::printf("\nerror bar of the run (catena run --error-bar: dt %g s against", bar->dt);
+  for (std::size_t i = 0; i < bar->coarse_dt.size(); ++i)
+    std::printf("%s %g s", i ? " and" : "", bar->coarse_dt[i]);
+  std::printf(
+      "; over the run's own evaluation section, the whole record without one, at 20 Hz):\n");
+  for (const io::ErrorBarEntry& e : bar->entries) {
+    std::printf("  %-10s %-19s %+.2g %s", e.part.c_str(), e.measure.c_str(), e.estimate,
+                e.unit.c_str());
+    if (std::isnan(e.order))
+      std::printf("  (rough)\n");
+    else
+      std::printf("  (observed order %.2f)\n", e.order);
+  }
+}
+
+void print_json(const RunEvaluation& ev, const std::string& path) {
   std::string out = "{\"status\": " + json_string(ev.run.status) +
                     ", \"complete\": " + (ev.finished ? "true" : "false") +
                     ", \"t_end\": " + json_number(ev.run.t_end) +
@@ -104,7 +141,8 @@ void print_json(const RunEvaluation& ev) {
     out += ", \"acceptance\": " + json_acceptance(e, ev.ranges);
     out += "}";
   }
-  out += ev.pantographs.empty() ? "]}\n" : "\n]}\n";
+  out += ev.pantographs.empty() ? "]" : "\n]";
+  out += ",\n \"error_bar\": " + json_error_bar(io::read_error_bar(path)) + "}\n";
   std::fputs(out.c_str(), stdout);
 }
 
@@ -219,13 +257,14 @@ void print_table(const std::string& path, const RunEvaluation& ev, const StatsAr
   if (!ev.ranges.empty())
     for (const PantographEvaluation& e : ev.pantographs)
       print_acceptance(e, ev.run.evaluation_section.value_or(ev.section));
+  print_error_bar(io::read_error_bar(path));
 }
 
 // Rank 0's whole work: read, compute, print. Throws InputError for bad files/arguments.
 void stats_on_this_rank(const CommandLine& cl) {
   const RunEvaluation ev = evaluate_run(cl.stats);
   if (cl.stats.json)
-    print_json(ev);
+    print_json(ev, cl.stats.file);
   else
     print_table(cl.stats.file, ev, cl.stats);
   std::fflush(stdout);

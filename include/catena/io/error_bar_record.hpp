@@ -3,6 +3,7 @@
 // of a run"), stored in its output as the group /error_bar: the estimated
 // time-discretisation error of each quantity users read, with the observed order of
 // convergence it rests on.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,11 @@ struct ErrorBarRecord {
 // (the estimate), `<measure>_order` and `<measure>_unit`. Throws catena::OutputError naming
 // the file if it cannot.
 void write_error_bar(const std::string& path, const ErrorBarRecord& record);
+
+// Not collective. The error bar stored in `path`, none if it has no /error_bar. Entries per
+// part in the order of the parts' names, within a part in the order `catena run` writes
+// (mean, std, stat_max, stat_min, max, min, uplift, force_rms_filtered, probe_rms).
+// Throws catena::Error naming the file if it cannot be read.
+std::optional<ErrorBarRecord> read_error_bar(const std::string& path);
 
 }  // namespace catena::io
