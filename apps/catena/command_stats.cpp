@@ -16,6 +16,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/error_bar_record.hpp"
 #include "commands.hpp"
+#include "error_bar.hpp"
 #include "rank_zero.hpp"
 #include "run_statistics.hpp"
 
@@ -95,14 +96,7 @@ void print_error_bar(const std::optional<io::ErrorBarRecord>& bar) {
     std::printf("%s %g s", i ? " and" : "", bar->coarse_dt[i]);
   std::printf(
       "; over the run's own evaluation section, the whole record without one, at 20 Hz):\n");
-  for (const io::ErrorBarEntry& e : bar->entries) {
-    std::printf("  %-10s %-19s %+.2g %s", e.part.c_str(), e.measure.c_str(), e.estimate,
-                e.unit.c_str());
-    if (std::isnan(e.order))
-      std::printf("  (rough)\n");
-    else
-      std::printf("  (observed order %.2f)\n", e.order);
-  }
+  print_error_bar_entries(bar->entries);
 }
 
 void print_json(const RunEvaluation& ev, const std::string& path) {

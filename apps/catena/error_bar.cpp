@@ -34,14 +34,7 @@ void print_error_bar(const io::ErrorBarRecord& r, const fs::path& directory) {
       "error bar (Richardson: the same run at dt %g s and %g s, %s): estimated "
       "time-discretisation error of this run (dt %g s)\n",
       r.coarse_dt[0], r.coarse_dt[1], directory.c_str(), r.dt);
-  for (const io::ErrorBarEntry& e : r.entries) {
-    std::printf("  %-10s %-19s %+.2g %s", e.part.c_str(), e.measure.c_str(), e.estimate,
-                e.unit.c_str());
-    if (std::isnan(e.order))
-      std::printf("  (rough: the three runs do not converge at one order)\n");
-    else
-      std::printf("  (observed order %.2f)\n", e.order);
-  }
+  print_error_bar_entries(r.entries);
   std::fflush(stdout);
 }
 
@@ -57,6 +50,17 @@ std::string agreed_failure(MPI_Comm comm, const std::string& mine) {
 }
 
 }  // namespace
+
+void print_error_bar_entries(const std::vector<io::ErrorBarEntry>& entries) {
+  for (const io::ErrorBarEntry& e : entries) {
+    std::printf("  %-10s %-19s %+.2g %s", e.part.c_str(), e.measure.c_str(), e.estimate,
+                e.unit.c_str());
+    if (std::isnan(e.order))
+      std::printf("  (rough: the three runs do not converge at one order)\n");
+    else
+      std::printf("  (observed order %.2f)\n", e.order);
+  }
+}
 
 void check_error_bar_request(const CommandLine& cl, const model::Model& m) {
   if (!cl.error_bar) return;

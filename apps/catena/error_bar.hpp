@@ -8,10 +8,17 @@
 // takes more Newton iterations (EN 50318 with HHT: 0.96 of the run's iterations).
 #include <mpi.h>
 
+#include <vector>
+
+#include "catena/io/error_bar_record.hpp"
 #include "catena/model/model.hpp"
 #include "cli.hpp"
 
 namespace catena::app {
+
+// Not collective. One line per entry: part, measure, estimate and unit, the observed order
+// or "rough" (`catena run --error-bar` and `catena stats`).
+void print_error_bar_entries(const std::vector<io::ErrorBarEntry>& entries);
 
 // Not collective. Throws catena::InputError (key "--error-bar") when the scene cannot have
 // one: a static analysis or adaptive steps (a step of its own choosing has no 2 dt).
