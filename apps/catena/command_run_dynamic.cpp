@@ -196,9 +196,7 @@ class OutputObserver : public solvers::TransientObserver {
     } else {
       why << "height of a registration point";
     }
-    why << " is not finite at t = " << r.time << " s: the step (dt = " << r.dt
-        << " s) is unstable for this scene; a smaller integrator.dt keeps it bounded "
-           "(docs/accuracy.md, \"Where each method stops working\")";
+    why << " is not finite at t = " << r.time << " s" << guard_.unstable_step();
     throw NumericalError(why.str());
   }
 

@@ -13,6 +13,7 @@
 #include "catena/io/output_error.hpp"
 #include "catena/study/case_measures.hpp"
 #include "catena/study/richardson.hpp"
+#include "catena/study/study_plan.hpp"
 #include "commands.hpp"
 #include "rank_zero.hpp"
 
@@ -21,12 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kFactors[] = {2, 4};
-
-std::string exact(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
 
 // Not collective (rank 0). The table users read.
 void print_error_bar(const io::ErrorBarRecord& r, const fs::path& directory) {
@@ -105,16 +100,16 @@ void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m) 
     coarse.restart = false;
     coarse.realtime = false;
     coarse.output = file.string();
-    coarse.overrides.push_back("integrator.dt=" + exact(dt));
+    coarse.overrides.push_back("integrator.dt=" + study::number_text(dt));
     coarse.overrides.push_back("output.file=" + file.string());
     try {
       const CaseConsole console(directory / (name + ".log"), name);
       command_run(comm, coarse);
     } catch (const Error& e) {
-      failure = "the run at dt " + exact(dt) + " s failed (" + e.what() + ")";
+      failure = "the run at dt " + study::number_text(dt) + " s failed (" + e.what() + ")";
     } catch (const RunInterrupted&) {
       // The run itself is complete: a stop during its error bar costs the error bar only.
-      failure = "the run at dt " + exact(dt) + " s was interrupted";
+      failure = "the run at dt " + study::number_text(dt) + " s was interrupted";
     }
     failure = agreed_failure(comm, failure);
   }

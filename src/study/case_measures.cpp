@@ -123,23 +123,9 @@ std::vector<PartErrors> ReferenceRun::errors_by_part(const std::string& path) co
 }
 
 CaseErrors worst_of(const std::vector<PartErrors>& parts) {
-  static constexpr double CaseErrors::*fields[] = {&CaseErrors::force_rms,
-                                                   &CaseErrors::force_max,
-                                                   &CaseErrors::force_rms_filtered,
-                                                   &CaseErrors::force_max_filtered,
-                                                   &CaseErrors::mean,
-                                                   &CaseErrors::std,
-                                                   &CaseErrors::stat_max,
-                                                   &CaseErrors::stat_min,
-                                                   &CaseErrors::max,
-                                                   &CaseErrors::min,
-                                                   &CaseErrors::uplift,
-                                                   &CaseErrors::loss,
-                                                   &CaseErrors::probe_rms,
-                                                   &CaseErrors::probe_max};
   CaseErrors worst;
-  for (const PartErrors& p : parts)
-    for (const auto field : fields)
+  for (const auto field : error_fields())
+    for (const PartErrors& p : parts)
       if (std::isfinite(p.errors.*field)) keep_worst(worst.*field, p.errors.*field);
   return worst;
 }

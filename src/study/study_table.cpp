@@ -156,6 +156,12 @@ Target parse_target(const std::string& argument) {
   return {m->name, limit, argument};
 }
 
+std::vector<double CaseErrors::*> error_fields() {
+  std::vector<double CaseErrors::*> fields;
+  for (const Measure& m : measures) fields.push_back(m.field);
+  return fields;
+}
+
 double measure_value(const CaseErrors& errors, const std::string& measure) {
   const Measure* m = find_measure(measure);
   return m ? errors.*m->field : not_measured;

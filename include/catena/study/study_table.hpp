@@ -80,6 +80,9 @@ struct Target {
 // catena::InputError (key "--target") naming the argument and the accepted measures.
 Target parse_target(const std::string& argument);
 
+// Not collective. Every field of CaseErrors, in the order of study.csv's columns.
+std::vector<double CaseErrors::*> error_fields();
+
 // Not collective. The value of `measure` in `errors` (NaN if not measured).
 double measure_value(const CaseErrors& errors, const std::string& measure);
 

@@ -44,10 +44,11 @@ class StateGuard {
   // v at time t holds a value that is not finite or beyond the bounds above.
   void check(const std::string& who, double t, Vec q, Vec v) const;
 
- private:
-  // The end of both messages: which step failed, what to do.
+  // Not collective. The end of every such message: which step failed, what to do (also
+  // for the checks of step records outside the guard).
   std::string unstable_step() const;
 
+ private:
   const assembly::SecondOrderSystem& system_;
   double dt_ = 0.0, size_ = 0.0, position_bound_ = 0.0;
   VecHandle reference_;
