@@ -98,11 +98,13 @@ Blocks gather(std::span<const double> x) {
   return b;
 }
 
-// Generalised force and tangent at one quadrature point in terms of (u, w).
+// Generalised force and tangent at one quadrature point in terms of (u, w). The tangent
+// blocks are set only when a tangent is requested: a residual evaluation (force only, most
+// of a dynamic run's element calls) neither forms nor clears them.
 struct PointTangent {
   Vec3 fu = Vec3::Zero(), fw = Vec3::Zero();  // ∂φ/∂u, ∂φ/∂w (+ damping force on u)
-  Mat3 Huu = Mat3::Zero(), Huw = Mat3::Zero(), Hwu = Mat3::Zero(), Hww = Mat3::Zero();
-  Mat3 Cuu = Mat3::Zero();  // ∂(damping force)/∂u̇
+  Mat3 Huu, Huw, Hwu, Hww;                    // uninitialised unless Request::stiffness
+  Mat3 Cuu;                                   // ∂(damping force)/∂u̇, Request::damping only
 };
 
 }  // namespace
@@ -147,6 +149,7 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
       f[i] += W * h.ds[i] * pt.fu;
       if (bending) f[i] += W * h.dds[i] * pt.fw;
     }
+    if (!r.stiffness && !r.damping) return;
     if (r.stiffness) {
       for (int i = 0; i < 4; ++i) {
         Mat3 A = W * h.ds[i] * pt.Huu;
@@ -193,7 +196,8 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
     const double norm_u = u.norm();
     p.t = u / norm_u;
     p.eps = a * norm_u - 1.0;
-    p.P = (I - p.t * p.t.transpose()) / norm_u;
+    // ∂t/∂u: the tangent needs it, the force does not.
+    if (r.stiffness) p.P = (I - p.t * p.t.transpose()) / norm_u;
     p.u_rate = damped ? slope_at(p.h, ev) : Vec3::Zero();
     p.eps_rate = a * p.t.dot(p.u_rate);
     eps_mean += kAxialWeights[k] * p.eps;
