@@ -253,6 +253,7 @@ std::string describe(const Model& model, int n_ranks_running) {
     t.heading("Left out:");
     for (const std::string& item : notes.left_out) t.heading("  - " + item);
   }
+  detail::advise_structure(model, t);
   for (const std::string& warning : notes.warnings) t.heading("warning: " + warning);
   return t.str();
 }

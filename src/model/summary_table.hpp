@@ -58,6 +58,13 @@ void describe_catenary(const Model& model, SummaryTable& table, SummaryNotes& no
 // not traversed within the duration).
 void describe_moving(const Model& model, SummaryTable& table, SummaryNotes& notes);
 
+// Not collective. The "Advice:" heading and its rows for a dynamic run of a catenary with
+// pantographs (nothing otherwise): each pantograph's speed against the contact wire's wave
+// speed, pantographs in another's wake, the structure model measured to hold on such a
+// run, the droppers' static pull against the pantographs' uplift, and the contact spring's
+// mode against the step (structure_advice.cpp; docs/accuracy.md).
+void advise_structure(const Model& model, SummaryTable& table);
+
 // Not collective. True if anything outside the pantographs damps the structure: cable or
 // beam damping_time or Rayleigh damping, bar damping, spring or elastic-support damping.
 bool structure_is_damped(const Model& model);
