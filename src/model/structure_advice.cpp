@@ -131,7 +131,8 @@ void advise_structure(const Model& m, SummaryTable& t) {
   else if (worst_ratio > kModalMeasuredRatio)
     verdict = cat("linear (σ within 1 % of the nonlinear run measured up to ",
                   percent(kLinearMeasuredRatio), " of the wave speed); not modal: its σ was ",
-                  "measured 1.7 % high at 68 % (300 km/h), within 1 % up to ", percent(kModalMeasuredRatio));
+                  "measured 1.7 % high at 68 % (300 km/h), within 1 % up to ",
+                  percent(kModalMeasuredRatio));
   else
     verdict = cat("modal or linear (σ within 1 % of the nonlinear run measured up to ",
                   percent(kModalMeasuredRatio), " and ", percent(kLinearMeasuredRatio),
