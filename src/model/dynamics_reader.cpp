@@ -82,7 +82,7 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   const Field newton = in.child("newton");
   if (facts->takes_newton) {
     o.newton = newton.text_or(o.newton);
-    const bool hht = facts->method == IntegratorMethod::hht;
+    const bool hht = facts->takes_linearly_implicit;
     if (o.newton != "simplified" && o.newton != "full" && !(hht && o.newton == "linearly_implicit"))
       newton.fail("unknown Newton variant '" + o.newton + "' for " + o.type + "; accepted: " +
                   (hht ? "simplified, full, linearly_implicit" : "simplified, full"));

@@ -18,14 +18,21 @@ constexpr std::string_view kExplicitFirstStage =
     "matrix)";
 constexpr std::string_view kRadauFilter = "its filter would need RADAU5's index-3 treatment";
 
-constexpr std::array<IntegratorType, 7> kTypes{{
+constexpr std::array<IntegratorType, 8> kTypes{{
     {.name = "hht",
      .alias = "",
      .method = M::hht,
      .embedded = E::always,
      .takes_alpha = true,
      .takes_newton = true,
-     .takes_local_newton = true},
+     .takes_local_newton = true,
+     .takes_linearly_implicit = true},
+    {.name = "central_difference",
+     .alias = "",
+     .method = M::hht,
+     .embedded = E::always,
+     .constraint_refusal = "its positions do not depend on the step's unknown (explicit)",
+     .takes_newton = true},
     {.name = "gauss",
      .alias = "",
      .method = M::irk,
@@ -86,7 +93,7 @@ std::string types_taking_constraints() {
   return join(names, " or ");
 }
 
-// "hht and radau with 1, 3 or 5 stages".
+// "hht, central_difference and radau with 1, 3 or 5 stages".
 std::string embedded_owners() {
   std::vector<std::string> owners;
   for (const IntegratorType& t : kTypes) {

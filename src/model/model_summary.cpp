@@ -197,7 +197,7 @@ std::string describe(const Model& model, int n_ranks_running) {
     if (i.type == "hht") {
       method += " alpha ";
       method += format_number(i.alpha);
-    } else if (i.type != "petsc") {
+    } else if (i.type != "petsc" && i.type != "central_difference") {
       method += ' ';
       method += std::to_string(i.stages);
       method += " stages";

@@ -39,7 +39,8 @@ TEST(IntegratorCatalogue, RadauIsAnAliasOfRadauIia) {
   EXPECT_EQ(find_integrator_type("radau_iiia"), nullptr);
   EXPECT_EQ(find_integrator_type(""), nullptr);
   EXPECT_EQ(catena::model::integrator_type_list(),
-            "hht, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, sdirk, petsc");
+            "hht, central_difference, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, "
+            "sdirk, petsc");
   EXPECT_EQ(catena::model::integrator_names(IntegratorMethod::irk),
             "gauss, radau, lobatto_iiia, lobatto_iiic, sdirk");
 }
@@ -68,6 +69,7 @@ TEST(IntegratorCatalogue, StageRangesPerFamily) {
 TEST(IntegratorCatalogue, EmbeddedEstimates) {
   EXPECT_TRUE(has_embedded_estimate(type("hht"), 0, false));
   EXPECT_TRUE(has_embedded_estimate(type("hht"), 0, true));
+  EXPECT_TRUE(has_embedded_estimate(type("central_difference"), 0, false));
   for (int s = 1; s <= 5; ++s) {
     EXPECT_EQ(has_embedded_estimate(type("radau"), s, false), s % 2 == 1) << s;
     EXPECT_FALSE(has_embedded_estimate(type("radau"), s, true)) << s;  // index-3 filter
@@ -82,6 +84,13 @@ TEST(IntegratorCatalogue, KeysThatApply) {
   EXPECT_TRUE(type("petsc").takes_alpha);
   EXPECT_FALSE(type("radau").takes_alpha);
   EXPECT_TRUE(type("hht").takes_local_newton);
+  EXPECT_TRUE(type("hht").takes_linearly_implicit);
+  // Central differences: HHT's class with α = 0, β = 0, γ = ½; Newton for the implicit part.
+  EXPECT_EQ(type("central_difference").method, IntegratorMethod::hht);
+  EXPECT_TRUE(type("central_difference").takes_newton);
+  EXPECT_FALSE(type("central_difference").takes_alpha);
+  EXPECT_FALSE(type("central_difference").takes_local_newton);
+  EXPECT_FALSE(type("central_difference").takes_linearly_implicit);
   EXPECT_FALSE(type("gauss").takes_local_newton);
   EXPECT_FALSE(type("petsc").takes_newton);
   EXPECT_TRUE(type("sdirk").takes_newton);
@@ -111,15 +120,15 @@ TEST(IntegratorCatalogue, RefusesEmbeddedEstimateWhereThereIsNone) {
   ASSERT_TRUE(refusal.has_value());
   EXPECT_EQ(refusal->key, "error_estimate");
   EXPECT_EQ(refusal->why,
-            "radau_iia with 2 stages has no embedded error estimate (hht and radau with 1, 3 "
-            "or 5 stages have); use step_doubling or auto");
+            "radau_iia with 2 stages has no embedded error estimate (hht, central_difference "
+            "and radau with 1, 3 or 5 stages have); use step_doubling or auto");
   o.type = "hht";
   EXPECT_FALSE(refuse_integrator(o, 0).has_value());
   EXPECT_FALSE(refuse_integrator(o, 2).has_value());
 }
 
 TEST(IntegratorCatalogue, RefusesConstraintsForLobattoIiiaAndPetsc) {
-  for (const char* name : {"lobatto_iiia", "petsc"}) {
+  for (const char* name : {"lobatto_iiia", "petsc", "central_difference"}) {
     EXPECT_FALSE(refuse_integrator(options(name, 3), 0).has_value()) << name;
     const auto refusal = refuse_integrator(options(name, 3), 2);
     ASSERT_TRUE(refusal.has_value()) << name;

@@ -20,7 +20,7 @@
 namespace catena::model {
 
 enum class IntegratorMethod {
-  hht,       // HhtIntegrator
+  hht,       // HhtIntegrator (HHT-α, or central differences)
   irk,       // IrkIntegrator with the family's Butcher tableau
   petsc_ts,  // PetscTsIntegrator (the method from -ts_type)
 };
@@ -46,9 +46,10 @@ struct IntegratorType {
   // nonzero eigenvalues: tableau_decomposition.hpp), or "" if it is.
   std::string_view decoupled_refusal = {};
   // Which scene keys apply besides the common ones (stages and linear_algebra: IRK only).
-  bool takes_alpha = false;         // HHT's α (petsc: for -ts_type alpha2)
-  bool takes_newton = false;        // newton: simplified | full
-  bool takes_local_newton = false;  // local_newton
+  bool takes_alpha = false;              // HHT's α (petsc: for -ts_type alpha2)
+  bool takes_newton = false;             // newton: simplified | full
+  bool takes_local_newton = false;       // local_newton
+  bool takes_linearly_implicit = false;  // newton: linearly_implicit (and tangent_every)
 };
 
 // Every type, in the order messages list them.

@@ -72,9 +72,11 @@ struct HhtIntegrator::Impl {
   Impl(assembly::SecondOrderSystem& s, const HhtOptions& o, StepState& st)
       : system(s),
         options(o),
-        beta(0.25 * (1 - o.alpha) * (1 - o.alpha)),
-        gamma(0.5 - o.alpha),
-        state(st) {}
+        beta(o.central_difference ? 0.0 : 0.25 * (1 - o.alpha) * (1 - o.alpha)),
+        gamma(o.central_difference ? 0.5 : 0.5 - o.alpha),
+        state(st) {
+    if (o.central_difference) options.alpha = 0.0;
+  }
 
   // The a1-independent parts of the Newmark formulas for the step h from (q0, v0, a0):
   // q_known = q0 + h v0 + h²(½ − β) a0,  v_known = v0 + h(1 − γ) a0. Computed once per
@@ -178,7 +180,8 @@ struct HhtIntegrator::Impl {
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
     if (const Mat damping = damping_matrix())
       CATENA_PETSC(MatAXPY(J, s * gamma * h, damping, SAME_NONZERO_PATTERN));
-    CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
+    if (beta != 0.0)  // central differences: no stiffness in the matrix
+      CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
     if (algebraic->active()) {
       // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
       // scaled to m̄ G like the residual's.
@@ -190,7 +193,13 @@ struct HhtIntegrator::Impl {
 
 HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptions& options)
     : StepStateIntegrator(system) {
-  if (!(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
+  if (options.central_difference && system.has_constraints())
+    throw InputError({"", 0, "integrator.type"},
+                     "central_difference takes no Lagrange-multiplier constraints (its positions "
+                     "do not depend on the step's unknown); use hht or radau");
+  CATENA_ASSERT(!options.central_difference || !options.linearly_implicit,
+                "central differences have no linearly implicit variant");
+  if (!options.central_difference && !(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
     throw InputError({"", 0, "integrator.alpha"}, "HHT alpha = " + std::to_string(options.alpha) +
                                                       " is outside the accepted range [-1/3, 0]");
   impl_ = std::make_unique<Impl>(system, options, step_state());
@@ -227,7 +236,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
       settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
       [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
   LocalNewtonSettings local = options.local_newton_settings;
-  const bool use_local = local_newton_options(options.local_newton, local);
+  // Central differences: the stiffness is not in the matrix, so no window of it either.
+  const bool use_local =
+      !options.central_difference && local_newton_options(options.local_newton, local);
   if (use_local) {
     s.local = std::make_unique<LocalNewton>(system, local);
     // R(a1) = M a1 + (1 + α) f(q1, v1) − α f0, q1 = q̂ + βh² a1, v1 = v̂ + γh a1; q1, v1
@@ -244,6 +255,7 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
 HhtIntegrator::~HhtIntegrator() = default;
 
 std::string HhtIntegrator::name() const {
+  if (impl_->options.central_difference) return "central_difference";
   char text[64];
   // The linearly implicit step is another method: a checkpoint of one does not continue
   // as the other (checkpoints name their integrator).

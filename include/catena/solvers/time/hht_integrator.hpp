@@ -21,6 +21,20 @@
 // Dense output: cubic Hermite interpolation of q from (q, v) and of v from (v, a) at both
 // ends of the step (third order, above the method's second).
 //
+// Central differences (HhtOptions::central_difference; integrator.type central_difference):
+// the same step with α = 0, β = 0, γ = ½ — Newmark's explicit member, the velocity form of
+// the central-difference (Störmer–Verlet) scheme:
+//   q₁ = q₀ + h v₀ + ½h² a₀,   v₁ = v₀ + ½h (a₀ + a₁),   M a₁ + f(t₁, q₁, v₁) = 0.
+// The positions are explicit; what depends on v₁ (damping, the contact's dashpot) makes the
+// acceleration implicit, solved by the same Newton iteration on J = M + ½h C, which holds
+// no stiffness: with constant damping it is factored once for the run. Second order, no
+// numerical damping, conditionally stable: h·ω ≤ 2 for the highest undamped mode ω
+// (Hughes, The Finite Element Method, 2000, §9.1; Rayleigh damping βK lowers the limit to
+// (2/ω)(√(1 + ζ²) − ζ)). Lagrange-multiplier constraints are refused (β = 0 leaves the
+// positions, and so the constraints, independent of the unknown a₁). It is the explicit
+// integrator of seed methods for flexible multibody systems (central differences with
+// Newton for the implicit part).
+//
 // Options database prefix: -hht_ (e.g. -hht_snes_monitor, -hht_pc_type lu).
 #include <memory>
 
@@ -47,6 +61,9 @@ struct HhtOptions {
   // constraints (refused by the scene reader).
   bool linearly_implicit = false;
   int tangent_every = 0;
+  // Central differences: α ignored (0), β = 0, γ = ½; no local correction, not linearly
+  // implicit, no constraints.
+  bool central_difference = false;
 };
 
 class HhtIntegrator final : public StepStateIntegrator {
