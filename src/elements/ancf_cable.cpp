@@ -161,7 +161,7 @@ void AncfCable::evaluate(const LocalState& s, Request r, LocalOutput out) const 
         }
       }
     }
-    if (r.damping && tau > 0.0)
+    if (r.damping && tau > 0.0 && !bending)  // the axial points' dashpot only
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) C[i][j] += (W * h.ds[i] * h.ds[j]) * pt.Cuu;
   };
