@@ -8,8 +8,7 @@
 //   run grows (conditional stability, the limit ωh = 2);
 // - with a dashpot (the implicit part: v₁ in the force), second order against the exact
 //   damped oscillation, one Newton iteration per step (the matrix M + ½hC is exact);
-// - the stability limit's bound (model/explicit_step_limit.hpp, √105·c/L for the cables)
-//   against the highest frequency of an assembled taut string, K x = ω² M x solved dense.
+// - the stability limit's ω_max against the dense spectrum of K x = ω² M x.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -19,7 +18,7 @@
 
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
-#include "catena/model/explicit_step_limit.hpp"
+#include "catena/solvers/modes/modal_analysis.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
@@ -115,12 +114,34 @@ TEST(CentralDifference, SecondOrderWithADashpot) {
   }
 }
 
-TEST(CentralDifference, StepLimitBoundsTheStringsHighestFrequency) {
+// The stability limit's ω_max (modes/modal_analysis.hpp, highest_frequency: Krylov–Schur on
+// M⁻¹K) against the dense spectrum of K x = ω² M x: a taut string (its highest mode the
+// cables' axial one, √105·c/L for their Lobatto-sampled strain), and the same string cut in
+// two and joined by a spring of 100 EA/L, whose mode between the two cables' end nodes lies
+// far above the cables' own.
+TEST(CentralDifference, HighestFrequencyMatchesTheDenseSpectrum) {
   catena::test::ensure_petsc();
-  for (int n : {6, 12}) {
+  for (const bool joint : {false, true}) {
     catena::test::TautString string;
-    string.n = n;
-    const model::Model m = string.model();
+    string.n = 12;
+    model::Model m = string.model();
+    if (joint) {
+      // Split the line at its middle node: the right half's first element takes a new node
+      // there, and a spring joins the two.
+      const int middle = string.n / 2;
+      const model::Node copy = m.nodes[static_cast<std::size_t>(middle)];
+      m.nodes.push_back(copy);
+      m.nodes.back().id = static_cast<std::int64_t>(m.nodes.size());
+      const int twin = static_cast<int>(m.nodes.size()) - 1;
+      for (model::ElementDesc& e : m.elements)
+        if (e.nodes.front() == middle && e.nodes.back() == middle + 1) e.nodes.front() = twin;
+      const double k = 100.0 * string.EA / (string.L / string.n);
+      model::ElementDesc spring;
+      spring.id = static_cast<std::int64_t>(m.elements.size()) + 1;
+      spring.nodes = {middle, twin};
+      spring.props = model::SpringProps{Vec3(k, k, k), Vec3::Zero()};
+      m.elements.push_back(spring);
+    }
     catena::assembly::SecondOrderSystem system(PETSC_COMM_SELF, m);
     catena::VecHandle q = system.create_vector();
     system.reference_state(q.get());
@@ -135,16 +156,20 @@ TEST(CentralDifference, StepLimitBoundsTheStringsHighestFrequency) {
         MatGetValues(K.get(), 1, &i, 1, &j, &k(i, j));
         MatGetValues(M.get(), 1, &i, 1, &j, &mass(i, j));
       }
-    // K of the tensioned string is symmetric up to round-off; its symmetric part.
     const Eigen::MatrixXd k_sym = 0.5 * (k + k.transpose());
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_sym, mass,
                                                                   Eigen::EigenvaluesOnly);
-    const double omega_max = std::sqrt(eig.eigenvalues().maxCoeff());
-    const catena::model::ExplicitStepLimit limit = catena::model::explicit_step_limit(m);
-    std::printf("%d elements: omega_max %.6g rad/s, the bound %.6g rad/s\n", n, omega_max,
-                limit.omega);
-    EXPECT_GE(limit.omega, omega_max * (1.0 - 1e-9)) << n;  // a bound: never below
-    EXPECT_LT(limit.omega, 1.01 * omega_max) << n;          // and a tight one
-    EXPECT_NEAR(limit.step, 2.0 / limit.omega, 1e-15);
+    const double dense = std::sqrt(eig.eigenvalues().maxCoeff());
+    const double omega = catena::solvers::highest_frequency(K.get(), M.get());
+    const double c = std::sqrt(string.EA / string.mu), h = string.L / string.n;
+    std::printf("%s: omega_max %.6g rad/s (dense %.6g; sqrt(105) c/L %.6g)\n",
+                joint ? "with a spring joint" : "taut string", omega, dense,
+                std::sqrt(105.0) * c / h);
+    EXPECT_NEAR(omega, dense, 1e-6 * dense) << joint;
+    if (joint) {
+      EXPECT_GT(omega, 3.0 * std::sqrt(105.0) * c / h);
+    } else {
+      EXPECT_NEAR(omega, std::sqrt(105.0) * c / h, 2e-3 * omega);
+    }
   }
 }

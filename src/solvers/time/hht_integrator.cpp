@@ -1,11 +1,13 @@
 #include "catena/solvers/time/hht_integrator.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/modes/modal_analysis.hpp"
 #include "catena/solvers/newton/local_newton.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
@@ -54,6 +56,7 @@ struct HhtIntegrator::Impl {
   RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   VecHandle f1, residual, error, work;
   long steps_since_tangent = 0;  // linearly implicit: steps accepted with the current tangent
+  double omega_max = 0.0;        // central differences: rad/s at the state set last
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
   MatHandle mass, K, C, jacobian;
@@ -272,6 +275,12 @@ void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   s.state.start(t, q, v, a, consistent_acceleration_of(s.system, s.mass.get()));
   s.system.force({s.state.q(), s.state.v(), {}, t}, s.f0.get(), &s.scale0);
   s.newton->invalidate_tangent();
+  if (s.options.central_difference) {
+    // The stability limit at this state: the tangent there (kept: it is the one the first
+    // Newton matrix would be built from) against the mass.
+    s.evaluate_tangent(s.state.q(), s.state.v(), t);
+    s.omega_max = highest_frequency(s.K.get(), s.mass.get());
+  }
 }
 
 StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
@@ -348,6 +357,24 @@ void HhtIntegrator::restore_resume_state(const ResumeState& in) {
                        in.real("hht.tangent_t"));
     ++s.counters.jacobian_evaluations;
   }
+}
+
+double HhtIntegrator::stable_step() const {
+  const Impl& s = *impl_;
+  if (!s.options.central_difference || !(s.omega_max > 0.0))
+    return std::numeric_limits<double>::infinity();
+  return 2.0 / s.omega_max;
+}
+
+std::string HhtIntegrator::stable_step_reason() const {
+  const Impl& s = *impl_;
+  if (!s.options.central_difference) return {};
+  std::ostringstream os;
+  os << "central differences are stable for steps up to 2/omega_max = " << stable_step()
+     << " s, omega_max = " << s.omega_max
+     << " rad/s, the structure's highest frequency at the initial state (docs/integrators.md, "
+        "\"Central differences\")";
+  return os.str();
 }
 
 const IntegratorCounters& HhtIntegrator::counters() const {

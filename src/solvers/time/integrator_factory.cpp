@@ -1,11 +1,8 @@
 #include "catena/solvers/time/integrator_factory.hpp"
 
-#include <cstdio>
-#include <string>
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/model/explicit_step_limit.hpp"
 #include "catena/model/integrator_catalogue.hpp"
 #include "catena/model/unknown_kinds.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
@@ -28,32 +25,6 @@ void check_update_rules(const assembly::DofMap& dofs) {
     }
 }
 
-// Central differences are stable only below 2/ω_max: a step above it does not always blow
-// up to the state guard's bounds (contact and slack droppers can cap the growth at metres
-// of garbage), so it is refused before the run (model/explicit_step_limit.hpp).
-void check_explicit_step(const model::Model& m, const model::IntegratorOptions& o) {
-  const model::ExplicitStepLimit limit = model::explicit_step_limit(m);
-  const auto text = [](double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4g", x);
-    return std::string(buffer);
-  };
-  std::string why = "central differences are stable for steps up to 2/omega_max = ";
-  why += text(limit.step);
-  why += " s, omega_max = ";
-  why += text(limit.omega);
-  why += " rad/s from ";
-  why += limit.source;
-  why += " (docs/integrators.md, \"Central differences\")";
-  if (o.dt > limit.step)
-    throw InputError({"", 0, "integrator.dt"}, "dt = " + text(o.dt) + " s is too long: " + why +
-                                                   "; use dt <= " + text(limit.step) +
-                                                   " s, or hht for longer steps");
-  if (o.adaptive && (o.dt_max <= 0.0 || o.dt_max > limit.step))
-    throw InputError({"", 0, "integrator.dt_max"},
-                     "adaptive steps need dt_max <= " + text(limit.step) + " s: " + why);
-}
-
 }  // namespace
 
 std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& system,
@@ -66,7 +37,6 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
   if (o.type == "hht" || o.type == "central_difference") {
     HhtOptions h;
     h.central_difference = o.type == "central_difference";
-    if (h.central_difference) check_explicit_step(system.model(), o);
     h.alpha = h.central_difference ? 0.0 : o.alpha;
     h.rtol = o.newton_rtol;
     h.atol = o.newton_atol;

@@ -71,6 +71,15 @@ class Driver {
     } else {
       emit_samples_up_to(in_.time());
     }
+    // An explicit method's stability limit (TimeIntegrator::stable_step): a longer fixed
+    // step is refused before any is taken, adaptive steps are capped at it.
+    const double stable = in_.stable_step();
+    if (!c.adaptive && c.dt > stable) {
+      std::ostringstream os;
+      os << "dt = " << c.dt << " s is too long: " << in_.stable_step_reason()
+         << "; use dt <= " << stable << " s, or an implicit method (hht) for longer steps";
+      throw InputError({"", 0, "integrator.dt"}, os.str());
+    }
     int rejected = 0;
     while (in_.time() < t_end * (1 - 1e-14) - 1e-300) {
       if (stop_requested()) {
@@ -78,7 +87,7 @@ class Driver {
         break;
       }
       const double t = in_.time();
-      double step = std::min(h, c.dt_max > 0 ? c.dt_max : h);
+      double step = std::min({h, c.dt_max > 0 ? c.dt_max : h, stable});
       // Land on t_end; avoid a sliver of a last step.
       if (t + step >= t_end || t + 1.01 * step >= t_end) step = t_end - t;
       if (step < c.dt_min && t_end - t > c.dt_min) fail_small_step(t, step);

@@ -8,6 +8,7 @@
 // never choose step sizes: the driver does (error estimate, Newton failures, output times).
 #include <petscvec.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,13 @@ class TimeIntegrator {
     (void)out;
     return false;
   }
+
+  // Not collective. After set_state(): the longest step the method is stable for from the
+  // current state (an explicit method's 2/ω_max), +∞ for the unconditionally stable ones;
+  // the driver refuses a longer fixed step and caps adaptive ones there.
+  virtual double stable_step() const { return std::numeric_limits<double>::infinity(); }
+  // Not collective. Why stable_step() is what it is, for the driver's message.
+  virtual std::string stable_step_reason() const { return {}; }
 
   // Restarts (resume_state.hpp). Not collective. After accept(): what this integrator
   // carries to its next step beyond (t, q, v, a), its counters included; the vectors are
