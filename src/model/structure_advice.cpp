@@ -41,7 +41,12 @@ WireWave contact_wire_wave(const Model& m) {
   return {w.tension, p.mass_per_length, (b - a).norm()};
 }
 
+// Thresholds print whole ("80 %"), a scene's ratio to a tenth ("80.1 %"), so that a ratio
+// just above a threshold does not print as the threshold itself beside "above".
 std::string percent(double ratio) { return cat(format_number(std::round(100.0 * ratio)), " %"); }
+std::string ratio_text(double ratio) {
+  return cat(format_number(std::round(1000.0 * ratio) / 10.0), " %");
+}
 
 // Pantographs running behind another on the same path, in its waves: "'trailing' 200 m
 // behind 'leading'", one entry per follower (the nearest pantograph ahead of it).
@@ -50,7 +55,9 @@ std::vector<std::string> followers(const Model& m) {
   for (const MovingContact& c : m.contacts) {
     const MovingContact* ahead = nullptr;
     for (const MovingContact& o : m.contacts)
-      if (&o != &c && o.path == c.path && o.speed == c.speed && o.start > c.start &&
+      // Moving the same way at the same speed (to round-off: speed and speed_kmh), ahead.
+      if (&o != &c && o.path == c.path && c.speed > 0.0 &&
+          std::abs(o.speed - c.speed) <= 1e-9 * c.speed && o.start > c.start &&
           (!ahead || o.start < ahead->start))
         ahead = &o;
     if (ahead)
@@ -107,7 +114,7 @@ void advise_structure(const Model& m, SummaryTable& t) {
   for (const MovingContact& c : m.contacts) {
     const double ratio = c.speed / wave.speed();
     worst_ratio = std::max(worst_ratio, ratio);
-    t.row(c.name, cat(format_number(c.speed * 3.6), " km/h is ", percent(ratio),
+    t.row(c.name, cat(format_number(c.speed * 3.6), " km/h is ", ratio_text(ratio),
                       " of the contact wire's wave speed sqrt(T/mu) = ",
                       format_number(wave.speed() * 3.6), " km/h",
                       ratio > kEn50119Ratio ? " (above EN 50119's 70 %: expect large uplift "
@@ -131,7 +138,7 @@ void advise_structure(const Model& m, SummaryTable& t) {
   else if (worst_ratio > kModalMeasuredRatio)
     verdict = cat("linear (σ within 1 % of the nonlinear run measured up to ",
                   percent(kLinearMeasuredRatio), " of the wave speed); not modal: its σ was ",
-                  "measured 1.7 % high at 68 % (300 km/h), within 1 % up to ",
+                  "measured 1.7 % high at 68.5 % (300 km/h), within 1 % up to ",
                   percent(kModalMeasuredRatio));
   else
     verdict = cat("modal or linear (σ within 1 % of the nonlinear run measured up to ",

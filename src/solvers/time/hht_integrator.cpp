@@ -200,8 +200,10 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
     throw InputError({"", 0, "integrator.type"},
                      "central_difference takes no Lagrange-multiplier constraints (its positions "
                      "do not depend on the step's unknown); use hht or radau");
-  CATENA_ASSERT(!options.central_difference || !options.linearly_implicit,
-                "central differences have no linearly implicit variant");
+  if (options.central_difference && options.linearly_implicit)
+    throw InputError({"", 0, "integrator.newton"},
+                     "central_difference has no linearly implicit variant (its positions are "
+                     "explicit already); use simplified or full");
   if (!options.central_difference && !(options.alpha >= -1.0 / 3.0 && options.alpha <= 0.0))
     throw InputError({"", 0, "integrator.alpha"}, "HHT alpha = " + std::to_string(options.alpha) +
                                                       " is outside the accepted range [-1/3, 0]");
