@@ -29,6 +29,27 @@ void ensure_slepc() {
   if (!slepc_ready) CATENA_PETSC(SlepcInitializeNoArguments());
 }
 
+// Krylov–Schur on the symmetric pencil (K, M) with spectral transformation `st_type` whose
+// solves are one MUMPS Cholesky factorisation (of K for shift-and-invert, of M for the shift:
+// M⁻¹K); the ST's KSP.
+KSP krylov_schur(EPS eps, Mat K, Mat M, STType st_type, double tolerance, PetscInt max_it) {
+  CATENA_PETSC(EPSSetOperators(eps, K, M));
+  CATENA_PETSC(EPSSetProblemType(eps, EPS_GHEP));
+  CATENA_PETSC(EPSSetType(eps, EPSKRYLOVSCHUR));
+  CATENA_PETSC(EPSSetTolerances(eps, tolerance, max_it));
+  ST st = nullptr;
+  CATENA_PETSC(EPSGetST(eps, &st));
+  CATENA_PETSC(STSetType(st, st_type));
+  KSP ksp = nullptr;
+  CATENA_PETSC(STGetKSP(st, &ksp));
+  CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
+  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  return ksp;
+}
+
 // Krylov–Schur on K φ = λ M φ with shift-and-invert and a MUMPS LDLᵀ; `configure` sets what
 // is wanted (which eigenpairs, how many) before the options database is read.
 // `slicing`: spectrum slicing factors in a child solver of its own, so the parent's
@@ -38,20 +59,7 @@ EpsHandle make_eps(MPI_Comm comm, Mat K, Mat M, double tolerance,
   ensure_slepc();
   EpsHandle eps;
   CATENA_PETSC(EPSCreate(comm, eps.out()));
-  CATENA_PETSC(EPSSetOperators(eps.get(), K, M));
-  CATENA_PETSC(EPSSetProblemType(eps.get(), EPS_GHEP));
-  CATENA_PETSC(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
-  CATENA_PETSC(EPSSetTolerances(eps.get(), tolerance, PETSC_DEFAULT));
-  ST st = nullptr;
-  CATENA_PETSC(EPSGetST(eps.get(), &st));
-  CATENA_PETSC(STSetType(st, STSINVERT));
-  KSP ksp = nullptr;
-  CATENA_PETSC(STGetKSP(st, &ksp));
-  CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
-  PC pc = nullptr;
-  CATENA_PETSC(KSPGetPC(ksp, &pc));
-  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
-  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  KSP ksp = krylov_schur(eps.get(), K, M, STSINVERT, tolerance, PETSC_DEFAULT);
   enable_mumps_null_pivot_detection(std::string(kPrefix) + "st_");
   configure(eps.get());
   CATENA_PETSC(EPSSetOptionsPrefix(eps.get(), kPrefix));
@@ -230,25 +238,12 @@ double highest_frequency(Mat K, Mat M) {
   CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm));
   EpsHandle eps;
   CATENA_PETSC(EPSCreate(comm, eps.out()));
-  CATENA_PETSC(EPSSetOperators(eps.get(), K, M));
-  CATENA_PETSC(EPSSetProblemType(eps.get(), EPS_GHEP));
-  CATENA_PETSC(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
-  CATENA_PETSC(EPSSetWhichEigenpairs(eps.get(), EPS_LARGEST_MAGNITUDE));
-  CATENA_PETSC(EPSSetDimensions(eps.get(), 1, PETSC_DEFAULT, PETSC_DEFAULT));
   // A Ritz value's error is of the order of its residual squared: 1e-5 gives ω_max to
   // about 1e-10 (EN 50318: 6 digits the same from 1e-3 to 1e-6, 1e-8 took 1500 restarts of
-  // a clustered spectrum where 1e-5 takes tens).
-  CATENA_PETSC(EPSSetTolerances(eps.get(), 1e-5, 10000));
-  ST st = nullptr;
-  CATENA_PETSC(EPSGetST(eps.get(), &st));
-  CATENA_PETSC(STSetType(st, STSHIFT));  // M⁻¹K itself: its largest eigenvalue first
-  KSP ksp = nullptr;
-  CATENA_PETSC(STGetKSP(st, &ksp));
-  CATENA_PETSC(KSPSetType(ksp, KSPPREONLY));
-  PC pc = nullptr;
-  CATENA_PETSC(KSPGetPC(ksp, &pc));
-  CATENA_PETSC(PCSetType(pc, PCCHOLESKY));
-  CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  // a clustered spectrum where 1e-5 takes tens). The shift: M⁻¹K itself, largest first.
+  KSP ksp = krylov_schur(eps.get(), K, M, STSHIFT, 1e-5, 10000);
+  CATENA_PETSC(EPSSetWhichEigenpairs(eps.get(), EPS_LARGEST_MAGNITUDE));
+  CATENA_PETSC(EPSSetDimensions(eps.get(), 1, PETSC_DEFAULT, PETSC_DEFAULT));
   CATENA_PETSC(EPSSetOptionsPrefix(eps.get(), "highest_"));
   CATENA_PETSC(EPSSetFromOptions(eps.get()));
   CATENA_PETSC(EPSSetUp(eps.get()));
