@@ -541,6 +541,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
                 integrator->name().c_str(), options.step.adaptive ? "adaptive, first" : "fixed",
                 options.step.dt, options.t_end, static_cast<long long>(system.dof_map().n_global()),
                 mpi_size(comm));
+    if (const double stable = integrator->stable_step(); std::isfinite(stable))
+      std::printf("stability limit: steps up to %g s (%s)\n", stable,
+                  options.step.adaptive ? "adaptive steps are capped there"
+                                        : "a longer fixed step is refused");
     if (options.step.adaptive && options.step.dt > options.t_end)
       std::printf(
           "note: the first step integrator.dt = %g s is longer than analysis.duration "
