@@ -4,7 +4,6 @@
 // them: docs/accuracy.md, "Choosing a structure model before the run".
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 #include <variant>
 #include <vector>

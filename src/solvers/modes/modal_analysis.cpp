@@ -74,16 +74,21 @@ EpsHandle make_eps(MPI_Comm comm, Mat K, Mat M, double tolerance,
   return eps;
 }
 
-// Solves; the converged count (throws if the solver reports divergence).
+// Solves; the converged count (throws if the solver reports divergence). Messages name the
+// solver by its options prefix ("modes_", "highest_"), which is also where its options go.
 PetscInt solve(EPS eps, PetscInt* iterations, bool slicing = false) {
   CATENA_PETSC(EPSSolve(eps));
+  const char* prefix_text = nullptr;
+  CATENA_PETSC(EPSGetOptionsPrefix(eps, &prefix_text));
+  const std::string prefix = prefix_text ? prefix_text : "";
   if (!slicing) {
     ST st = nullptr;
     KSP ksp = nullptr;
     CATENA_PETSC(EPSGetST(eps, &st));
     CATENA_PETSC(STGetKSP(st, &ksp));
     if (const DirectSolveStatus status = direct_solve_status(ksp); status.failed())
-      throw NumericalError("modes: a shift-and-invert solve failed (" + status.describe() + ")");
+      throw NumericalError(prefix + "eps: a solve of its spectral transformation failed (" +
+                           status.describe() + ")");
   }
   EPSConvergedReason reason;
   CATENA_PETSC(EPSGetConvergedReason(eps, &reason));
@@ -91,10 +96,10 @@ PetscInt solve(EPS eps, PetscInt* iterations, bool slicing = false) {
   CATENA_PETSC(EPSGetConverged(eps, &converged));
   CATENA_PETSC(EPSGetIterationNumber(eps, iterations));
   if (reason < 0)
-    throw NumericalError("modes: the eigensolver diverged after " + std::to_string(*iterations) +
-                         " Krylov-Schur restarts (EPS reason " + std::to_string(reason) + "), " +
-                         std::to_string(converged) +
-                         " modes converged; more with -modes_eps_max_it");
+    throw NumericalError(prefix + "eps: the eigensolver diverged after " +
+                         std::to_string(*iterations) + " Krylov-Schur restarts (EPS reason " +
+                         std::to_string(reason) + "), " + std::to_string(converged) +
+                         " eigenpairs converged; more with -" + prefix + "eps_max_it");
   return converged;
 }
 

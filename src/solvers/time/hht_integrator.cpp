@@ -277,9 +277,10 @@ void HhtIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   s.state.start(t, q, v, a, consistent_acceleration_of(s.system, s.mass.get()));
   s.system.force({s.state.q(), s.state.v(), {}, t}, s.f0.get(), &s.scale0);
   s.newton->invalidate_tangent();
-  if (s.options.central_difference) {
-    // The stability limit at this state: the tangent there (kept: it is the one the first
-    // Newton matrix would be built from) against the mass.
+  if (s.options.central_difference && !(s.omega_max > 0.0)) {
+    // The stability limit at the initial state, once: the tangent there (kept: the first
+    // Newton matrix is built from it) against the mass. Not again when the driver returns
+    // to a step's start (step doubling): that would repeat the eigen-solve every step.
     s.evaluate_tangent(s.state.q(), s.state.v(), t);
     s.omega_max = highest_frequency(s.K.get(), s.mass.get());
   }

@@ -36,8 +36,8 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
   if (o.type == "hht" || o.type == "central_difference") {
     HhtOptions h;
-    h.central_difference = o.type == "central_difference";
-    h.alpha = h.central_difference ? 0.0 : o.alpha;
+    h.central_difference = o.type == "central_difference";  // α then 0 (HhtIntegrator)
+    h.alpha = o.alpha;
     h.rtol = o.newton_rtol;
     h.atol = o.newton_atol;
     h.max_newton_iterations = o.max_newton_iterations;

@@ -30,9 +30,9 @@
 // no stiffness: with constant damping it is factored once for the run. Second order, no
 // numerical damping, conditionally stable: h·ω ≤ 2 for the highest undamped mode ω
 // (Hughes, The Finite Element Method, 2000, §9.1; with γ = ½ and the damping implicit, as
-// here, damping does not lower it). set_state computes ω_max of K φ = ω² M φ at the state
-// (modes/modal_analysis.hpp, highest_frequency) and stable_step() reports 2/ω_max, which
-// the driver enforces. Lagrange-multiplier constraints are refused (β = 0 leaves the
+// here, damping does not lower it). The first set_state computes ω_max of K φ = ω² M φ at
+// its state (modes/modal_analysis.hpp, highest_frequency) and stable_step() reports
+// 2/ω_max, which the driver enforces. Lagrange-multiplier constraints are refused (β = 0 leaves the
 // positions, and so the constraints, independent of the unknown a₁). It is the explicit
 // integrator of seed methods for flexible multibody systems (central differences with
 // Newton for the implicit part).
@@ -86,8 +86,8 @@ class HhtIntegrator final : public StepStateIntegrator {
   void save_resume_state(ResumeState& out) const override;
   void restore_resume_state(const ResumeState& in) override;
   bool resumes_exactly() const override { return true; }
-  // Central differences: 2/ω_max of the tangent and mass at the state set last (computed
-  // by set_state); +∞ for HHT.
+  // Central differences: 2/ω_max of the tangent and mass at the first state set (computed
+  // by that set_state); +∞ for HHT.
   double stable_step() const override;
   std::string stable_step_reason() const override;
 

@@ -127,7 +127,7 @@ class TimeIntegrator {
   }
 
   // Not collective. After set_state(): the longest step the method is stable for from the
-  // current state (an explicit method's 2/ω_max), +∞ for the unconditionally stable ones;
+  // initial state (an explicit method's 2/ω_max), +∞ for the unconditionally stable ones;
   // the driver refuses a longer fixed step and caps adaptive ones there.
   virtual double stable_step() const { return std::numeric_limits<double>::infinity(); }
   // Not collective. Why stable_step() is what it is, for the driver's message.
