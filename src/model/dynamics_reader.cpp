@@ -23,7 +23,7 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
                  "error_estimate", "newton", "newton_rtol", "newton_atol", "max_newton_iterations",
-                 "linear_algebra", "local_newton", "tangent_every"});
+                 "linear_algebra", "local_newton", "tangent_every", "order"});
   const Field type = in.child("type");
   o.type = type.text_or(o.type);
   const IntegratorType* facts = find_integrator_type(o.type);
@@ -47,6 +47,13 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
     fail_if_present(stages, "'stages' applies to the implicit Runge-Kutta types (" + irk_names +
                                 "), not to " + o.type);
   }
+  const Field order = in.child("order");
+  if (facts->takes_order)
+    o.order = static_cast<int>(order.integer_or(o.order, IntRange::between(1, 5)));
+  else
+    fail_if_present(order,
+                    "'order' applies to integrator type bdf only (park is of order 2; "
+                    "the Runge-Kutta types take 'stages')");
   const Field alpha = in.child("alpha");
   // petsc: HHT's alpha mapped onto -ts_type alpha2 (ignored by the other TS types).
   if (facts->takes_alpha)

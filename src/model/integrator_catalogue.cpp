@@ -18,7 +18,7 @@ constexpr std::string_view kExplicitFirstStage =
     "matrix)";
 constexpr std::string_view kRadauFilter = "its filter would need RADAU5's index-3 treatment";
 
-constexpr std::array<IntegratorType, 8> kTypes{{
+constexpr std::array<IntegratorType, 10> kTypes{{
     {.name = "hht",
      .alias = "",
      .method = M::hht,
@@ -68,6 +68,19 @@ constexpr std::array<IntegratorType, 8> kTypes{{
      .max_stages = 3,
      .decoupled_refusal = "A has a triple eigenvalue (not diagonalisable)",
      .takes_newton = true},
+    {.name = "bdf",
+     .alias = "",
+     .method = M::multistep,
+     .embedded = E::always,
+     .takes_newton = true,
+     .takes_order = true,
+     .multistep = true},
+    {.name = "park",
+     .alias = "",
+     .method = M::multistep,
+     .embedded = E::always,
+     .takes_newton = true,
+     .multistep = true},
     {.name = "petsc",
      .alias = "",
      .method = M::petsc_ts,
@@ -181,6 +194,19 @@ std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& opti
                                                    embedded_owners() +
                                                    " have); use step_doubling or auto"};
   }
+  if (type->multistep && options.adaptive && options.error_estimate == "step_doubling")
+    return IntegratorRefusal{
+        "error_estimate",
+        name +
+            " is a multistep method: step doubling's return to a step's start would restart "
+            "its history every step; use embedded or auto (its own estimate)"};
+  if (type->takes_order && options.order > 2 && !options.adaptive)
+    return IntegratorRefusal{
+        "order", "bdf of order " + std::to_string(options.order) +
+                     " needs adaptive: true: it starts at order 1 and climbs a step at a time, and "
+                     "with fixed steps that start's error (of order dt^2) bounds the whole run's "
+                     "accuracy; with adaptive steps the error control takes small first steps; "
+                     "or use order 1 or 2"};
   if (irk && options.linear_algebra == "decoupled") {
     std::string why;
     if (options.newton == "full")

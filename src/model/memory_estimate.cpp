@@ -70,7 +70,10 @@ double integrator_factor_multiple(const Model& model) {
   if (model.analysis != AnalysisType::dynamic) return 2.0;  // tangent + stability LDLᵀ
   const IntegratorOptions& in = model.dynamic_options.integrator;
   // Dynamics also finds the static equilibrium first (2), but frees it before stepping.
-  if (in.type == "hht" || in.type == "central_difference" || in.type == "petsc") return 2.0;
+  // One system-sized factorisation like HHT's: the one-step types and the multistep ones.
+  if (in.type == "hht" || in.type == "central_difference" || in.type == "petsc" ||
+      in.type == "bdf" || in.type == "park")
+    return 2.0;
   // Decoupled: a real block and complex ones (16-byte entries, more fill), measured on a
   // 200 000-element cable at twice HHT's per stage pair; coupled: the sn × sn system.
   const double s = in.stages;

@@ -30,3 +30,13 @@ def midpoint(path):
 def closed_form_miss(t, z):
     """Largest distance of z(t) from a cos(2 pi f_1 t), over the amplitude."""
     return np.abs(z - a * np.cos(2 * math.pi * f1 * t)).max() / a
+
+
+def reference_miss(t, z, t_ref, z_ref):
+    """Largest distance of z from z_ref at their common sample times, over the amplitude,
+    and how many times they share."""
+    common = [(i, int(np.argmin(abs(t_ref - tc)))) for i, tc in enumerate(t)]
+    common = [(i, j) for i, j in common if abs(t_ref[j] - t[i]) < 1e-9]
+    if not common:
+        return float("inf"), 0
+    return max(abs(z[i] - z_ref[j]) for i, j in common) / a, len(common)

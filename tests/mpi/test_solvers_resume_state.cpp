@@ -16,6 +16,7 @@
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
@@ -110,6 +111,22 @@ TEST(ResumeState, HhtWithContactAndLocalNewtonContinuesBitForBit) {
   expect_exact_continuation(
       [&] { return std::make_unique<solvers::HhtIntegrator>(system, options); }, q.get(), v.get(),
       2e-4, 60, 60);
+}
+
+// Park's method keeps three points of history and its matrix's w₀: all of it travels.
+TEST(ResumeState, ParkWithContactContinuesBitForBit) {
+  catena::test::ensure_petsc();
+  const model::Model m =
+      model::parse_scene(catena::test::pantograph_on_wire_scene(13.0), "contact.yaml");
+  assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  solvers::StaticSolver(system, m.static_options).solve(q.get());
+  solvers::MultistepOptions options;
+  options.family = solvers::MultistepFamily::park;
+  expect_exact_continuation(
+      [&] { return std::make_unique<solvers::MultistepIntegrator>(system, options); }, q.get(),
+      v.get(), 2e-4, 60, 60);
 }
 
 TEST(ResumeState, RadauContinuesBitForBit) {

@@ -20,6 +20,7 @@
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"
@@ -62,11 +63,11 @@ model::Model pendulum(Pivot pivot, double amplitude = 0.05, double frequency = 2
 }
 
 struct Method {
-  std::string type;  // "hht" or a tableau family name
+  std::string type;  // "hht", "bdf" (stages: its order), "park" or a tableau family name
   int stages = 0;
 };
 std::string label(const Method& m) {
-  return m.type == "hht" ? "hht" : m.type + "_" + std::to_string(m.stages);
+  return m.type == "hht" || m.type == "park" ? m.type : m.type + "_" + std::to_string(m.stages);
 }
 
 std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSystem& system,
@@ -79,6 +80,17 @@ std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSyste
     o.full_newton = full_newton;
     o.max_newton_iterations = 30;
     return std::make_unique<solvers::HhtIntegrator>(system, o);
+  }
+  if (method.type == "bdf" || method.type == "park") {
+    solvers::MultistepOptions o;
+    o.family =
+        method.type == "park" ? solvers::MultistepFamily::park : solvers::MultistepFamily::bdf;
+    o.order = method.type == "park" ? 2 : method.stages;
+    o.atol = 1e-10;
+    o.rtol = 1e-13;
+    o.full_newton = full_newton;
+    o.max_newton_iterations = 30;
+    return std::make_unique<solvers::MultistepIntegrator>(system, o);
   }
   solvers::IrkOptions o;
   o.family = solvers::parse_tableau_family(method.type);
@@ -170,9 +182,9 @@ std::array<double, 2> node_position(const model::Model& m, const Method& method,
 
 const std::vector<Method>& constrained_methods() {
   static const std::vector<Method> methods{
-      {"hht", 0},          {"gauss", 1},        {"gauss", 2},
-      {"radau_iia", 1},    {"radau_iia", 2},    {"radau_iia", 3},
-      {"lobatto_iiic", 2}, {"lobatto_iiic", 3}, {"sdirk", 3}};
+      {"hht", 0},       {"gauss", 1},     {"gauss", 2},        {"radau_iia", 1},
+      {"radau_iia", 2}, {"radau_iia", 3}, {"lobatto_iiic", 2}, {"lobatto_iiic", 3},
+      {"sdirk", 3},     {"bdf", 2},       {"park", 0}};
   return methods;
 }
 
@@ -292,7 +304,8 @@ TEST(ConstraintStatics, MultiplierEqualsTheEliminatedSupportReaction) {
   EXPECT_GT(std::abs(reaction[2]), 10.0) << "the pin carries about half the rope's weight";
 }
 
-// Observed orders on the driven pendulum, pair n = 256, 512 steps over 0.25 s against a
+// Observed orders on the driven pendulum, pair n = 256, 512 steps (512, 1024 for the
+// multistep methods) over 0.25 s against a
 // Radau IIA (s = 5, 2048 steps) reference: positions at the method's order p; the pivot
 // force λ at p too (the tableaus but Radau IIA: from the acceleration equations at the
 // step end), and for Radau IIA (its last stage) at least s − 1, the index-3 order
@@ -306,13 +319,16 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
   const Result ref = run(m, {"radau_iia", 5}, t_end, 2048, true);
   for (const Method& method : constrained_methods()) {
     const int p =
-        method.type == "hht"
+        method.type == "hht" || method.type == "park" || method.type == "bdf"
             ? 2
             : solvers::make_tableau(solvers::parse_tableau_family(method.type), method.stages)
                   .order;
     double eq[2], el[2];
     int k = 0;
-    for (int n : {256, 512}) {
+    // BDF-2 and Park start with a backward Euler step and carry larger error constants:
+    // preasymptotic at 256 steps (BDF-2's pivot force 1.67), asymptotic from 512.
+    const bool multistep = method.type == "bdf" || method.type == "park";
+    for (int n : {multistep ? 512 : 256, multistep ? 1024 : 512}) {
       const Result r = run(m, method, t_end, n, true);
       eq[k] = std::hypot(r.x - ref.x, r.z - ref.z);
       el[k] = std::hypot(r.lambda_x - ref.lambda_x, r.lambda_z - ref.lambda_z);

@@ -40,7 +40,7 @@ TEST(IntegratorCatalogue, RadauIsAnAliasOfRadauIia) {
   EXPECT_EQ(find_integrator_type(""), nullptr);
   EXPECT_EQ(catena::model::integrator_type_list(),
             "hht, central_difference, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, "
-            "sdirk, petsc");
+            "sdirk, bdf, park, petsc");
   EXPECT_EQ(catena::model::integrator_names(IntegratorMethod::irk),
             "gauss, radau, lobatto_iiia, lobatto_iiic, sdirk");
 }
@@ -120,8 +120,8 @@ TEST(IntegratorCatalogue, RefusesEmbeddedEstimateWhereThereIsNone) {
   ASSERT_TRUE(refusal.has_value());
   EXPECT_EQ(refusal->key, "error_estimate");
   EXPECT_EQ(refusal->why,
-            "radau_iia with 2 stages has no embedded error estimate (hht, central_difference "
-            "and radau with 1, 3 or 5 stages have); use step_doubling or auto");
+            "radau_iia with 2 stages has no embedded error estimate (hht, central_difference, "
+            "radau with 1, 3 or 5 stages, bdf and park have); use step_doubling or auto");
   o.type = "hht";
   EXPECT_FALSE(refuse_integrator(o, 0).has_value());
   EXPECT_FALSE(refuse_integrator(o, 2).has_value());
@@ -137,14 +137,50 @@ TEST(IntegratorCatalogue, RefusesConstraintsForLobattoIiiaAndPetsc) {
                                 "' takes no Lagrange-multiplier constraints (the scene has 2)"),
               std::string::npos)
         << refusal->why;
-    EXPECT_NE(refusal->why.find("with constraints use hht, gauss, radau, lobatto_iiic or sdirk"),
+    EXPECT_NE(refusal->why.find(
+                  "with constraints use hht, gauss, radau, lobatto_iiic, sdirk, bdf or park"),
               std::string::npos)
         << refusal->why;
   }
   EXPECT_NE(refuse_integrator(options("lobatto_iiia", 3), 1)->why.find("explicit first stage"),
             std::string::npos);
-  for (const char* name : {"hht", "gauss", "radau", "lobatto_iiic", "sdirk"})
+  for (const char* name : {"hht", "gauss", "radau", "lobatto_iiic", "sdirk", "bdf", "park"})
     EXPECT_FALSE(refuse_integrator(options(name, 3), 4).has_value()) << name;
+}
+
+// The multistep methods: no step doubling (it would restart the history every step), and
+// BDF above order 2 only with adaptive steps (a fixed-step run's start bounds it to 2).
+TEST(IntegratorCatalogue, RefusesStepDoublingAndFixedHighOrderForMultistep) {
+  for (const char* name : {"bdf", "park"}) {
+    IntegratorOptions o = options(name, 3);
+    o.adaptive = true;
+    o.error_estimate = "step_doubling";
+    const auto refusal = refuse_integrator(o, 0);
+    ASSERT_TRUE(refusal.has_value()) << name;
+    EXPECT_EQ(refusal->key, "error_estimate");
+    EXPECT_NE(refusal->why.find(std::string(name) + " is a multistep method"), std::string::npos)
+        << refusal->why;
+    o.error_estimate = "auto";
+    EXPECT_FALSE(refuse_integrator(o, 0).has_value()) << name;
+    o.error_estimate = "embedded";
+    EXPECT_FALSE(refuse_integrator(o, 0).has_value()) << name;
+  }
+  IntegratorOptions o = options("bdf", 3);
+  for (int order = 1; order <= 5; ++order) {
+    o.order = order;
+    o.adaptive = false;
+    const auto refusal = refuse_integrator(o, 0);
+    EXPECT_EQ(refusal.has_value(), order > 2) << order;
+    if (refusal) {
+      EXPECT_EQ(refusal->key, "order");
+      EXPECT_NE(refusal->why.find("needs adaptive: true"), std::string::npos) << refusal->why;
+    }
+    o.adaptive = true;
+    EXPECT_FALSE(refuse_integrator(o, 0).has_value()) << order;
+  }
+  EXPECT_TRUE(type("bdf").takes_order);
+  EXPECT_FALSE(type("park").takes_order);
+  EXPECT_FALSE(type("hht").multistep);
 }
 
 TEST(IntegratorCatalogue, RefusesDecoupledWhereItIsNotExact) {

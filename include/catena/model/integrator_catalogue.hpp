@@ -20,9 +20,10 @@
 namespace catena::model {
 
 enum class IntegratorMethod {
-  hht,       // HhtIntegrator (HHT-α, or central differences)
-  irk,       // IrkIntegrator with the family's Butcher tableau
-  petsc_ts,  // PetscTsIntegrator (the method from -ts_type)
+  hht,        // HhtIntegrator (HHT-α, or central differences)
+  irk,        // IrkIntegrator with the family's Butcher tableau
+  petsc_ts,   // PetscTsIntegrator (the method from -ts_type)
+  multistep,  // MultistepIntegrator (variable-step BDF, Park)
 };
 
 // Where a type has an embedded local error estimate (without it, step doubling serves).
@@ -50,6 +51,11 @@ struct IntegratorType {
   bool takes_newton = false;             // newton: simplified | full
   bool takes_local_newton = false;       // local_newton
   bool takes_linearly_implicit = false;  // newton: linearly_implicit (and tangent_every)
+  bool takes_order = false;              // order (BDF: 1 to 5)
+  // A multistep method: its steps depend on those before, so step doubling (whose return
+  // to a step's start would restart the history every step) is refused, and orders above
+  // 2 need adaptive steps (the start's low-order steps bound a fixed-step run to order 2).
+  bool multistep = false;
 };
 
 // Every type, in the order messages list them.
@@ -85,7 +91,8 @@ struct IntegratorRefusal {
 // refuse for a model with `constraints` Lagrange-multiplier constraints, or nothing:
 // constraints with a type that takes none (key "type"), error_estimate: embedded where
 // there is no embedded estimate ("error_estimate"), linear_algebra: decoupled where it is
-// not exact ("linear_algebra").
+// not exact ("linear_algebra"), step doubling for a multistep method ("error_estimate"), a
+// BDF order above 2 with fixed steps ("order").
 std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& options,
                                                    std::size_t constraints);
 

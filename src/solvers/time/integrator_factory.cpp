@@ -7,6 +7,7 @@
 #include "catena/model/unknown_kinds.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "catena/solvers/time/petsc_ts/petsc_ts_integrator.hpp"
 
 namespace catena::solvers {
@@ -46,6 +47,16 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     h.linearly_implicit = o.newton == "linearly_implicit";
     h.tangent_every = o.tangent_every;
     return std::make_unique<HhtIntegrator>(system, h);
+  }
+  if (o.type == "bdf" || o.type == "park") {
+    MultistepOptions m;
+    m.family = o.type == "park" ? MultistepFamily::park : MultistepFamily::bdf;
+    m.order = o.order;
+    m.rtol = o.newton_rtol;
+    m.atol = o.newton_atol;
+    m.max_newton_iterations = o.max_newton_iterations;
+    m.full_newton = o.newton == "full";
+    return std::make_unique<MultistepIntegrator>(system, m);
   }
   if (o.type == "petsc") {
     // The TS method itself comes from the options database (-ts_type, ...).

@@ -118,12 +118,16 @@ class Driver {
         release_pending_samples();
       }
       if (c.adaptive) {
+        // A multistep method's steps may not grow faster than its formula stays zero-stable.
+        const double growth = std::min(c.growth, in_.max_step_ratio());
         const double factor =
             a.error > 0.0
-                ? std::min(c.growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
-                : c.growth;
-        // Keep h (and its factorisation) for small changes.
-        h = (factor >= 1.0 && factor <= 1.2) ? step : step * factor;
+                ? std::min(growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
+                : growth;
+        // Keep h (and its factorisation) for small changes, unless the growth limit is as
+        // small as that (BDF-4 and 5): then every allowed growth is taken.
+        const double hold = std::min(1.2, 0.5 * (1.0 + growth));
+        h = (factor >= 1.0 && factor <= hold) ? step : step * factor;
       } else {
         h = c.dt;
       }

@@ -132,6 +132,11 @@ class TimeIntegrator {
   virtual double stable_step() const { return std::numeric_limits<double>::infinity(); }
   // Not collective. Why stable_step() is what it is, for the driver's message.
   virtual std::string stable_step_reason() const { return {}; }
+  // Not collective. The largest ratio h_{n+1}/h_n of successive steps the method takes
+  // safely: a variable-step multistep formula loses zero-stability when its steps grow
+  // faster (BDF-2 beyond 1 + √2); the driver's adaptive growth stays below it. +∞ for
+  // one-step methods.
+  virtual double max_step_ratio() const { return std::numeric_limits<double>::infinity(); }
 
   // Restarts (resume_state.hpp). Not collective. After accept(): what this integrator
   // carries to its next step beyond (t, q, v, a), its counters included; the vectors are

@@ -10,7 +10,9 @@
 // (HHT: 3, Radau IIA: s + 1), or step doubling for any method — one step of h against two
 // of h/2, err = ‖q_{h/2,h/2} − q_h‖ / (2^p − 1), k = p + 1, and the two half steps are
 // kept. A step change within [1, 1.2]·h is not made, so the factorisation is reused
-// (RADAU5's rule). A Newton failure halves h. Fixed steps: h = dt (the last step is cut
+// (RADAU5's rule). Growth is capped at the integrator's max_step_ratio() (a multistep
+// formula's zero-stability limit); where that is below 1.2 the kept band shrinks to
+// [1, (1 + limit)/2]. A Newton failure halves h. Fixed steps: h = dt (the last step is cut
 // to land on t_end); a Newton failure halves h for that step and dt resumes afterwards;
 // the observer hears of each such cut and the report counts them, since a dt that keeps
 // failing costs a failed solve per step and says the step is too long.

@@ -1,0 +1,118 @@
+// The multistep formulas (solvers/time/multistep/multistep_formulas.hpp) against
+// independent truth: at constant steps BDF-k's weights are the published table
+// (Hairer & Wanner II, V.1, Table 1.1: Σ_{j=1..k} (1/j) ∇^j y), Park's are
+// (10, −15, 6, −1)/(6h) (Park 1975); on an irregular grid every formula is exact for the
+// polynomials of its degree and the predictor's error has the leading term of Hermite
+// interpolation, which the integrator's error estimate rests on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "catena/solvers/time/multistep/multistep_formulas.hpp"
+
+namespace solvers = catena::solvers;
+
+namespace {
+
+// t₀ = t_new, then past times with the given steps back from it.
+std::vector<double> grid(double t_new, const std::vector<double>& steps) {
+  std::vector<double> t{t_new};
+  for (double h : steps) t.push_back(t.back() - h);
+  return t;
+}
+
+double power(double t, int m) { return std::pow(t, m); }
+double power_derivative(double t, int m) { return m == 0 ? 0.0 : m * std::pow(t, m - 1); }
+
+}  // namespace
+
+TEST(MultistepFormulas, BdfWeightsAtConstantStepsAreTheTable) {
+  const double h = 0.01;
+  const std::vector<double> t = grid(2.0, {h, h, h, h, h});
+  // h·w_j for k = 1 ... 5.
+  const std::vector<std::vector<double>> table{{1.0, -1.0},
+                                               {1.5, -2.0, 0.5},
+                                               {11.0 / 6, -3.0, 1.5, -1.0 / 3},
+                                               {25.0 / 12, -4.0, 3.0, -4.0 / 3, 0.25},
+                                               {137.0 / 60, -5.0, 5.0, -10.0 / 3, 1.25, -0.2}};
+  for (int k = 1; k <= 5; ++k) {
+    const std::vector<double> w = solvers::bdf_weights(t, k);
+    ASSERT_EQ(w.size(), static_cast<std::size_t>(k + 1));
+    for (int j = 0; j <= k; ++j)
+      EXPECT_NEAR(h * w[static_cast<std::size_t>(j)],
+                  table[static_cast<std::size_t>(k - 1)][static_cast<std::size_t>(j)], 1e-11)
+          << "k = " << k << ", j = " << j;
+  }
+}
+
+TEST(MultistepFormulas, ParkWeightsAtConstantStepsArePark1975) {
+  const double h = 2.5e-4;
+  const std::vector<double> w = solvers::park_weights(grid(1.0, {h, h, h}));
+  const double expected[] = {10.0, -15.0, 6.0, -1.0};
+  ASSERT_EQ(w.size(), 4u);
+  for (std::size_t j = 0; j < 4; ++j) EXPECT_NEAR(6.0 * h * w[j], expected[j], 1e-10) << j;
+}
+
+TEST(MultistepFormulas, VariableStepFormulasAreExactForTheirDegree) {
+  // An irregular grid (ratios 0.5 to 3) in microseconds and in seconds: the scaling inside
+  // interpolation_weights keeps both accurate.
+  for (const double unit : {1e-6, 1.0}) {
+    const std::vector<double> steps{1.0 * unit, 3.0 * unit, 0.5 * unit, 2.0 * unit, 1.5 * unit};
+    const double t_new = 10.0 * unit;
+    const std::vector<double> t = grid(t_new, steps);
+    // Polynomials in (t − c)/unit, centred off the grid.
+    const double c = 3.0 * unit;
+    for (int k = 1; k <= 5; ++k) {
+      const std::vector<double> w = solvers::bdf_weights(t, k);
+      for (int m = 0; m <= k; ++m) {
+        double d = 0.0;
+        for (int j = 0; j <= k; ++j)
+          d += w[static_cast<std::size_t>(j)] *
+               power((t[static_cast<std::size_t>(j)] - c) / unit, m);
+        const double exact = power_derivative((t_new - c) / unit, m) / unit;
+        EXPECT_NEAR(d * unit, exact * unit, 1e-9 * (1 + std::abs(exact * unit)))
+            << "BDF-" << k << " on degree " << m << ", unit " << unit;
+      }
+    }
+    // The predictor: s y'(t₁) + Σ c_j y(t_j) = y(t₀) for degree ≤ p.
+    for (int p = 1; p <= 5; ++p) {
+      const std::vector<double> s = solvers::hermite_predictor_weights(t, p);
+      ASSERT_EQ(s.size(), static_cast<std::size_t>(p + 1));
+      for (int m = 0; m <= p; ++m) {
+        double y = s[0] * power_derivative((t[1] - c) / unit, m) / unit;
+        for (int j = 1; j <= p; ++j)
+          y += s[static_cast<std::size_t>(j)] *
+               power((t[static_cast<std::size_t>(j)] - c) / unit, m);
+        const double exact = power((t_new - c) / unit, m);
+        EXPECT_NEAR(y, exact, 1e-9 * (1 + std::abs(exact)))
+            << "predictor p = " << p << ", m = " << m;
+      }
+    }
+  }
+}
+
+// The integrator's error estimate takes y(t₀) − ŷ = y^(p+1)/(p+1)! · (t₀ − t₁)² Π_{j=2..p}
+// (t₀ − t_j) (Hermite's remainder, t₁ a double node); checked on y = t^(p+1), whose
+// (p+1)-th derivative is (p+1)!, so the remainder is exactly the product.
+TEST(MultistepFormulas, PredictorErrorIsHermitesRemainder) {
+  const std::vector<double> t = grid(1.0, {0.1, 0.25, 0.05, 0.2, 0.15});
+  for (int p = 1; p <= 5; ++p) {
+    const std::vector<double> s = solvers::hermite_predictor_weights(t, p);
+    double y = s[0] * power_derivative(t[1], p + 1);
+    for (int j = 1; j <= p; ++j)
+      y += s[static_cast<std::size_t>(j)] * power(t[static_cast<std::size_t>(j)], p + 1);
+    double product = (t[0] - t[1]) * (t[0] - t[1]);
+    for (int j = 2; j <= p; ++j) product *= t[0] - t[static_cast<std::size_t>(j)];
+    EXPECT_NEAR(power(t[0], p + 1) - y, product, 1e-12) << "p = " << p;
+  }
+}
+
+TEST(MultistepFormulas, RefusesDataThatDoNotDetermineThePolynomial) {
+  const std::vector<solvers::InterpolationDatum> repeated{{1.0, 0}, {1.0, 0}};
+  EXPECT_THROW(solvers::interpolation_weights(repeated, 2.0, 1), std::invalid_argument);
+  const std::vector<double> t{1.0, 0.9};
+  EXPECT_THROW(solvers::bdf_weights(t, 2), std::invalid_argument);
+  EXPECT_THROW(solvers::bdf_weights(t, 0), std::invalid_argument);
+}
