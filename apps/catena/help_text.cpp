@@ -167,7 +167,8 @@ const CommandHelp* commands() {
   --vary KEY=V1,V2,...  a scene key and its values (repeatable: every combination runs);
                         e.g. --vary integrator.dt=1e-3,5e-4 --vary integrator.type=hht,radau
   --methods M1,M2       method presets, each at its own steps: hht (HHT-alpha, 1x the
-                        scene's dt), radau (Radau IIA s = 3, 4x), linear (linear
+                        scene's dt), radau (Radau IIA s = 3, 4x), park (Park's
+                        multistep method, 1x), bdf (BDF-2, 1x), linear (linear
                         structure, linearly implicit HHT, 1x), modal (modal model, 1x;
                         its modes solved once, DIR/modal_basis.h5); all: every one
   --steps F1,F2,...     with --methods: each method's step times these (default 2,1,0.5)
@@ -215,6 +216,7 @@ mat_mumps_icntl_N, ...):
   -static_              static equilibrium (Newton along the load path)
   -static_stability_    its stability check (LDL' of the tangent at each equilibrium)
   -hht_                 HHT-alpha's Newton solve (dynamics, integrator.type: hht)
+  -multistep_           bdf's and park's Newton solve (integrator.type: bdf, park)
   -irk_                 implicit Runge-Kutta stage Newton; -irk_block<k>_ its decoupled
                         blocks, -irk_estimate_ the embedded error estimate's solve
   -ts_                  integrator.type: petsc (e.g. -ts_type bdf)

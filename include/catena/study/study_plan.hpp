@@ -88,7 +88,7 @@ struct MethodPreset {
   const char* keys[4];  // "key=value" overrides (nullptr-terminated)
 };
 
-// Not collective. hht, radau, linear, modal (`all` is every one).
+// Not collective. hht, radau, park, bdf, linear, modal (`all` is every one).
 std::vector<MethodPreset> method_presets();
 
 // What --methods expands to, besides the presets' keys.
