@@ -48,12 +48,12 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
                                 "), not to " + o.type);
   }
   const Field order = in.child("order");
-  if (facts->takes_order)
-    o.order = static_cast<int>(order.integer_or(o.order, IntRange::between(1, 5)));
+  if (facts->max_order > 0)
+    o.order = static_cast<int>(order.integer_or(o.order, IntRange::between(1, facts->max_order)));
   else
     fail_if_present(order,
-                    "'order' applies to integrator type bdf only (park is of order 2; "
-                    "the Runge-Kutta types take 'stages')");
+                    "'order' applies to integrator types bdf and abm only (park is of "
+                    "order 2; the Runge-Kutta types take 'stages')");
   const Field alpha = in.child("alpha");
   // petsc: HHT's alpha mapped onto -ts_type alpha2 (ignored by the other TS types).
   if (facts->takes_alpha)
@@ -99,7 +99,9 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
           "leaves the multipliers' rows undefined); this scene has " +
           std::to_string(constraints) + "; use simplified or full");
   } else {
-    fail_if_present(newton, "'newton' applies to hht and the implicit Runge-Kutta types");
+    fail_if_present(newton,
+                    "'newton' applies to hht, central_difference, bdf, park and the "
+                    "implicit Runge-Kutta types");
   }
   const Field tangent_every = in.child("tangent_every");
   if (o.newton == "linearly_implicit")
@@ -128,6 +130,11 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
     fail_if_present(linear_algebra, "'linear_algebra' applies to the implicit Runge-Kutta types (" +
                                         irk_names + "), not to " + o.type);
   }
+  // abm is explicit: no Newton iteration for these to set.
+  if (facts->name == "abm")
+    for (const char* key : {"newton_rtol", "newton_atol", "max_newton_iterations"})
+      fail_if_present(in.child(key), std::string("'") + key +
+                                         "' does not apply to abm (explicit: no Newton iteration)");
   o.newton_rtol = in.child("newton_rtol")
                       .real_or(o.newton_rtol, RealRange::between(0.0, false, 1e-3, true, ""));
   o.newton_atol = in.child("newton_atol").real_or(o.newton_atol, RealRange::positive("N"));

@@ -18,7 +18,7 @@ constexpr std::string_view kExplicitFirstStage =
     "matrix)";
 constexpr std::string_view kRadauFilter = "its filter would need RADAU5's index-3 treatment";
 
-constexpr std::array<IntegratorType, 10> kTypes{{
+constexpr std::array<IntegratorType, 11> kTypes{{
     {.name = "hht",
      .alias = "",
      .method = M::hht,
@@ -73,13 +73,21 @@ constexpr std::array<IntegratorType, 10> kTypes{{
      .method = M::multistep,
      .embedded = E::always,
      .takes_newton = true,
-     .takes_order = true,
+     .max_order = 5,
      .multistep = true},
     {.name = "park",
      .alias = "",
      .method = M::multistep,
      .embedded = E::always,
      .takes_newton = true,
+     .multistep = true},
+    {.name = "abm",
+     .alias = "",
+     .method = M::multistep,
+     .embedded = E::always,
+     .constraint_refusal = "an explicit method on the acceleration-level constraints lets the "
+                           "positions drift from them",
+     .max_order = 2,
      .multistep = true},
     {.name = "petsc",
      .alias = "",
@@ -200,7 +208,7 @@ std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& opti
         name +
             " is a multistep method: step doubling's return to a step's start would restart "
             "its history every step; use embedded or auto (its own estimate)"};
-  if (type->takes_order && options.order > 2 && !options.adaptive)
+  if (type->name == "bdf" && options.order > 2 && !options.adaptive)
     return IntegratorRefusal{
         "order", "bdf of order " + std::to_string(options.order) +
                      " needs adaptive: true: it starts at order 1 and climbs a step at a time, and "

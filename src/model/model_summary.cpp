@@ -197,7 +197,7 @@ std::string describe(const Model& model, int n_ranks_running) {
     if (i.type == "hht") {
       method += " alpha ";
       method += format_number(i.alpha);
-    } else if (i.type == "bdf") {
+    } else if (i.type == "bdf" || i.type == "abm") {
       method += " order ";
       method += std::to_string(i.order);
     } else if (i.type != "petsc" && i.type != "central_difference" && i.type != "park") {

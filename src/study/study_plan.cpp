@@ -80,7 +80,7 @@ std::vector<std::string> keys_not_taken_by(const std::string& type) {
     keys.emplace_back("integrator.tangent_every");
   }
   if (!t->takes_local_newton) keys.emplace_back("integrator.local_newton");
-  if (!t->takes_order) keys.emplace_back("integrator.order");
+  if (t->max_order == 0) keys.emplace_back("integrator.order");
   return keys;
 }
 

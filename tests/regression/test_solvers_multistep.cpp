@@ -7,7 +7,10 @@
 //   coefficients, not from the code under test): decay for the A-stable BDF-2 and Park,
 //   growth for BDF-3 at hω = 1 (not A-stable: Dahlquist's barrier);
 // - the embedded error estimate against the true local error of one step taken from the
-//   exact solution's history.
+//   exact solution's history;
+// - Adams–Bashforth–Moulton (PECE, AdamsPeceIntegrator) the same way: orders 1 and 2, the
+//   growth per step of its recurrence (decay inside its stability limit hω = 1.28, growth
+//   outside), Milne's estimate, and the limit it reports from ω_max and the damping rate.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -18,6 +21,7 @@
 #include <string>
 
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/solvers/time/multistep/adams_pece_integrator.hpp"
 #include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
@@ -218,6 +222,147 @@ TEST(Multistep, EmbeddedEstimateMatchesTheLocalError) {
                   method.label, wh, estimate, local, estimate / local);
       EXPECT_GT(estimate / local, 0.9) << method.label << " at omega h = " << wh;
       EXPECT_LT(estimate / local, 1.1) << method.label << " at omega h = " << wh;
+    }
+  }
+}
+
+namespace {
+
+// An integrator of either kind, for the tests shared by both.
+std::unique_ptr<solvers::TimeIntegrator> make_adams(catena::assembly::SecondOrderSystem& system,
+                                                    int order) {
+  solvers::AdamsPeceOptions o;
+  o.order = order;
+  return std::make_unique<solvers::AdamsPeceIntegrator>(system, o);
+}
+
+// The largest root of PECE's recurrence for y' = z y, AB weights b, AM weights a (constant
+// steps, published coefficients), over z = ±i hω.
+double pece_largest_root(const std::vector<double>& b, const std::vector<double>& a, double wh) {
+  const std::complex<double> z(0.0, wh);
+  const int k = static_cast<int>(b.size());
+  // c[i]: coefficient of y_{n+1−i}: y_{n+1} = y_n + z a₀ (y_n + z Σ b_j y_{n−j}) + z Σ a_j
+  // y_{n+1−j}.
+  std::vector<std::complex<double>> c(static_cast<std::size_t>(k + 1), 0.0);
+  c[0] = 1.0;
+  c[1] -= 1.0 + z * a[0];
+  for (int j = 0; j < k; ++j) c[static_cast<std::size_t>(1 + j)] -= z * a[0] * z * b[j];
+  for (int j = 1; j < k; ++j) c[static_cast<std::size_t>(j)] -= z * a[j];
+  Eigen::MatrixXcd companion = Eigen::MatrixXcd::Zero(k, k);
+  for (int j = 0; j < k; ++j) companion(0, j) = -c[static_cast<std::size_t>(j + 1)] / c[0];
+  for (int i = 1; i < k; ++i) companion(i, i - 1) = 1.0;
+  double largest = 0.0;
+  for (const std::complex<double>& r : companion.eigenvalues())
+    largest = std::max(largest, std::abs(r));
+  return largest;
+}
+
+}  // namespace
+
+TEST(AdamsPece, ObservedOrdersOnTheOscillator) {
+  catena::test::ensure_petsc();
+  for (int order : {1, 2}) {
+    std::vector<double> errors;
+    for (int n : {100, 200, 400}) {
+      Oscillator o;
+      catena::VecHandle q = o.state(kX0, 0.0);
+      auto in = make_adams(o.system, order);
+      in->set_state(0.0, q.get(), o.velocity(), nullptr);
+      catena::test::advance_fixed(*in, 1.0 / n, n);
+      errors.push_back(
+          std::hypot(o.x(in->q()) - exact_x(1.0), (o.x(in->v()) - exact_v(1.0)) / kOmega));
+    }
+    const double p = std::log2(errors[1] / errors[2]);
+    std::printf("abm%d  errors %.3e %.3e %.3e m, observed order %.3f\n", order, errors[0],
+                errors[1], errors[2], p);
+    EXPECT_NEAR(p, order, 0.1) << order;
+  }
+}
+
+TEST(AdamsPece, GrowthPerStepIsTheRecurrencesRootAndTheLimitIsReported) {
+  catena::test::ensure_petsc();
+  const std::vector<double> bashforth{1.5, -0.5}, moulton{0.5, 0.5};  // AB-2, trapezoid
+  for (const double wh : {0.5, 1.2, 1.35}) {
+    Oscillator o;
+    catena::VecHandle q = o.state(kX0, 0.0);
+    auto in = make_adams(o.system, 2);
+    in->set_state(0.0, q.get(), o.velocity(), nullptr);
+    // The limit 1.28/ω_max (no damping: ν_max = 0).
+    EXPECT_NEAR(in->stable_step() * kOmega, 1.28, 1e-4);
+    const double h = wh / kOmega;
+    std::vector<double> x{o.x(in->q())};
+    for (int i = 0; i < 120; ++i) {
+      catena::test::advance_fixed(*in, h, 1);
+      x.push_back(o.x(in->q()));
+    }
+    auto casorati = [&](int n) {
+      return x[static_cast<std::size_t>(n)] * x[static_cast<std::size_t>(n)] -
+             x[static_cast<std::size_t>(n + 1)] * x[static_cast<std::size_t>(n - 1)];
+    };
+    const double measured = std::pow(casorati(110) / casorati(50), 1.0 / (2.0 * 60));
+    const double expected = pece_largest_root(bashforth, moulton, wh);
+    std::printf("abm2  omega h = %.2f: growth per step %.6f, recurrence root %.6f\n", wh, measured,
+                expected);
+    EXPECT_NEAR(measured, expected, 1e-4) << wh;
+    EXPECT_EQ(measured > 1.0, wh > 1.28) << wh;
+  }
+  // With a dashpot whose rate c/m exceeds ω, the limit is set by the damping rate.
+  catena::model::Model m = catena::test::oscillator(kMass, kOmega);
+  const double c = 3.0 * kMass * kOmega;  // ν = c/m = 3ω
+  m.elastic_supports.front().damping = catena::Vec3(c, c, c);
+  catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  auto in = make_adams(system, 1);
+  in->set_state(0.0, q.get(), v.get(), nullptr);
+  EXPECT_NEAR(in->stable_step(), 1.0 / (c / kMass), 1e-4 / (c / kMass));
+}
+
+TEST(AdamsPece, MilneEstimateMatchesTheLocalError) {
+  catena::test::ensure_petsc();
+  constexpr double phase = std::numbers::pi / 4;
+  for (int order : {1, 2}) {
+    for (const double wh : {0.02, 0.01}) {
+      const double h = wh / kOmega;
+      Oscillator o;
+      catena::VecHandle q = o.state(exact_x(0.0, phase), exact_v(0.0, phase));
+      auto first = make_adams(o.system, order);
+      first->set_state(0.0, q.get(), o.velocity(), nullptr);
+      catena::test::advance_fixed(*first, h, 4);
+      catena::solvers::ResumeState saved;
+      first->save_resume_state(saved);
+      // The exact solution's v and a at the history's times.
+      std::vector<catena::VecHandle> exact;
+      for (std::int64_t j = 0; j < saved.integer("abm.known"); ++j) {
+        const std::string i = std::to_string(j);
+        const double t = saved.real("abm.t" + i);
+        exact.push_back(o.state(exact_v(t, phase), -kOmega * kOmega * exact_x(t, phase)));
+        saved.vectors["abm.v" + i] = exact.back().get();
+        exact.push_back(o.system.create_vector());
+        VecCopy(o.velocity(), exact.back().get());
+        saved.vectors["abm.a" + i] = exact.back().get();
+      }
+      const double t0 = saved.real("abm.t0");
+      catena::VecHandle q0 = o.state(exact_x(t0, phase), exact_v(t0, phase));
+      auto in = make_adams(o.system, order);
+      in->set_state(t0, q0.get(), o.velocity(), nullptr);
+      in->restore_resume_state(saved);
+      solvers::ErrorTolerance tol;
+      tol.rtol = 1e-300;
+      tol.atol = 1.0;
+      catena::VecHandle reference = o.system.create_vector();
+      o.system.reference_state(reference.get());
+      tol.reference = reference.get();
+      const solvers::StepOutcome out = in->attempt(h, &tol);
+      ASSERT_TRUE(out.converged);
+      PetscInt size = 0;
+      VecGetSize(in->q(), &size);
+      const double estimate = out.error * std::sqrt(static_cast<double>(size));
+      const double local = std::abs(o.x(in->pending_q()) - exact_x(t0 + h, phase));
+      std::printf("abm%d  omega h = %.2f: estimate %.3e m, local error %.3e m, ratio %.3f\n", order,
+                  wh, estimate, local, estimate / local);
+      EXPECT_GT(estimate / local, 0.8) << order << " at omega h = " << wh;
+      EXPECT_LT(estimate / local, 1.25) << order << " at omega h = " << wh;
     }
   }
 }

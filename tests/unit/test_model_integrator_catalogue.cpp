@@ -40,7 +40,7 @@ TEST(IntegratorCatalogue, RadauIsAnAliasOfRadauIia) {
   EXPECT_EQ(find_integrator_type(""), nullptr);
   EXPECT_EQ(catena::model::integrator_type_list(),
             "hht, central_difference, gauss, radau (= radau_iia), lobatto_iiia, lobatto_iiic, "
-            "sdirk, bdf, park, petsc");
+            "sdirk, bdf, park, abm, petsc");
   EXPECT_EQ(catena::model::integrator_names(IntegratorMethod::irk),
             "gauss, radau, lobatto_iiia, lobatto_iiic, sdirk");
 }
@@ -121,14 +121,14 @@ TEST(IntegratorCatalogue, RefusesEmbeddedEstimateWhereThereIsNone) {
   EXPECT_EQ(refusal->key, "error_estimate");
   EXPECT_EQ(refusal->why,
             "radau_iia with 2 stages has no embedded error estimate (hht, central_difference, "
-            "radau with 1, 3 or 5 stages, bdf and park have); use step_doubling or auto");
+            "radau with 1, 3 or 5 stages, bdf, park and abm have); use step_doubling or auto");
   o.type = "hht";
   EXPECT_FALSE(refuse_integrator(o, 0).has_value());
   EXPECT_FALSE(refuse_integrator(o, 2).has_value());
 }
 
 TEST(IntegratorCatalogue, RefusesConstraintsForLobattoIiiaAndPetsc) {
-  for (const char* name : {"lobatto_iiia", "petsc", "central_difference"}) {
+  for (const char* name : {"lobatto_iiia", "petsc", "central_difference", "abm"}) {
     EXPECT_FALSE(refuse_integrator(options(name, 3), 0).has_value()) << name;
     const auto refusal = refuse_integrator(options(name, 3), 2);
     ASSERT_TRUE(refusal.has_value()) << name;
@@ -151,7 +151,7 @@ TEST(IntegratorCatalogue, RefusesConstraintsForLobattoIiiaAndPetsc) {
 // The multistep methods: no step doubling (it would restart the history every step), and
 // BDF above order 2 only with adaptive steps (a fixed-step run's start bounds it to 2).
 TEST(IntegratorCatalogue, RefusesStepDoublingAndFixedHighOrderForMultistep) {
-  for (const char* name : {"bdf", "park"}) {
+  for (const char* name : {"bdf", "park", "abm"}) {
     IntegratorOptions o = options(name, 3);
     o.adaptive = true;
     o.error_estimate = "step_doubling";
@@ -178,8 +178,9 @@ TEST(IntegratorCatalogue, RefusesStepDoublingAndFixedHighOrderForMultistep) {
     o.adaptive = true;
     EXPECT_FALSE(refuse_integrator(o, 0).has_value()) << order;
   }
-  EXPECT_TRUE(type("bdf").takes_order);
-  EXPECT_FALSE(type("park").takes_order);
+  EXPECT_EQ(type("bdf").max_order, 5);
+  EXPECT_EQ(type("abm").max_order, 2);
+  EXPECT_EQ(type("park").max_order, 0);
   EXPECT_FALSE(type("hht").multistep);
 }
 

@@ -116,3 +116,26 @@ TEST(MultistepFormulas, RefusesDataThatDoNotDetermineThePolynomial) {
   EXPECT_THROW(solvers::bdf_weights(t, 2), std::invalid_argument);
   EXPECT_THROW(solvers::bdf_weights(t, 0), std::invalid_argument);
 }
+
+// The Adams weights: at constant steps AB-2 (3/2, −1/2)h and the trapezoidal rule (½, ½)h
+// (Hairer, Nørsett & Wanner I, III.1); on an irregular grid exact for the integral of
+// every polynomial of the data's degree.
+TEST(MultistepFormulas, AdamsWeightsIntegrateTheirDegreeExactly) {
+  const double h = 0.02;
+  const std::vector<double> bashforth =
+      solvers::integration_weights(std::vector<double>{1.0, 1.0 - h}, 1.0, 1.0 + h);
+  EXPECT_NEAR(bashforth[0] / h, 1.5, 1e-12);
+  EXPECT_NEAR(bashforth[1] / h, -0.5, 1e-12);
+  const std::vector<double> moulton =
+      solvers::integration_weights(std::vector<double>{1.0 + h, 1.0}, 1.0, 1.0 + h);
+  EXPECT_NEAR(moulton[0] / h, 0.5, 1e-12);
+  EXPECT_NEAR(moulton[1] / h, 0.5, 1e-12);
+  const std::vector<double> t{0.3, 0.1, -0.25, -0.3};
+  const std::vector<double> w = solvers::integration_weights(t, 0.1, 0.4);
+  for (int m = 0; m < 4; ++m) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < t.size(); ++i) sum += w[i] * power(t[i], m);
+    const double exact = (power(0.4, m + 1) - power(0.1, m + 1)) / (m + 1);
+    EXPECT_NEAR(sum, exact, 1e-13) << "degree " << m;
+  }
+}

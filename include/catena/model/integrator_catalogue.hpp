@@ -23,7 +23,7 @@ enum class IntegratorMethod {
   hht,        // HhtIntegrator (HHT-α, or central differences)
   irk,        // IrkIntegrator with the family's Butcher tableau
   petsc_ts,   // PetscTsIntegrator (the method from -ts_type)
-  multistep,  // MultistepIntegrator (variable-step BDF, Park)
+  multistep,  // MultistepIntegrator (variable-step BDF, Park), AdamsPeceIntegrator (abm)
 };
 
 // Where a type has an embedded local error estimate (without it, step doubling serves).
@@ -51,7 +51,7 @@ struct IntegratorType {
   bool takes_newton = false;             // newton: simplified | full
   bool takes_local_newton = false;       // local_newton
   bool takes_linearly_implicit = false;  // newton: linearly_implicit (and tangent_every)
-  bool takes_order = false;              // order (BDF: 1 to 5)
+  int max_order = 0;  // order: 1 to max_order (bdf 5, abm 2); 0: the type takes no order
   // A multistep method: its steps depend on those before, so step doubling (whose return
   // to a step's start would restart the history every step) is refused, and orders above
   // 2 need adaptive steps (the start's low-order steps bound a fixed-step run to order 2).

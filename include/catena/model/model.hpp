@@ -120,11 +120,12 @@ enum class AnalysisType { static_equilibrium, dynamic };
 //   gauss, radau_iia, lobatto_iiia,        implicit Runge–Kutta in K-form with `stages`
 //   lobatto_iiic, sdirk                    (see solvers/time/irk/butcher_tableau.hpp)
 //   bdf (with `order`), park               linear multistep, variable step
+//   abm (with `order`)                     Adams–Bashforth–Moulton PECE (explicit)
 //   petsc                                  PETSc TS (-ts_type alpha2, bdf, rosw, theta, ...)
 struct IntegratorOptions {
   std::string type = "hht";  // canonical names: "radau" is stored as "radau_iia"
   int stages = 3;            // IRK only
-  int order = 2;             // bdf only: 1 to 5 (above 2 with adaptive steps only)
+  int order = 2;             // bdf: 1 to 5 (above 2 with adaptive steps only); abm: 1, 2
   double alpha = -0.1;       // HHT only, ∈ [−1/3, 0]
   double dt = 1e-3;          // s: the step (fixed) or the first step (adaptive)
   bool adaptive = false;

@@ -336,6 +336,9 @@ void HhtIntegrator::save_resume_state(ResumeState& out) const {
   out.reals["hht.tangent_t"] = s.tangent_t;
   out.integers["hht.round_off_known"] = s.round_off.known() ? 1 : 0;
   out.integers["hht.steps_since_tangent"] = s.steps_since_tangent;
+  // Central differences: ω_max of the run's start (the restart's set_state measured it at
+  // its own state; the saved value keeps the uninterrupted run's limit).
+  if (s.options.central_difference) out.reals["hht.omega_max"] = s.omega_max;
   save_own_counters(s.counters, out);
   s.newton->save_resume_state(out);
   if (s.local) s.local->save_resume_state(out);
@@ -353,6 +356,8 @@ void HhtIntegrator::restore_resume_state(const ResumeState& in) {
   // Checkpoints before the linearly implicit step carry neither: their runs did not use it.
   if (in.integers.contains("hht.steps_since_tangent"))
     s.steps_since_tangent = in.integer("hht.steps_since_tangent");
+  if (s.options.central_difference && in.reals.contains("hht.omega_max"))
+    s.omega_max = in.real("hht.omega_max");
   // K, C and the floor as they were: evaluated again at their point (the Newton matrix is
   // rebuilt from them at the next attempt).
   if (in.integer("hht.round_off_known") != 0) {

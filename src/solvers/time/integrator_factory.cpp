@@ -7,6 +7,7 @@
 #include "catena/model/unknown_kinds.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/multistep/adams_pece_integrator.hpp"
 #include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "catena/solvers/time/petsc_ts/petsc_ts_integrator.hpp"
 
@@ -57,6 +58,11 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     m.max_newton_iterations = o.max_newton_iterations;
     m.full_newton = o.newton == "full";
     return std::make_unique<MultistepIntegrator>(system, m);
+  }
+  if (o.type == "abm") {
+    AdamsPeceOptions a;
+    a.order = o.order;
+    return std::make_unique<AdamsPeceIntegrator>(system, a);
   }
   if (o.type == "petsc") {
     // The TS method itself comes from the options database (-ts_type, ...).

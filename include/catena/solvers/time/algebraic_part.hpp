@@ -5,9 +5,10 @@
 // DAE  M a + f(t, q, v) + Gᵀλ = 0,  g(q, t) = 0. The integrators keep one vector layout:
 // the multiplier slots of q hold λ, those of v and a are zero, and the Newton unknown's
 // multiplier slots hold λ itself (at the step end for HHT, at each stage for implicit
-// Runge–Kutta) where its nodal slots hold accelerations. Integrators never look inside
-// the slots: this class gives them the few operations they need, and does nothing (at no
-// cost) when the scene has no constraints.
+// Runge–Kutta) where its nodal slots hold accelerations — or, for the multistep methods,
+// whose unknown is a correction δ to predicted positions, a correction to the predicted λ.
+// Integrators never look inside the slots: this class gives them the few operations they need, and
+// does nothing (at no cost) when the scene has no constraints.
 //
 // Scaling (Negrut, Rampalli, Ottarsson & Sajdak, J. Comput. Nonlinear Dyn. 2 (2007)
 // 73–85): the constraint rows g(q) (metres) are multiplied by m̄/c, where c is the

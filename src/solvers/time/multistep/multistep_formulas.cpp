@@ -45,6 +45,28 @@ std::vector<double> interpolation_weights(std::span<const InterpolationDatum> da
   return {c.data(), c.data() + n};
 }
 
+std::vector<double> integration_weights(std::span<const double> times, double from, double to) {
+  const int n = static_cast<int>(times.size());
+  if (n == 0) throw std::invalid_argument("integration_weights: no data");
+  // As interpolation_weights, with the functional ∫ s^m dt = L (s_to^{m+1} − s_from^{m+1})/(m+1).
+  double scale = std::abs(to - from);
+  for (double t : times) scale = std::max(scale, std::abs(t - from));
+  if (!(scale > 0.0)) scale = 1.0;
+  const double a = 0.0, b = (to - from) / scale;
+  Eigen::MatrixXd basis(n, n);
+  Eigen::VectorXd wanted(n);
+  for (int m = 0; m < n; ++m) {
+    for (int i = 0; i < n; ++i)
+      basis(m, i) = std::pow((times[static_cast<std::size_t>(i)] - from) / scale, m);
+    wanted(m) = scale * (std::pow(b, m + 1) - std::pow(a, m + 1)) / (m + 1);
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(basis);
+  if (lu.rank() < n)
+    throw std::invalid_argument("integration_weights: the data do not determine the polynomial");
+  const Eigen::VectorXd c = lu.solve(wanted);
+  return {c.data(), c.data() + n};
+}
+
 std::vector<double> bdf_weights(std::span<const double> times, int k) {
   if (k < 1 || static_cast<int>(times.size()) < k + 1)
     throw std::invalid_argument("bdf_weights: order below 1 or too few times");

@@ -292,9 +292,10 @@ StepOutcome MultistepIntegrator::attempt(double h, const ErrorTolerance* tol) {
   s.h = h;
   s.t1 = s.state.time() + h;
   s.formula = s.choose_formula();
-  // Kept within the tolerance (also after a restart, which rebuilds the matrix it saved).
+  // Kept within the tolerance (also after a restart, which rebuilds the matrix it saved);
+  // full Newton rebuilds the matrix at every iterate, so with the formula's own w₀.
   s.w0_newton = s.w0_matrix;
-  if (std::abs(s.formula.w[0] / s.w0_matrix - 1.0) > kMatrixTolerance) {
+  if (s.options.full_newton || std::abs(s.formula.w[0] / s.w0_matrix - 1.0) > kMatrixTolerance) {
     s.w0_newton = s.formula.w[0];
     s.newton->invalidate_matrix();
   }

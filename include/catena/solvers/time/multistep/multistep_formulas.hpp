@@ -11,6 +11,9 @@
 //   Park's formula (K. C. Park, J. Appl. Mech. 42 (1975) 464–470): the mean of BDF-2 and
 //     BDF-3, w = ½(w^(2) + w^(3)); at constant steps (10 y₀ − 15 y₁ + 6 y₂ − y₃)/(6h),
 //     second order and A-stable;
+//   Adams–Bashforth and Adams–Moulton: y₀ = y₁ + ∫_{t₁}^{t₀} p, p the polynomial through
+//     the derivative's past values (Bashforth, explicit) or through the new one and the
+//     past ones (Moulton) (Hairer, Nørsett & Wanner I, III.1 and III.5);
 //   the predictor: y(t₀) from y₁, y'₁ and y₂ ... y_p, the degree-p polynomial through those
 //     values with the slope y'₁ at t₁ (Hermite), for the Newton start and the error estimate.
 //
@@ -32,6 +35,10 @@ struct InterpolationDatum {
 // data do not determine p (a time repeated with the same derivative).
 std::vector<double> interpolation_weights(std::span<const InterpolationDatum> data, double target,
                                           int derivative);
+
+// The weights c_i with Σ c_i d_i = ∫_from^to p(t) dt for the polynomial p through the data
+// (values only): the Adams formulas. Throws std::invalid_argument as above.
+std::vector<double> integration_weights(std::span<const double> times, double from, double to);
 
 // BDF-k's weights w_0 ... w_k for times[0] (new) > times[1] > ... > times[k]; k ≥ 1.
 std::vector<double> bdf_weights(std::span<const double> times, int k);
