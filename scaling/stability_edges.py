@@ -8,10 +8,11 @@ it, at 600 km/h (past the wire's wave speed, 438 km/h), and the plucked taut str
 OUT_DIR/stability_edges.csv (one row per run) and OUT_DIR/stability_edges.md (the table:
 per case and method, what each step gave). A benchmark: about 15 minutes on one core.
 
-  /usr/bin/python3 scaling/stability_edges.py build/apps/catena OUT_DIR [CASE ...]
+  /usr/bin/python3 scaling/stability_edges.py build/apps/catena OUT_DIR [--methods M,M] [CASE ...]
 
 With CASE names (wire, wire_contact_x100, wire_600kmh, string) only those are run: two
-invocations with different OUT_DIRs share a 2-core machine.
+invocations with different OUT_DIRs share a 2-core machine. With --methods only those
+method families (the names of METHODS below) are run.
 """
 import csv
 import os
@@ -39,6 +40,9 @@ METHODS = {
     "linear_li": ["integrator.type=hht", "integrator.stages=~", "analysis.structure=linear",
                   "integrator.newton=linearly_implicit"],
     "modal": ["integrator.type=hht", "integrator.stages=~", "analysis.structure=modal"],
+    "park": ["integrator.type=park", "integrator.stages=~", "integrator.alpha=~"],
+    "bdf2": ["integrator.type=bdf", "integrator.stages=~", "integrator.alpha=~",
+             "integrator.order=2"],
 }
 
 CASES = {
@@ -66,7 +70,18 @@ def outcome(line):
 
 def main():
     catena, out_dir = sys.argv[1], sys.argv[2]
-    chosen = sys.argv[3:] or list(CASES)
+    rest = sys.argv[3:]
+    methods = list(METHODS)
+    if "--methods" in rest:
+        i = rest.index("--methods")
+        if i + 1 >= len(rest):
+            sys.exit("stability_edges: --methods needs a comma-separated list")
+        methods = rest[i + 1].split(",")
+        del rest[i:i + 2]
+        wrong = [m for m in methods if m not in METHODS]
+        if wrong:
+            sys.exit(f"stability_edges: unknown method {wrong[0]}; accepted: {', '.join(METHODS)}")
+    chosen = rest or list(CASES)
     unknown = [c for c in chosen if c not in CASES]
     if unknown:
         sys.exit(f"stability_edges: unknown case {unknown[0]}; accepted: {', '.join(CASES)}")
@@ -74,7 +89,8 @@ def main():
     rows = []
     for case in chosen:
         scene, case_sets = CASES[case]
-        for method, method_sets in METHODS.items():
+        for method in methods:
+            method_sets = METHODS[method]
             if case == "string" and method == "modal":
                 continue  # the string has no pantograph: the modal model has no loads to carry
             for dt in STEPS:
