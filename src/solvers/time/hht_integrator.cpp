@@ -4,14 +4,12 @@
 #include <limits>
 #include <sstream>
 
-#include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/modes/modal_analysis.hpp"
 #include "catena/solvers/newton/local_newton.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
-#include "catena/solvers/newton/round_off_floor.hpp"
-#include "catena/solvers/time/algebraic_part.hpp"
+#include "catena/solvers/time/step_matrices.hpp"
 #include "catena/solvers/time/step_state.hpp"
 
 namespace catena::solvers {
@@ -43,8 +41,8 @@ bool local_newton_options(bool on, LocalNewtonSettings& local) {
 
 }  // namespace
 
-struct HhtIntegrator::Impl {
-  assembly::SecondOrderSystem& system;
+// M, K, C, the Newton matrix, Gᵀ and the tangent's point: StepMatrices.
+struct HhtIntegrator::Impl : StepMatrices {
   HhtOptions options;
   double beta, gamma;
   // The current state (start of the next step), the one before (dense output) and the
@@ -53,27 +51,17 @@ struct HhtIntegrator::Impl {
   double scale0 = 0.0;
   VecHandle f0;  // f(t0, q0, v0)
   double h = 0.0, h_matrix = -1.0, scale1 = 0.0;
-  RoundOffFloor round_off;  // of f (round_off_floor.hpp)
   VecHandle f1, residual, error, work;
   long steps_since_tangent = 0;  // linearly implicit: steps accepted with the current tangent
   double omega_max = 0.0;        // central differences: rad/s at the state set last
   // The parts of q1, v1 that do not depend on a1, set once per attempt (kinematics).
   VecHandle q_known, v_known;
-  MatHandle mass, K, C, jacobian;
-  // Where K and C were last evaluated (kept for a restart, which evaluates them there again).
-  VecHandle tangent_q, tangent_v;
-  double tangent_t = 0.0;
-  // M without its stored zeros, for the product M a1 of every residual (compact_matrix.hpp);
-  // `mass` keeps the full pattern the Newton matrix is built on.
-  MatHandle mass_product;
-  MatHandle coupling;  // Gᵀ (constraints only)
-  std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
   std::unique_ptr<LocalNewton> local;  // null unless options.local_newton
   IntegratorCounters counters;
 
   Impl(assembly::SecondOrderSystem& s, const HhtOptions& o, StepState& st)
-      : system(s),
+      : StepMatrices(s, st.q()),
         options(o),
         beta(o.central_difference ? 0.0 : 0.25 * (1 - o.alpha) * (1 - o.alpha)),
         gamma(o.central_difference ? 0.5 : 0.5 - o.alpha),
@@ -157,20 +145,6 @@ struct HhtIntegrator::Impl {
     return out;
   }
 
-  // C, or null where the system has no damping (C = 0: neither assembled nor added).
-  Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
-
-  // K, C and the round-off floor's tangent at (q, v, t), the point remembered.
-  void evaluate_tangent(Vec q, Vec v, double t) {
-    if (q != tangent_q.get()) {
-      CATENA_PETSC(VecCopy(q, tangent_q.get()));
-      CATENA_PETSC(VecCopy(v, tangent_v.get()));
-    }
-    tangent_t = t;
-    system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, t}, K.get(), damping_matrix());
-    round_off.set_tangent(K.get());
-  }
-
   // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
   void build_matrix(Vec a, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
@@ -212,29 +186,12 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
   CATENA_ASSERT(
       !options.linearly_implicit || !system.has_constraints(),
       "HHT's linearly implicit step takes no constraints (the scene reader refuses them)");
-  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.work, &s.q_known, &s.v_known,
-                       &s.tangent_q, &s.tangent_v})
+  for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.work, &s.q_known, &s.v_known})
     *v = system.create_vector();
-  // Only the matrices this system uses: each holds the full pattern from the start.
-  s.mass = system.create_matrix();
-  s.K = system.create_matrix();
-  if (system.has_damping()) s.C = system.create_matrix();
-  // The mass matrix is constant (ANCF): assemble it once.
-  system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
-  s.mass_product = assembly::compact_copy(s.mass.get());
-  // Give the Newton matrix its (full) pattern once, so MatCopy/MatAXPY can keep it.
-  CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
-  s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
-  if (s.algebraic->active()) {  // Gᵀ is constant: the constraints are linear in q
-    s.coupling = system.create_matrix();
-    system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
-  }
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
-  // M + (1+α)(γh C + βh² K) keeps a nonzero diagonal (mass, or stiffness at a massless
-  // node) unless multipliers add zero diagonal rows: then it needs a pivoting factorisation.
-  settings.pivoting = s.algebraic->active() ? Pivoting::needed : Pivoting::not_needed;
+  settings.pivoting = s.pivoting();
   // Damping makes the matrix non-symmetric in general.
   s.newton = std::make_unique<ReusableNewton>(
       system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
@@ -329,12 +286,9 @@ void HhtIntegrator::interpolate(double t, Vec q, Vec v) { impl_->state.interpola
 void HhtIntegrator::save_resume_state(ResumeState& out) const {
   const Impl& s = *impl_;
   out.vectors["hht.f0"] = s.f0.get();
-  out.vectors["hht.tangent_q"] = s.tangent_q.get();
-  out.vectors["hht.tangent_v"] = s.tangent_v.get();
+  s.save_tangent(out, "hht");
   out.reals["hht.scale0"] = s.scale0;
   out.reals["hht.h_matrix"] = s.h_matrix;
-  out.reals["hht.tangent_t"] = s.tangent_t;
-  out.integers["hht.round_off_known"] = s.round_off.known() ? 1 : 0;
   out.integers["hht.steps_since_tangent"] = s.steps_since_tangent;
   // Central differences: ω_max of the run's start (the restart's set_state measured it at
   // its own state; the saved value keeps the uninterrupted run's limit).
@@ -360,11 +314,7 @@ void HhtIntegrator::restore_resume_state(const ResumeState& in) {
     s.omega_max = in.real("hht.omega_max");
   // K, C and the floor as they were: evaluated again at their point (the Newton matrix is
   // rebuilt from them at the next attempt).
-  if (in.integer("hht.round_off_known") != 0) {
-    s.evaluate_tangent(in.vector("hht.tangent_q"), in.vector("hht.tangent_v"),
-                       in.real("hht.tangent_t"));
-    ++s.counters.jacobian_evaluations;
-  }
+  if (s.restore_tangent(in, "hht")) ++s.counters.jacobian_evaluations;
 }
 
 double HhtIntegrator::stable_step() const {

@@ -7,13 +7,11 @@
 #include <span>
 #include <vector>
 
-#include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
-#include "catena/solvers/newton/round_off_floor.hpp"
-#include "catena/solvers/time/algebraic_part.hpp"
 #include "catena/solvers/time/multistep/multistep_formulas.hpp"
+#include "catena/solvers/time/step_matrices.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -55,8 +53,8 @@ struct Formula {
 
 }  // namespace
 
-struct MultistepIntegrator::Impl {
-  assembly::SecondOrderSystem& system;
+// M, K, C, the Newton matrix, Gᵀ and the tangent's point: StepMatrices.
+struct MultistepIntegrator::Impl : StepMatrices {
   MultistepOptions options;
   StepState& state;
   // The history: q, v at t₀ (the current point), t₋₁, ...; `known` of them valid.
@@ -73,16 +71,11 @@ struct MultistepIntegrator::Impl {
   // formula's, else the formula's. The constraint rows are scaled with it in the residual
   // too, so that the kept matrix solves them exactly.
   double w0_newton = 1.0;
-  RoundOffFloor round_off;
-  MatHandle mass, mass_product, K, C, jacobian, coupling;
-  VecHandle tangent_q, tangent_v;
-  double tangent_t = 0.0;
-  std::unique_ptr<AlgebraicPart> algebraic;
   std::unique_ptr<ReusableNewton> newton;
   IntegratorCounters counters;
 
   Impl(assembly::SecondOrderSystem& s, const MultistepOptions& o, StepState& st)
-      : system(s), options(o), state(st) {}
+      : StepMatrices(s, st.q()), options(o), state(st) {}
 
   int history_needed() const { return options.family == MultistepFamily::park ? 3 : options.order; }
 
@@ -159,18 +152,6 @@ struct MultistepIntegrator::Impl {
     }
   }
 
-  Mat damping_matrix() const { return system.has_damping() ? C.get() : nullptr; }
-
-  void evaluate_tangent(Vec q, Vec v, double t) {
-    if (q != tangent_q.get()) {
-      CATENA_PETSC(VecCopy(q, tangent_q.get()));
-      CATENA_PETSC(VecCopy(v, tangent_v.get()));
-    }
-    tangent_t = t;
-    system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, t}, K.get(), damping_matrix());
-    round_off.set_tangent(K.get());
-  }
-
   // J = w₀² M + w₀ C + K (+ Gᵀ; constraint rows scaled to m̄ G).
   void build_matrix(Vec d, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
@@ -242,24 +223,13 @@ MultistepIntegrator::MultistepIntegrator(assembly::SecondOrderSystem& system,
     s.q_back[j] = system.create_vector();
     s.v_back[j] = system.create_vector();
   }
-  for (VecHandle* v : {&s.q_pred, &s.v_pred, &s.a_pred, &s.delta, &s.difference, &s.f1, &s.residual,
-                       &s.error, &s.tangent_q, &s.tangent_v})
+  for (VecHandle* v :
+       {&s.q_pred, &s.v_pred, &s.a_pred, &s.delta, &s.difference, &s.f1, &s.residual, &s.error})
     *v = system.create_vector();
-  s.mass = system.create_matrix();
-  s.K = system.create_matrix();
-  if (system.has_damping()) s.C = system.create_matrix();
-  system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
-  s.mass_product = assembly::compact_copy(s.mass.get());
-  CATENA_PETSC(MatDuplicate(s.mass.get(), MAT_COPY_VALUES, s.jacobian.out()));
-  s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
-  if (s.algebraic->active()) {  // Gᵀ is constant: the constraints are linear in q
-    s.coupling = system.create_matrix();
-    system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, s.coupling.get());
-  }
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
-  settings.pivoting = s.algebraic->active() ? Pivoting::needed : Pivoting::not_needed;
+  settings.pivoting = s.pivoting();
   s.newton = std::make_unique<ReusableNewton>(
       system.comm(), s.jacobian.get(), s.residual.get(), "multistep_", JacobianSymmetry::general,
       settings, [&s](Vec d, Vec r) { s.residual_at(d, r); },
@@ -347,12 +317,9 @@ void MultistepIntegrator::save_resume_state(ResumeState& out) const {
     out.vectors["multistep.v" + i] = s.v_back[static_cast<std::size_t>(j)].get();
     out.reals["multistep.t" + i] = s.t_back[static_cast<std::size_t>(j)];
   }
-  out.vectors["multistep.tangent_q"] = s.tangent_q.get();
-  out.vectors["multistep.tangent_v"] = s.tangent_v.get();
+  s.save_tangent(out, "multistep");
   out.reals["multistep.scale0"] = s.scale0;
   out.reals["multistep.w0_matrix"] = s.w0_matrix;
-  out.reals["multistep.tangent_t"] = s.tangent_t;
-  out.integers["multistep.round_off_known"] = s.round_off.known() ? 1 : 0;
   save_own_counters(s.counters, out);
   s.newton->save_resume_state(out);
 }
@@ -377,11 +344,7 @@ void MultistepIntegrator::restore_resume_state(const ResumeState& in) {
   s.w0_matrix = in.real("multistep.w0_matrix");
   restore_own_counters(in, s.counters);
   s.newton->restore_resume_state(in);
-  if (in.integer("multistep.round_off_known") != 0) {
-    s.evaluate_tangent(in.vector("multistep.tangent_q"), in.vector("multistep.tangent_v"),
-                       in.real("multistep.tangent_t"));
-    ++s.counters.jacobian_evaluations;
-  }
+  if (s.restore_tangent(in, "multistep")) ++s.counters.jacobian_evaluations;
 }
 
 }  // namespace catena::solvers
