@@ -71,6 +71,7 @@ struct MultistepIntegrator::Impl : StepMatrices {
   // formula's, else the formula's. The constraint rows are scaled with it in the residual
   // too, so that the kept matrix solves them exactly.
   double w0_newton = 1.0;
+  double matrix_tolerance = kMatrixTolerance;  // -multistep_matrix_tolerance overrides it
   std::unique_ptr<ReusableNewton> newton;
   IntegratorCounters counters;
 
@@ -226,6 +227,15 @@ MultistepIntegrator::MultistepIntegrator(assembly::SecondOrderSystem& system,
   for (VecHandle* v :
        {&s.q_pred, &s.v_pred, &s.a_pred, &s.delta, &s.difference, &s.f1, &s.residual, &s.error})
     *v = system.create_vector();
+  PetscReal tolerance = kMatrixTolerance;
+  CATENA_PETSC(
+      PetscOptionsGetReal(nullptr, "multistep_", "-matrix_tolerance", &tolerance, nullptr));
+  if (!(tolerance >= 0.0))
+    throw InputError({"", 0, "-multistep_matrix_tolerance"},
+                     "multistep matrix tolerance " + std::to_string(tolerance) +
+                         "; accepted: >= 0 (the relative change of w0 that rebuilds the Newton "
+                         "matrix)");
+  s.matrix_tolerance = tolerance;
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
@@ -265,7 +275,7 @@ StepOutcome MultistepIntegrator::attempt(double h, const ErrorTolerance* tol) {
   // Kept within the tolerance (also after a restart, which rebuilds the matrix it saved);
   // full Newton rebuilds the matrix at every iterate, so with the formula's own w₀.
   s.w0_newton = s.w0_matrix;
-  if (s.options.full_newton || std::abs(s.formula.w[0] / s.w0_matrix - 1.0) > kMatrixTolerance) {
+  if (s.options.full_newton || std::abs(s.formula.w[0] / s.w0_matrix - 1.0) > s.matrix_tolerance) {
     s.w0_newton = s.formula.w[0];
     s.newton->invalidate_matrix();
   }
