@@ -1,9 +1,11 @@
 // The step-control driver: adaptive steps meet their tolerance (embedded estimates and
 // step doubling), output samples land on the fixed output times with dense-output
 // accuracy, a stop request ends the run between steps, and an unreachable tolerance ends
-// with an error naming time, step and the minimum.
+// with an error naming time, step and the minimum; a multistep method's steps never grow
+// faster than its formula's zero-stability cap, and still grow where the cap is small.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -11,6 +13,7 @@
 #include "catena/core/error.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
@@ -166,4 +169,49 @@ TEST(Transient, FixedStepsLandOnTheEndTime) {
   EXPECT_EQ(run.report.steps_accepted, 11);
   EXPECT_NEAR(run.report.t_reached, 0.105, 1e-15);
   EXPECT_EQ(run.recorder.times.size(), 12u);  // every step, plus the start
+}
+
+// Variable-step BDF and Park with adaptive steps from dt = 1 ms: no accepted step is longer
+// than the cap (TimeIntegrator::max_step_ratio: 2 for BDF-2, 1.8 for Park, 1.1 for BDF-5)
+// times the one before, yet the steps grow by far (for BDF-5 only through the narrowed band
+// of kept steps: with RADAU5's band [1, 1.2] a cap of 1.1 would never let h grow), and the
+// error follows the tolerance as for the one-step methods above.
+TEST(Transient, MultistepStepsGrowWithinTheirCap) {
+  catena::test::ensure_petsc();
+  struct Case {
+    const char* name;
+    solvers::MultistepFamily family;
+    int order;
+    double cap;  // the formula's growth cap (multistep_integrator.cpp)
+  };
+  for (const Case& c : {Case{"bdf2", solvers::MultistepFamily::bdf, 2, 2.0},
+                        Case{"park", solvers::MultistepFamily::park, 2, 1.8},
+                        Case{"bdf5", solvers::MultistepFamily::bdf, 5, 1.1}}) {
+    solvers::MultistepOptions m;
+    m.family = c.family;
+    m.order = c.order;
+    m.atol = 1e-12;
+    const OscillatorRun run = run_oscillator<solvers::MultistepIntegrator>(
+        m, adaptive(0.0, 1e-7, solvers::ErrorEstimate::embedded));
+    EXPECT_NEAR(run.report.t_reached, 2.0, 1e-12) << c.name;
+    const std::vector<solvers::StepRecord>& steps = run.recorder.steps;
+    ASSERT_GT(steps.size(), 10u) << c.name;
+    double largest_ratio = 0.0;
+    for (std::size_t k = 1; k < steps.size(); ++k)
+      largest_ratio = std::max(largest_ratio, steps[k].dt / steps[k - 1].dt);
+    const double largest_step =
+        std::max_element(steps.begin(), steps.end(), [](const auto& a, const auto& b) {
+          return a.dt < b.dt;
+        })->dt;
+    std::printf(
+        "  %s: %ld steps (%ld rejected), largest step ratio %.4f (cap %.2f), steps up to "
+        "%.2e s, worst sampled error %.2e m\n",
+        c.name, run.report.steps_accepted, run.report.steps_rejected, largest_ratio, c.cap,
+        largest_step, run.worst_sample_error);
+    EXPECT_LE(largest_ratio, c.cap * (1 + 1e-12)) << c.name;
+    EXPECT_GT(largest_ratio, 1.0 + 0.5 * (c.cap - 1.0)) << c.name << ": the steps never grew";
+    EXPECT_GT(largest_step, 5 * 1e-3) << c.name;
+    EXPECT_LT(run.worst_sample_error, 5.0 * static_cast<double>(run.report.steps_accepted) * 1e-7)
+        << c.name;
+  }
 }
