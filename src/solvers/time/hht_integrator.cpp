@@ -9,6 +9,7 @@
 #include "catena/solvers/modes/modal_analysis.hpp"
 #include "catena/solvers/newton/local_newton.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
+#include "catena/solvers/time/newton_outcome.hpp"
 #include "catena/solvers/time/step_matrices.hpp"
 #include "catena/solvers/time/step_state.hpp"
 
@@ -121,15 +122,8 @@ struct HhtIntegrator::Impl : StepMatrices {
   // The attempt's outcome from its Newton result: on success the pending state from a1
   // (pending_a) and the local error estimate if asked for.
   StepOutcome finish_attempt(const NewtonResult& result, const ErrorTolerance* tol) {
-    StepOutcome out;
-    out.converged = result.converged;
-    out.newton_iterations = result.iterations;
-    out.residual_norm = result.residual_norm;
-    counters.newton_iterations += result.iterations;
-    if (!result.converged) {
-      ++counters.newton_failures;
-      out.failure = result.failure;
-      out.worst_dof = worst_dof(residual.get());
+    StepOutcome out = newton_outcome(result, residual.get(), counters);
+    if (!out.converged) {
       state.discard_pending();
       return out;
     }

@@ -16,6 +16,7 @@
 #include "catena/solvers/time/irk/block_matrix.hpp"
 #include "catena/solvers/time/irk/decoupled_stage_solver.hpp"
 #include "catena/solvers/time/irk/interleaved_vectors.hpp"
+#include "catena/solvers/time/newton_outcome.hpp"
 #include "catena/solvers/time/step_state.hpp"
 
 namespace catena::solvers {
@@ -411,15 +412,9 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
       m.round_off.at(m.state.q()) * std::sqrt(static_cast<double>(m.s)) +
       m.algebraic->residual_floor(h * h, m.state.q()) * std::sqrt(static_cast<double>(m.s));
   const NewtonResult result = m.newton->solve(m.x.get(), atol);
-  StepOutcome out;
-  out.converged = result.converged;
-  out.newton_iterations = result.iterations;
-  out.residual_norm = result.residual_norm;
-  m.counters.newton_iterations += result.iterations;
-  if (!result.converged) {
-    ++m.counters.newton_failures;
-    out.failure = result.failure;
-    out.worst_dof = worst_dof(m.r.get(), m.s);  // the stage vector interleaves s rows per DOF
+  // The stage vector interleaves s rows per DOF (worst_dof).
+  StepOutcome out = newton_outcome(result, m.r.get(), m.counters, m.s);
+  if (!out.converged) {
     m.state.discard_pending();
     return out;
   }

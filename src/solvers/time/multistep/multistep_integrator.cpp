@@ -11,6 +11,7 @@
 #include "catena/core/error.hpp"
 #include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/time/multistep/multistep_formulas.hpp"
+#include "catena/solvers/time/newton_outcome.hpp"
 #include "catena/solvers/time/step_matrices.hpp"
 
 namespace catena::solvers {
@@ -174,15 +175,8 @@ struct MultistepIntegrator::Impl : StepMatrices {
   }
 
   StepOutcome finish_attempt(const NewtonResult& result, const ErrorTolerance* tol) {
-    StepOutcome out;
-    out.converged = result.converged;
-    out.newton_iterations = result.iterations;
-    out.residual_norm = result.residual_norm;
-    counters.newton_iterations += result.iterations;
-    if (!result.converged) {
-      ++counters.newton_failures;
-      out.failure = result.failure;
-      out.worst_dof = worst_dof(residual.get());
+    StepOutcome out = newton_outcome(result, residual.get(), counters);
+    if (!out.converged) {
       state.discard_pending();
       return out;
     }
