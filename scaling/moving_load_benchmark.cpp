@@ -21,14 +21,15 @@
 // each" divides them by the counters (one stage-system factorisation or solve, which the
 // decoupled IRK does as one MUMPS factorisation or solve per block).
 // Options: -length m (10000) -element m (0.25) -force N (120) -speed m/s (80) -start m
-// (middle span's mid-point) -steps n (100) -dt s (1e-3) -integrator hht|radau (hht)
-// -alpha (-0.1, hht) -newton simplified|full (simplified) -newton_rtol (1e-10)
-// -newton_atol N (1e-8; the round-off floor is added, see Options) -repeat n (20, unit costs)
-// -linear_algebra auto|decoupled|coupled (auto; radau's stage solve, docs/integrators.md);
-// PETSc options with the integrators' prefixes (-hht_, -irk_) apply as in `catena run`.
-// Accuracy of a setting (e.g. a looser -newton_rtol, or -dt halved with -steps doubled):
-// -save_state FILE writes the final state (PETSc binary), -compare_state FILE prints the
-// largest difference from a state saved by a run on as many ranks.
+// (middle span's mid-point) -load_spacing m (0: one load; else a load every so many m, the
+// weak-scaling study's "one train per N km") -steps n (100) -dt s (1e-3) -integrator hht|radau
+// (hht) -alpha (-0.1, hht) -newton simplified|full (simplified) -newton_rtol (1e-10) -newton_atol N
+// (1e-8; the round-off floor is added, see Options) -repeat n (20, unit costs) -linear_algebra
+// auto|decoupled|coupled (auto; radau's stage solve, docs/integrators.md); PETSc options with the
+// integrators' prefixes (-hht_, -irk_) apply as in `catena run`. Accuracy of a setting (e.g. a
+// looser -newton_rtol, or -dt halved with -steps doubled): -save_state FILE writes the final state
+// (PETSc binary), -compare_state FILE prints the largest difference from a state saved by a run on
+// as many ranks.
 #include <petscksp.h>
 
 #include <algorithm>
@@ -41,6 +42,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/core/peak_memory.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
 #include "catena/solvers/newton/interface_schur.hpp"
@@ -54,6 +56,9 @@ namespace {
 struct Options {
   double length = 10000.0, element = 0.25, span = 62.5;  // m
   double force = 120.0, speed = 80.0, start = -1.0;      // N (upward), m/s, m (<0: default)
+  // > 0: a load every `load_spacing` m instead of one (weak scaling: the line and its
+  // trains grow together), the first at half the spacing.
+  double load_spacing = 0.0;
   int steps = 100, repeat = 20;
   double dt = 1e-3, alpha = -0.1;  // s, HHT α
   // Newton tolerances (scene keys integrator.newton_rtol, newton_atol), the scene's
@@ -80,6 +85,7 @@ Options read_options() {
                              {"-force", &o.force},
                              {"-speed", &o.speed},
                              {"-start", &o.start},
+                             {"-load_spacing", &o.load_spacing},
                              {"-dt", &o.dt},
                              {"-alpha", &o.alpha},
                              {"-newton_rtol", &o.newton_rtol},
@@ -97,6 +103,15 @@ Options read_options() {
   const int n_spans = static_cast<int>(o.length / o.span + 0.5);
   if (o.start < 0.0) o.start = (n_spans / 2 + 0.5) * o.span;
   return o;
+}
+
+// Where the loads start: one at o.start, or one every o.load_spacing m (at least one).
+std::vector<double> load_starts(const Options& o) {
+  if (o.load_spacing <= 0.0) return {o.start};
+  std::vector<double> starts;
+  for (double x = 0.5 * o.load_spacing; x < o.length; x += o.load_spacing) starts.push_back(x);
+  if (starts.empty()) starts.push_back(o.start);  // a line shorter than half the spacing
+  return starts;
 }
 
 // The static benchmark's line, with named spans, a dynamic analysis, the moving load along
@@ -121,11 +136,15 @@ std::string line_scene(const Options& o) {
     s << "  - {node: " << i + 1 << ", stiffness: [0, 1.0e5, 1.0e5]}\n";
   // run_transient stops after `steps` steps (the observer asks); the duration only bounds it.
   s << "analysis: {type: dynamic, duration: " << (o.steps + 10) * o.dt << "}\n"
-    << "moving_loads:\n  - name: pantograph\n    line: [";
-  for (int i = 0; i < n_spans; ++i) s << (i ? ", s" : "s") << i + 1;
-  s << "]\n    force: [0, 0, " << o.force << "]\n    speed: " << o.speed
-    << "\n    start: " << o.start << "\n"
-    << "integrator: {type: " << o.integrator << (o.integrator == "hht" ? ", alpha: " : ", stages: ")
+    << "moving_loads:\n";
+  const std::vector<double> starts = load_starts(o);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    s << "  - name: load" << k + 1 << "\n    line: [";
+    for (int i = 0; i < n_spans; ++i) s << (i ? ", s" : "s") << i + 1;
+    s << "]\n    force: [0, 0, " << o.force << "]\n    speed: " << o.speed
+      << "\n    start: " << starts[k] << "\n";
+  }
+  s << "integrator: {type: " << o.integrator << (o.integrator == "hht" ? ", alpha: " : ", stages: ")
     << (o.integrator == "hht" ? o.alpha : 3.0) << ", dt: " << o.dt << ", newton: " << o.newton
     << ", newton_rtol: " << o.newton_rtol << ", newton_atol: " << o.newton_atol
     << (o.integrator == "hht" ? "" : ", linear_algebra: " + o.linear_algebra) << "}\n";
@@ -154,6 +173,23 @@ EventTotals event_totals(MPI_Comm comm, PetscLogStage stage, const char* name) {
   double local[2] = {static_cast<double>(info.count), info.time}, global[2] = {0.0, 0.0};
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, comm);
   return {global[0], global[1]};
+}
+
+// The messages, bytes and reductions one rank took part in during a log stage, as PETSc
+// counts them (point-to-point sends and receives; reductions, broadcasts and gathers of
+// code that includes PETSc's headers, Catena's own among them), largest over the ranks.
+struct Traffic {
+  double messages = 0.0, bytes = 0.0, reductions = 0.0, flops = 0.0;
+};
+
+Traffic stage_traffic(MPI_Comm comm, PetscLogStage stage) {
+  PetscStageLog log = nullptr;
+  CATENA_PETSC(PetscLogGetStageLog(&log));
+  const PetscEventPerfInfo& info = log->stageInfo[stage].perfInfo;
+  double local[4] = {info.numMessages, info.messageLength, info.numReductions, info.flops};
+  double largest[4] = {};
+  MPI_Allreduce(local, largest, 4, MPI_DOUBLE, MPI_MAX, comm);
+  return {largest[0], largest[1], largest[2], largest[3]};
 }
 
 // Times every accepted step, moves logging to the "Steps" stage after the first one,
@@ -192,10 +228,11 @@ int main(int argc, char** argv) {
       &argc, &argv,
       "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
       "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
-      "[-force N] [-speed m/s] [-start m] [-newton_rtol r] "
+      "[-force N] [-speed m/s] [-start m] [-load_spacing m] [-newton_rtol r] "
       "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
       "[-save_state FILE] [-compare_state FILE]\n");
   CATENA_PETSC(PetscLogDefaultBegin());
+  const double process_start = MPI_Wtime();
   MPI_Comm comm = PETSC_COMM_WORLD;
   const int rank = catena::mpi_rank(comm), size = catena::mpi_size(comm);
   const Options o = read_options();
@@ -238,6 +275,11 @@ int main(int argc, char** argv) {
       catena::solvers::run_transient(system, *integrator, run, timer);
   CATENA_PETSC(PetscLogStagePop());  // Steps
   CATENA_PETSC(PetscLogStagePop());  // FirstStep
+  // The whole run as `catena run` would do it without output: scene, statics, steps.
+  double whole_run = MPI_Wtime() - process_start;
+  MPI_Allreduce(MPI_IN_PLACE, &whole_run, 1, MPI_DOUBLE, MPI_MAX, comm);
+  const catena::PeakMemory memory = catena::peak_memory(comm);
+  const Traffic traffic = stage_traffic(comm, steps_stage);
   const catena::solvers::IntegratorCounters total = integrator->counters();
 
   // The final state against a saved one, and against the static state (the motion's size).
@@ -283,8 +325,9 @@ int main(int argc, char** argv) {
       catena::solvers::create_direct_ksp(comm, "bench_", catena::solvers::JacobianSymmetry::general,
                                          catena::solvers::Pivoting::not_needed);
   CATENA_PETSC(KSPSetOperators(ksp.get(), J.get(), J.get()));
+  long n_interface = 0;
   if (catena::solvers::use_interface_split(comm, "bench_", catena::solvers::Pivoting::not_needed))
-    catena::solvers::use_interface_schur(ksp.get(), J.get());
+    n_interface = catena::solvers::use_interface_schur(ksp.get(), J.get());
   const double t_factor = timed(comm, [&] { CATENA_PETSC(KSPSetUp(ksp.get())); });
   CATENA_PETSC(KSPSolve(ksp.get(), f.get(), x.get()));
   const double t_solve = timed(comm,
@@ -389,6 +432,37 @@ int main(int argc, char** argv) {
     if (state_difference >= 0.0)
       std::printf(", max |q - q(%s)| = %.3g", o.compare_state.c_str(), state_difference);
     std::printf("\n");
+    std::printf(
+        "  communication per step and rank (PETSc's count, largest rank): %.1f messages "
+        "(sends + receives), %.0f bytes, %.1f reductions; interface rows %ld\n",
+        traffic.messages / n_rest, traffic.bytes / n_rest, traffic.reductions / n_rest,
+        n_interface);
+    constexpr double mib = 1024.0 * 1024.0;
+    std::printf(
+        "  whole run (scene, statics, %d steps) %.2f s; peak memory per rank %.0f MiB "
+        "(largest), %.0f MiB (smallest), %.0f MiB in all\n",
+        n_rest + 1, whole_run, memory.largest_bytes / mib, memory.smallest_bytes / mib,
+        memory.total_bytes / mib);
+    // One JSON object for scaling/scaling_study.py (the names are its CSV columns).
+    std::printf(
+        "SCALING {\"method\": \"%s\", \"ranks\": %d, \"length_m\": %.17g, "
+        "\"loads\": %zu, \"dofs\": %lld, \"dt\": %.17g, \"steps\": %d, "
+        "\"newton_per_step\": %.6g, \"step_s\": %.9g, \"first_step_s\": %.9g, "
+        "\"whole_run_s\": %.9g, \"static_s\": %.9g, \"residual_s\": %.9g, "
+        "\"solve_pair_s\": %.9g, \"factorisation_s\": %.9g, "
+        "\"factorisations_per_step\": %.6g, \"residual_in_run_s\": %.9g, "
+        "\"solve_in_run_s\": %.9g, \"interface_rows\": %ld, "
+        "\"messages_per_step\": %.6g, \"bytes_per_step\": %.9g, "
+        "\"reductions_per_step\": %.6g, \"flops_per_step\": %.9g, "
+        "\"peak_memory_largest_bytes\": %.17g, \"peak_memory_total_bytes\": %.17g, "
+        "\"final_motion\": %.17g}\n",
+        method.c_str(), size, o.length, load_starts(o).size(),
+        static_cast<long long>(system.dof_map().n_global()), o.dt, n_rest + 1,
+        per_step(total.newton_iterations, k1.newton_iterations), t_step, timer.seconds.front(),
+        whole_run, t_static, t_residual, t_solve, t_factor,
+        per_step(total.factorizations, k1.factorizations), each(force), solve_each, n_interface,
+        traffic.messages / n_rest, traffic.bytes / n_rest, traffic.reductions / n_rest,
+        traffic.flops / n_rest, memory.largest_bytes, memory.total_bytes, motion);
     // CSV: method, ranks, DOFs, dt, steps, then per step after the first: Newton iterations,
     // residuals, tangents, factorisations, solve pairs, step s; first step s; unit residual
     // s, unit HHT solve pair s, in-run residual s, in-run solve pair s, both ratios.

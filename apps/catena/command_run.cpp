@@ -18,6 +18,7 @@
 #include "commands.hpp"
 #include "error_bar.hpp"
 #include "log_stage.hpp"
+#include "memory_report.hpp"
 #include "output_preflight.hpp"
 #include "progress_lines.hpp"
 #include "run_info.hpp"
@@ -138,6 +139,7 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
 
   const io::StaticResult result = collect_result(system, q.get(), report);
   print_summary(comm, m, result, report, system.dof_map().n_global(), seconds);
+  print_peak_memory(rank, peak_memory(comm), mpi_size(comm));
   {
     const LogStage stage("Output");
     io::write_static_result(comm, m.output.file, m, result, run_info(cl, system));

@@ -40,6 +40,7 @@
 #include "contact_summary.hpp"
 #include "initial_state.hpp"
 #include "log_stage.hpp"
+#include "memory_report.hpp"
 #include "modal_setup.hpp"
 #include "pantograph_travel.hpp"
 #include "progress_lines.hpp"
@@ -640,6 +641,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   // build), over the simulated time this process stepped: what `catena study` compares.
   run_statistics.emplace_back("stepping_wall_seconds", stepping);
   run_statistics.emplace_back("t_started", t_begin);
+  // Since the process started (a restart's own set-up included).
+  const PeakMemory memory = peak_memory(comm);
+  run_statistics.emplace_back("peak_memory_bytes_largest_rank", memory.largest_bytes);
+  run_statistics.emplace_back("peak_memory_bytes_total", memory.total_bytes);
   if (!observer.contact_resolution().empty()) {
     double roughest = 0.0;
     for (const post::ContactResolution& r : observer.contact_resolution())
@@ -672,6 +677,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         report.steps_rejected, report.smallest_dt, report.largest_dt, k.newton_iterations,
         k.factorizations, k.residual_evaluations, wall, stepping,
         stepping / std::max(report.t_reached - t_begin, 1e-300));
+    print_peak_memory(rank, memory, mpi_size(comm));
     if (realtime_summary) RealtimeMonitor::print(rank, *realtime_summary, m.output.interval);
     std::printf(
         "output: %s (%ld samples; ParaView: %s, or %s with the displacements), "
