@@ -82,12 +82,21 @@ RowSplit split_rows(Mat J) {
 
 // The solve. Per factorisation: this rank's interior block A_II (PETSc's LU, nested
 // dissection, the symbolic part once), W = A_II⁻¹ A_IΓ for the interface columns its
-// interior touches, and S = A_ΓΓ − Σ_ranks A_ΓI W, summed on every rank and factored there
-// (partial pivoting). Per solve: y = A_II⁻¹ b_I, x_Γ = S⁻¹ (b_Γ − Σ A_ΓI y), x_I = y − W x_Γ:
-// one interior solve, a product with W's few columns and one allreduce of n_Γ numbers.
+// interior touches, and S = A_ΓΓ − Σ_ranks A_CI W (C: the interface rows coupled to the
+// rank's interior). S is sparse — on a line each cut couples only to its neighbours, a hub
+// to everything — so every rank contributes a small dense block (C × touched columns) and
+// its own rows of A_ΓΓ; the terms are gathered on every rank, summed in rank order (the
+// same bits everywhere) into a sparse S and factored there by PETSc's LU (nested
+// dissection, symbolic once; no pivoting: S is a Schur complement of a matrix that needs
+// none). Per solve: y = A_II⁻¹ b_I, x_Γ = S⁻¹ (b_Γ − Σ A_CI y), x_I = y − W x_Γ: one
+// interior solve, a product with W's few columns and one allreduce of n_Γ numbers. What
+// grows with the rank count P: n_Γ (about 12 per cut on a cable line), the gathered terms
+// (P small blocks) and the allreduce (n_Γ numbers); a dense S would cost n_Γ² memory and
+// n_Γ³ work per factorisation on every rank.
 class InterfaceSchur {
  public:
-  InterfaceSchur(MPI_Comm comm, const RowSplit& split, PetscInt first) : comm_(comm) {
+  InterfaceSchur(MPI_Comm comm, const RowSplit& split, PetscInt first)
+      : comm_(comm), first_row_(first) {
     for (PetscInt row : split.interior) interior_local_.push_back(row - first);
     int size = 1;
     MPI_Comm_size(comm, &size);
@@ -111,7 +120,7 @@ class InterfaceSchur {
   }
 
   ~InterfaceSchur() {
-    if (blocks_) MatDestroySubMatrices(4, &blocks_);
+    if (blocks_) MatDestroySubMatrices(3, &blocks_);
   }
 
   long interface_size() const { return static_cast<long>(interface_.size()); }
@@ -127,15 +136,16 @@ class InterfaceSchur {
           "interface Schur solve: the matrix's nonzero pattern changed after its split "
           "(the split, the symbolic factorisation and W's columns rest on it)");
     pattern_ = pattern;
-    // The four blocks, one call: A_II, A_IΓ (this rank's rows), A_ΓI, A_ΓΓ (every interface
-    // row, fetched from its owner).
-    IS rows[4] = {interior_.get(), interior_.get(), interface_is_.get(), interface_is_.get()};
-    IS cols[4] = {interior_.get(), interface_is_.get(), interior_.get(), interface_is_.get()};
-    CATENA_PETSC(MatCreateSubMatrices(A, 4, rows, cols,
+    if (!blocks_) find_coupled_rows(A);
+    // The three blocks, one call: A_II, A_IΓ (this rank's rows), A_CI (the coupled interface
+    // rows, fetched from their owners).
+    IS rows[3] = {interior_.get(), interior_.get(), coupled_is_.get()};
+    IS cols[3] = {interior_.get(), interface_is_.get(), interior_.get()};
+    CATENA_PETSC(MatCreateSubMatrices(A, 3, rows, cols,
                                       blocks_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &blocks_));
-    const Mat Aii = blocks_[0], Aig = blocks_[1], Agi = blocks_[2], Agg = blocks_[3];
+    const Mat Aii = blocks_[0], Aig = blocks_[1], Aci = blocks_[2];
     const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
-    const auto n_g = static_cast<Eigen::Index>(interface_.size());
+    const auto n_c = static_cast<Eigen::Index>(coupled_position_.size());
     // The interior factorisation is this rank's alone; its outcome is agreed before the
     // collective work below, so that an error on one rank is an error on every rank, not a
     // hang: 2 factored, 1 a vanishing pivot, 0 an error.
@@ -143,28 +153,18 @@ class InterfaceSchur {
     std::string error_text;
     if (n_i > 0) {
       try {
-        // PCLU's defaults (MatFactorInfoInitialize zeroes them): a pivot below 100 ε is zero.
-        MatFactorInfo info;
-        CATENA_PETSC(MatFactorInfoInitialize(&info));
-        info.fill = 5.0;
-        info.zeropivot = 100.0 * PETSC_MACHINE_EPSILON;
-        info.pivotinblocks = 1.0;
         if (!factor_) {
           CATENA_PETSC(MatGetFactor(Aii, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
           CATENA_PETSC(MatGetOrdering(Aii, MATORDERINGND, row_order_.out(), column_order_.out()));
+          const MatFactorInfo info = factor_info();
           CATENA_PETSC(MatLUFactorSymbolic(factor_.get(), Aii, row_order_.get(),
                                            column_order_.get(), &info));
           touched_ = touched_columns(Aig);
           CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), b_interior_.out()));
           CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), y_interior_.out()));
-          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_g), t_interface_.out()));
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_c), t_coupled_.out()));
         }
-        CATENA_PETSC(MatFactorClearError(factor_.get()));  // a failure is not sticky
-        CATENA_PETSC(MatLUFactorNumeric(factor_.get(), Aii, &info));
-        MatFactorError error = MAT_FACTOR_NOERROR;
-        CATENA_PETSC(MatFactorGetError(factor_.get(), &error));
-        const bool ok_pivots = error == MAT_FACTOR_NOERROR;
-        outcome = ok_pivots ? 2 : 1;
+        outcome = factor_numeric(factor_.get(), Aii) ? 2 : 1;
       } catch (const std::exception& e) {
         outcome = 0;
         error_text = e.what();
@@ -176,74 +176,54 @@ class InterfaceSchur {
                                        "factorisation failed"
                                      : error_text);
     if (outcome == 1) return false;
-    // W = A_II⁻¹ A_IΓ on the touched columns, and this rank's part of S.
-    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n_g, n_g);
+    // This rank's terms of S, in an order that is the same at every setup (the pattern is):
+    // −A_CI W by touched column, then A_ΓΓ's entries of the interface rows it owns.
+    std::vector<PetscScalar> values;
+    std::vector<PetscInt> rows_of, columns_of;  // their places in S (first setup only)
+    const bool first = !schur_built_;
     const auto n_t = static_cast<Eigen::Index>(touched_.size());
     W_.resize(n_i, n_t);
     if (n_i > 0 && n_t > 0) {
-      MatHandle B, X;
-      CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), nullptr, B.out()));
-      CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), W_.data(), X.out()));
-      {
-        PetscScalar* b = nullptr;
-        CATENA_PETSC(MatDenseGetArrayWrite(B.get(), &b));
-        std::fill(b, b + n_i * n_t, 0.0);
-        std::vector<Eigen::Index> column_of(static_cast<std::size_t>(n_g), -1);
-        for (Eigen::Index k = 0; k < n_t; ++k) column_of[static_cast<std::size_t>(touched_[k])] = k;
-        for (PetscInt i = 0; i < n_i; ++i) {
-          PetscInt n = 0;
-          const PetscInt* c = nullptr;
-          const PetscScalar* v = nullptr;
-          CATENA_PETSC(MatGetRow(Aig, i, &n, &c, &v));
-          for (PetscInt k = 0; k < n; ++k) {
-            const Eigen::Index column = column_of[static_cast<std::size_t>(c[k])];
-            CATENA_ASSERT(column >= 0, "interface Schur solve: a column outside the pattern");
-            b[column * n_i + i] = v[k];
-          }
-          CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, &v));
-        }
-        CATENA_PETSC(MatDenseRestoreArrayWrite(B.get(), &b));
-      }
-      CATENA_PETSC(MatMatSolve(factor_.get(), B.get(), X.get()));
-      // −A_ΓI W, column by column (into the touched columns of S).
+      solve_for_touched_columns(Aig);
+      // −A_CI W, column by column: the coupled rows of the touched columns of S.
       VecHandle w;
       CATENA_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, petsc(n_i), nullptr, w.out()));
       for (Eigen::Index k = 0; k < n_t; ++k) {
         CATENA_PETSC(VecPlaceArray(w.get(), W_.col(k).data()));
-        CATENA_PETSC(MatMult(Agi, w.get(), t_interface_.get()));
+        CATENA_PETSC(MatMult(Aci, w.get(), t_coupled_.get()));
         CATENA_PETSC(VecResetArray(w.get()));
         const PetscScalar* t = nullptr;
-        CATENA_PETSC(VecGetArrayRead(t_interface_.get(), &t));
-        for (Eigen::Index r = 0; r < n_g; ++r) S(r, touched_[k]) -= t[r];
-        CATENA_PETSC(VecRestoreArrayRead(t_interface_.get(), &t));
+        CATENA_PETSC(VecGetArrayRead(t_coupled_.get(), &t));
+        for (Eigen::Index r = 0; r < n_c; ++r) {
+          values.push_back(-t[r]);
+          if (first) {
+            rows_of.push_back(petsc(coupled_position_[static_cast<std::size_t>(r)]));
+            columns_of.push_back(petsc(touched_[static_cast<std::size_t>(k)]));
+          }
+        }
+        CATENA_PETSC(VecRestoreArrayRead(t_coupled_.get(), &t));
       }
     }
-    // A_ΓΓ once (rank 0's copy), then the sum over ranks.
-    if (rank_ == 0)
-      for (PetscInt r = 0; r < n_g; ++r) {
-        PetscInt n = 0;
-        const PetscInt* c = nullptr;
-        const PetscScalar* v = nullptr;
-        CATENA_PETSC(MatGetRow(Agg, r, &n, &c, &v));
-        for (PetscInt k = 0; k < n; ++k) S(r, c[k]) += v[k];
-        CATENA_PETSC(MatRestoreRow(Agg, r, &n, &c, &v));
+    for (std::size_t k = 0; k < owned_local_.size(); ++k) {
+      const PetscInt row = owned_local_[k] + first_row_;
+      PetscInt n = 0;
+      const PetscInt* c = nullptr;
+      const PetscScalar* v = nullptr;
+      CATENA_PETSC(MatGetRow(A, row, &n, &c, &v));
+      for (PetscInt e = 0; e < n; ++e) {
+        const auto at = std::lower_bound(interface_.begin(), interface_.end(), c[e]);
+        if (at == interface_.end() || *at != c[e]) continue;
+        values.push_back(v[e]);
+        if (first) {
+          rows_of.push_back(petsc(owned_position_[k]));
+          columns_of.push_back(static_cast<PetscInt>(at - interface_.begin()));
+        }
       }
-    // Summed on rank 0 and broadcast, so that every rank factors the same bits and takes the
-    // same decision below.
-    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : S.data(), S.data(), static_cast<int>(S.size()),
-               MPI_DOUBLE, MPI_SUM, 0, comm_);
-    MPI_Bcast(S.data(), static_cast<int>(S.size()), MPI_DOUBLE, 0, comm_);
-    if (n_g > 0) {
-      schur_.compute(S);
-      // Partial pivoting reports no singularity by itself: a zero or non-finite pivot of U
-      // fails the factorisation (as a zero pivot fails PETSc's LU).
-      const Eigen::VectorXd pivots = schur_.matrixLU().diagonal();
-      const double largest = pivots.cwiseAbs().maxCoeff();
-      for (Eigen::Index k = 0; k < n_g; ++k)
-        if (!std::isfinite(pivots(k)) ||
-            std::abs(pivots(k)) <= 100.0 * PETSC_MACHINE_EPSILON * largest)
-          return false;
+      CATENA_PETSC(MatRestoreRow(A, row, &n, &c, &v));
     }
+    if (first) build_schur_pattern(rows_of, columns_of, values.size());
+    schur_built_ = true;
+    if (!assemble_and_factor_schur(values)) return false;
     ready_ = true;
     return true;
   }
@@ -270,15 +250,22 @@ class InterfaceSchur {
         bi[k] = bb[interior_local_[static_cast<std::size_t>(k)]];
       CATENA_PETSC(VecRestoreArrayWrite(b_interior_.get(), &bi));
       CATENA_PETSC(MatSolve(factor_.get(), b_interior_.get(), y_interior_.get()));
-      CATENA_PETSC(MatMult(blocks_[2], y_interior_.get(), t_interface_.get()));
+      CATENA_PETSC(MatMult(blocks_[2], y_interior_.get(), t_coupled_.get()));
       const PetscScalar* t = nullptr;
-      CATENA_PETSC(VecGetArrayRead(t_interface_.get(), &t));
-      r -= Eigen::Map<const Eigen::VectorXd>(t, n_g);
-      CATENA_PETSC(VecRestoreArrayRead(t_interface_.get(), &t));
+      CATENA_PETSC(VecGetArrayRead(t_coupled_.get(), &t));
+      for (std::size_t c = 0; c < coupled_position_.size(); ++c) r(coupled_position_[c]) -= t[c];
+      CATENA_PETSC(VecRestoreArrayRead(t_coupled_.get(), &t));
     }
     CATENA_PETSC(VecRestoreArrayRead(b, &bb));
     MPI_Allreduce(MPI_IN_PLACE, r.data(), static_cast<int>(n_g), MPI_DOUBLE, MPI_SUM, comm_);
-    const Eigen::VectorXd x_interface = n_g > 0 ? Eigen::VectorXd(schur_.solve(r)) : r;
+    Eigen::VectorXd x_interface(n_g);
+    if (n_g > 0) {
+      CATENA_PETSC(VecPlaceArray(r_interface_.get(), r.data()));
+      CATENA_PETSC(VecPlaceArray(x_interface_.get(), x_interface.data()));
+      CATENA_PETSC(MatSolve(schur_factor_.get(), r_interface_.get(), x_interface_.get()));
+      CATENA_PETSC(VecResetArray(x_interface_.get()));
+      CATENA_PETSC(VecResetArray(r_interface_.get()));
+    }
     PetscScalar* xx = nullptr;
     CATENA_PETSC(VecGetArray(x, &xx));
     if (n_i > 0) {
@@ -295,6 +282,144 @@ class InterfaceSchur {
   }
 
  private:
+  // PCLU's defaults (MatFactorInfoInitialize zeroes them): a pivot below 100 ε is zero.
+  static MatFactorInfo factor_info() {
+    MatFactorInfo info;
+    CATENA_PETSC(MatFactorInfoInitialize(&info));
+    info.fill = 5.0;
+    info.zeropivot = 100.0 * PETSC_MACHINE_EPSILON;
+    info.pivotinblocks = 1.0;
+    return info;
+  }
+
+  // The numeric LU of `matrix` into `factor` (its symbolic part done); false on a zero pivot
+  // (not sticky: the next factorisation starts clean).
+  static bool factor_numeric(Mat factor, Mat matrix) {
+    const MatFactorInfo info = factor_info();
+    CATENA_PETSC(MatFactorClearError(factor));
+    CATENA_PETSC(MatLUFactorNumeric(factor, matrix, &info));
+    MatFactorError error = MAT_FACTOR_NOERROR;
+    CATENA_PETSC(MatFactorGetError(factor, &error));
+    return error == MAT_FACTOR_NOERROR;
+  }
+
+  // First setup, collective: the interface rows with an entry in this rank's interior
+  // columns (the rows of A_ΓI that are not empty). Only they enter A_CI, so that later
+  // setups fetch a few rows per rank instead of every interface row.
+  void find_coupled_rows(Mat A) {
+    Mat* all = nullptr;
+    IS rows = interface_is_.get(), cols = interior_.get();
+    CATENA_PETSC(MatCreateSubMatrices(A, 1, &rows, &cols, MAT_INITIAL_MATRIX, &all));
+    std::vector<PetscInt> coupled;
+    const auto n_g = static_cast<PetscInt>(interface_.size());
+    for (PetscInt r = 0; r < n_g; ++r) {
+      PetscInt n = 0;
+      CATENA_PETSC(MatGetRow(all[0], r, &n, nullptr, nullptr));
+      if (n > 0) {
+        coupled.push_back(interface_[static_cast<std::size_t>(r)]);
+        coupled_position_.push_back(static_cast<Eigen::Index>(r));
+      }
+      CATENA_PETSC(MatRestoreRow(all[0], r, &n, nullptr, nullptr));
+    }
+    CATENA_PETSC(MatDestroySubMatrices(1, &all));
+    CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(coupled.size()),
+                                 coupled.data(), PETSC_COPY_VALUES, coupled_is_.out()));
+  }
+
+  // W = A_II⁻¹ A_IΓ on the touched columns (one multi-column solve).
+  void solve_for_touched_columns(Mat Aig) {
+    const auto n_i = W_.rows(), n_t = W_.cols();
+    MatHandle B, X;
+    CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), nullptr, B.out()));
+    CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), W_.data(), X.out()));
+    PetscScalar* b = nullptr;
+    CATENA_PETSC(MatDenseGetArrayWrite(B.get(), &b));
+    std::fill(b, b + n_i * n_t, 0.0);
+    std::vector<Eigen::Index> column_of(interface_.size(), -1);
+    for (Eigen::Index k = 0; k < n_t; ++k) column_of[static_cast<std::size_t>(touched_[k])] = k;
+    for (PetscInt i = 0; i < n_i; ++i) {
+      PetscInt n = 0;
+      const PetscInt* c = nullptr;
+      const PetscScalar* v = nullptr;
+      CATENA_PETSC(MatGetRow(Aig, i, &n, &c, &v));
+      for (PetscInt k = 0; k < n; ++k) {
+        const Eigen::Index column = column_of[static_cast<std::size_t>(c[k])];
+        CATENA_ASSERT(column >= 0, "interface Schur solve: a column outside the pattern");
+        b[column * n_i + i] = v[k];
+      }
+      CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, &v));
+    }
+    CATENA_PETSC(MatDenseRestoreArrayWrite(B.get(), &b));
+    CATENA_PETSC(MatMatSolve(factor_.get(), B.get(), X.get()));
+  }
+
+  // First setup, collective: S's sparse pattern from every rank's terms (their places,
+  // gathered in rank order), its diagonal always held, and where each gathered term lands.
+  void build_schur_pattern(const std::vector<PetscInt>& rows, const std::vector<PetscInt>& columns,
+                           std::size_t n_mine) {
+    int size = 1;
+    MPI_Comm_size(comm_, &size);
+    const int mine = static_cast<int>(n_mine);
+    term_counts_.assign(static_cast<std::size_t>(size), 0);
+    MPI_Allgather(&mine, 1, MPI_INT, term_counts_.data(), 1, MPI_INT, comm_);
+    term_offsets_.assign(term_counts_.size(), 0);
+    std::partial_sum(term_counts_.begin(), term_counts_.end() - 1, term_offsets_.begin() + 1);
+    const auto n_terms = static_cast<std::size_t>(term_offsets_.back() + term_counts_.back());
+    std::vector<PetscInt> all_rows(n_terms), all_columns(n_terms);
+    MPI_Allgatherv(rows.data(), mine, MPIU_INT, all_rows.data(), term_counts_.data(),
+                   term_offsets_.data(), MPIU_INT, comm_);
+    MPI_Allgatherv(columns.data(), mine, MPIU_INT, all_columns.data(), term_counts_.data(),
+                   term_offsets_.data(), MPIU_INT, comm_);
+    const auto n_g = static_cast<PetscInt>(interface_.size());
+    std::vector<std::pair<PetscInt, PetscInt>> entries;
+    entries.reserve(n_terms + static_cast<std::size_t>(n_g));
+    for (std::size_t k = 0; k < n_terms; ++k) entries.emplace_back(all_rows[k], all_columns[k]);
+    for (PetscInt i = 0; i < n_g; ++i) entries.emplace_back(i, i);
+    std::sort(entries.begin(), entries.end());
+    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+    schur_ia_.assign(static_cast<std::size_t>(n_g) + 1, 0);
+    schur_ja_.clear();
+    for (const auto& [row, column] : entries) {
+      ++schur_ia_[static_cast<std::size_t>(row) + 1];
+      schur_ja_.push_back(column);
+    }
+    std::partial_sum(schur_ia_.begin(), schur_ia_.end(), schur_ia_.begin());
+    schur_values_.assign(entries.size(), 0.0);
+    term_slot_.resize(n_terms);
+    for (std::size_t k = 0; k < n_terms; ++k)
+      term_slot_[k] = static_cast<PetscInt>(
+          std::lower_bound(entries.begin(), entries.end(), std::pair{all_rows[k], all_columns[k]}) -
+          entries.begin());
+    all_terms_.resize(n_terms);
+    CATENA_PETSC(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_g, n_g, schur_ia_.data(),
+                                           schur_ja_.data(), schur_values_.data(),
+                                           schur_matrix_.out()));
+    CATENA_PETSC(
+        MatGetFactor(schur_matrix_.get(), MATSOLVERPETSC, MAT_FACTOR_LU, schur_factor_.out()));
+    CATENA_PETSC(MatGetOrdering(schur_matrix_.get(), MATORDERINGND, schur_row_order_.out(),
+                                schur_column_order_.out()));
+    const MatFactorInfo info = factor_info();
+    CATENA_PETSC(MatLUFactorSymbolic(schur_factor_.get(), schur_matrix_.get(),
+                                     schur_row_order_.get(), schur_column_order_.get(), &info));
+    CATENA_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n_g, nullptr, r_interface_.out()));
+    CATENA_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n_g, nullptr, x_interface_.out()));
+  }
+
+  // Collective: every rank's terms gathered, summed into S in the same order on every rank
+  // (the same bits, so that every rank takes the same decision), S factored; false on a
+  // zero pivot.
+  bool assemble_and_factor_schur(const std::vector<PetscScalar>& mine) {
+    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all_terms_.data(),
+                   term_counts_.data(), term_offsets_.data(), MPI_DOUBLE, comm_);
+    PetscScalar* s = nullptr;
+    CATENA_PETSC(MatSeqAIJGetArray(schur_matrix_.get(), &s));
+    std::fill(s, s + schur_values_.size(), 0.0);
+    for (std::size_t k = 0; k < all_terms_.size(); ++k) s[term_slot_[k]] += all_terms_[k];
+    CATENA_PETSC(MatSeqAIJRestoreArray(schur_matrix_.get(), &s));
+    if (interface_.empty()) return true;
+    return factor_numeric(schur_factor_.get(), schur_matrix_.get());
+  }
+
   // The interface columns (positions) A_IΓ has entries in, ascending.
   static std::vector<Eigen::Index> touched_columns(Mat Aig) {
     PetscInt n_rows = 0, n_columns = 0;
@@ -315,20 +440,31 @@ class InterfaceSchur {
 
   MPI_Comm comm_;
   int rank_ = 0;
-  std::vector<PetscInt> interior_local_;      // this rank's interior rows, local numbers
-  std::vector<PetscInt> interface_;           // every rank's interface rows, global, ascending
-  std::vector<PetscInt> owned_local_;         // this rank's interface rows, local numbers
-  std::vector<Eigen::Index> owned_position_;  // ... and their places in interface_
-  IsHandle interior_, interface_is_;          // sequential index sets of global rows
-  Mat* blocks_ = nullptr;                     // A_II, A_IΓ, A_ΓI, A_ΓΓ
+  PetscInt first_row_ = 0;                         // this rank's first row, global
+  std::vector<PetscInt> interior_local_;           // this rank's interior rows, local numbers
+  std::vector<PetscInt> interface_;                // every rank's interface rows, global, ascending
+  std::vector<PetscInt> owned_local_;              // this rank's interface rows, local numbers
+  std::vector<Eigen::Index> owned_position_;       // ... and their places in interface_
+  std::vector<Eigen::Index> coupled_position_;     // places of the interface rows in A_CI
+  IsHandle interior_, interface_is_, coupled_is_;  // sequential index sets of global rows
+  Mat* blocks_ = nullptr;                          // A_II, A_IΓ, A_CI
   MatHandle factor_;
   IsHandle row_order_, column_order_;
   std::vector<Eigen::Index> touched_;
   Eigen::MatrixXd W_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+  // S, sparse (CSR arrays PETSc's matrix uses in place), and its LU.
+  std::vector<PetscInt> schur_ia_, schur_ja_;
+  std::vector<PetscScalar> schur_values_;
+  MatHandle schur_matrix_, schur_factor_;
+  IsHandle schur_row_order_, schur_column_order_;
+  // Every rank's terms of S: counts and offsets per rank, their places in S, the values.
+  std::vector<int> term_counts_, term_offsets_;
+  std::vector<PetscInt> term_slot_;
+  std::vector<PetscScalar> all_terms_;
   PetscObjectState pattern_ = 0;  // A's nonzero state at the first setup
   bool ready_ = false;            // the last setup succeeded
-  VecHandle b_interior_, y_interior_, t_interface_;
+  bool schur_built_ = false;      // S's pattern and symbolic factorisation made
+  VecHandle b_interior_, y_interior_, t_coupled_, r_interface_, x_interface_;
 };
 
 InterfaceSchur& context(PC pc) {

@@ -6,9 +6,10 @@
 // the rest (its interior). The interior rows of different ranks never couple, so each rank
 // factors its own interior block A_II with PETSc's LU (the fast solver of
 // docs/performance.md, "Direct solver"); the interface's Schur complement
-// S = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ is formed explicitly and factored on every rank. A line cut
-// into P pieces has an interface of a few nodes per cut, so S is small and the solve is a
-// direct one, independent of the rank count to round-off. Per solve, with W = A_II⁻¹ A_IΓ
+// S = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ is formed explicitly as a sparse matrix and factored on every
+// rank. A line cut into P pieces has an interface of a few nodes per cut, each coupled to
+// its neighbouring cuts only, so S is small and sparse and the solve is a direct one,
+// independent of the rank count to round-off. Per solve, with W = A_II⁻¹ A_IΓ
 // kept from the factorisation (its columns for the interface rows this rank's interior
 // touches):
 //   y = A_II⁻¹ b_I,   x_Γ = S⁻¹ (b_Γ − A_ΓI y),   x_I = y − W x_Γ,
@@ -21,11 +22,11 @@ namespace catena::solvers {
 // pattern (J square, assembled with its full pattern; MPIAIJ on more than one rank; call
 // once per KSP). It factors at every PCSetUp, i.e. whenever the operator's values changed
 // (a changed nonzero pattern is an error). A pivot under PCLU's zero-pivot threshold
-// (100 ε) in an interior block, or a zero or non-finite pivot of S, is the PC's failure
-// (PC_FACTOR_NUMERIC_ZEROPIVOT: the KSP reports KSP_DIVERGED_PC_FAILED and the solution is
-// NaN), which the next successful factorisation clears. An error on one rank (a PETSc
-// error in its interior factorisation) is thrown on every rank. Block solves (KSPMatSolve)
-// go column by column. Returns the number of interface rows (all ranks).
+// (100 ε) in an interior block or in S (both factored without pivoting) is the PC's
+// failure (PC_FACTOR_NUMERIC_ZEROPIVOT: the KSP reports KSP_DIVERGED_PC_FAILED and the
+// solution is NaN), which the next successful factorisation clears. An error on one rank
+// (a PETSc error in its interior factorisation) is thrown on every rank. Block solves
+// (KSPMatSolve) go column by column. Returns the number of interface rows (all ranks).
 long use_interface_schur(KSP ksp, Mat J);
 
 }  // namespace catena::solvers
