@@ -21,10 +21,18 @@ again reuses the runs already finished: delete the directory to measure anew).
 
   /usr/bin/python3 scaling/scaling_study.py OUT_DIR [--ranks 1,2] [--study strong,weak]
       [--strong-length M] [--weak-length-per-rank M] [--load-spacing M] [--steps N]
-      [--benchmark PATH] [--launcher "mpirun --oversubscribe -n {ranks}"] [-- BENCH_OPTS]
+      [--benchmark PATH] [--launcher "mpirun --oversubscribe -n {ranks}"] [--baseline]
+      [--single-launcher "mpirun --bind-to none -n 1"] [-- BENCH_OPTS]
 
 On a Slurm cluster: scaling/slurm/scaling_study.sbatch (srun as the launcher). Rank counts
 beyond the cores of the machine measure correctness and communication counts, not time.
+
+With --baseline the weak study also runs, for each rank count P > 1, P independent
+one-rank copies of its one-rank case at once (--single-launcher, default "mpirun
+--bind-to none -n 1"): they share the machine as the P ranks do but never communicate, so
+T(1) / T(P copies) (machine_step_efficiency) is what the machine's shared memory bandwidth
+and caches allow, and T(P copies) / T(P ranks) (step_efficiency_on_machine) is the part of
+the loss that is Catena's own (communication, imbalance).
 """
 import argparse
 import csv
@@ -47,7 +55,8 @@ MEASURED = ["method", "ranks", "length_m", "loads", "dofs", "dt", "steps", "newt
             "bytes_per_step", "reductions_per_step", "flops_per_step",
             "peak_memory_largest_bytes", "peak_memory_total_bytes", "final_motion"]
 DERIVED = ["study", "step_efficiency", "whole_run_efficiency", "step_speedup",
-           "memory_per_rank_ratio"]
+           "memory_per_rank_ratio", "baseline_step_s", "machine_step_efficiency",
+           "step_efficiency_on_machine"]
 COLUMNS = DERIVED[:1] + MEASURED + DERIVED[1:]
 
 
@@ -94,6 +103,10 @@ def parse(argv):
                    default=os.path.join(ROOT, "build", "scaling", "moving_load_benchmark"))
     p.add_argument("--launcher", default="mpirun --oversubscribe -n {ranks}",
                    help="the command that starts N ranks; {ranks} is replaced")
+    p.add_argument("--baseline", action="store_true",
+                   help="weak study: also run P independent one-rank copies at once")
+    p.add_argument("--single-launcher", default="mpirun --bind-to none -n 1",
+                   help="starts one of the baseline's independent one-rank copies")
     # After "--": options of the benchmark, passed on as they are.
     bench_options = argv[argv.index("--") + 1:] if "--" in argv else []
     args = p.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
@@ -123,9 +136,7 @@ def run_case(args, study, ranks, runs_dir):
         print(f"scaling_study: {name}: measured before ({record_path}), reused", flush=True)
         return record
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = (shlex.split(args.launcher.format(ranks=ranks)) +
-               [args.benchmark, "-length", f"{length:g}", "-load_spacing",
-                f"{args.load_spacing:g}", "-steps", str(args.steps)] + args.bench_options)
+    command = shlex.split(args.launcher.format(ranks=ranks)) + bench_command(args, length)
     print(f"scaling_study: {name}: {' '.join(command)}", flush=True)
     started = time.monotonic()
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -133,11 +144,10 @@ def run_case(args, study, ranks, runs_dir):
     log_path = os.path.join(runs_dir, name + ".log")
     with open(log_path, "w") as f:
         f.write(result.stdout)
-    lines = [l for l in result.stdout.splitlines() if l.startswith("SCALING ")]
-    if result.returncode != 0 or len(lines) != 1:
+    record = scaling_record(result.stdout)
+    if result.returncode != 0 or record is None:
         sys.exit(f"scaling_study: {name} failed (exit {result.returncode}); its output is in "
                  f"{log_path}")
-    record = json.loads(lines[0][len("SCALING "):])
     print(f"scaling_study: {name}: {record['dofs']} DOFs, step {1e3 * record['step_s']:.2f} ms, "
           f"whole run {record['whole_run_s']:.2f} s ({time.monotonic() - started:.0f} s)",
           flush=True)
@@ -146,6 +156,50 @@ def run_case(args, study, ranks, runs_dir):
         json.dump(record, f)
     os.replace(record_path + ".tmp", record_path)
     return record
+
+
+def bench_command(args, length):
+    return [args.benchmark, "-length", f"{length:g}", "-load_spacing", f"{args.load_spacing:g}",
+            "-steps", str(args.steps)] + args.bench_options
+
+
+def scaling_record(output):
+    lines = [l for l in output.splitlines() if l.startswith("SCALING ")]
+    return json.loads(lines[0][len("SCALING "):]) if len(lines) == 1 else None
+
+
+def run_baseline(args, ranks, runs_dir):
+    """The machine's own limit for the weak study: `ranks` independent one-rank copies of its
+    one-rank case at once (no communication between them). Their slowest step against the
+    one-rank step alone is what shared memory bandwidth and caches leave of the ideal."""
+    length = args.weak_length_per_rank
+    name = f"baseline_{ranks}x_{length:g}m"
+    record_path = os.path.join(runs_dir, name + ".json")
+    if os.path.exists(record_path):
+        with open(record_path) as f:
+            return json.load(f)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = shlex.split(args.single_launcher) + bench_command(args, length)
+    print(f"scaling_study: {name}: {ranks} at once of {' '.join(command)}", flush=True)
+    copies = [subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True) for _ in range(ranks)]
+    records = []
+    for k, copy in enumerate(copies):
+        output = copy.communicate()[0]
+        with open(os.path.join(runs_dir, f"{name}_copy{k + 1}.log"), "w") as f:
+            f.write(output)
+        record = scaling_record(output)
+        if copy.returncode != 0 or record is None:
+            sys.exit(f"scaling_study: {name}, copy {k + 1} failed (exit {copy.returncode}); "
+                     f"its output is in {runs_dir}")
+        records.append(record)
+    slowest = max(records, key=lambda r: r["step_s"])
+    print(f"scaling_study: {name}: slowest copy's step {1e3 * slowest['step_s']:.2f} ms",
+          flush=True)
+    with open(record_path + ".tmp", "w") as f:
+        json.dump(slowest, f)
+    os.replace(record_path + ".tmp", record_path)
+    return slowest
 
 
 def with_efficiencies(study, records):
@@ -206,7 +260,16 @@ def main(argv):
     rows = []
     for study in args.study:
         records = [run_case(args, study, ranks, runs_dir) for ranks in args.ranks]
-        rows += with_efficiencies(study, records)
+        study_rows = with_efficiencies(study, records)
+        if study == "weak" and args.baseline:
+            for row in study_rows:
+                if row["ranks"] == 1:
+                    continue
+                base = run_baseline(args, row["ranks"], runs_dir)
+                row["baseline_step_s"] = base["step_s"]
+                row["machine_step_efficiency"] = study_rows[0]["step_s"] / base["step_s"]
+                row["step_efficiency_on_machine"] = base["step_s"] / row["step_s"]
+        rows += study_rows
     csv_path = os.path.join(args.out_dir, "scaling.csv")
     with open(csv_path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
@@ -215,12 +278,17 @@ def main(argv):
     png_path = os.path.join(args.out_dir, "scaling_efficiency.png")
     plot(rows, png_path)
     print(f"{'study':6} {'ranks':>5} {'DOFs':>9} {'step ms':>8} {'eff':>5} {'whole s':>8} "
-          f"{'eff':>5} {'iface':>5} {'MiB/rank':>8}")
+          f"{'eff':>5} {'iface':>5} {'MiB/rank':>8} {'machine':>7} {'own':>5}")
     for r in rows:
+        machine = (f" {r['machine_step_efficiency']:7.2f} {r['step_efficiency_on_machine']:5.2f}"
+                   if "machine_step_efficiency" in r else "")
         print(f"{r['study']:6} {r['ranks']:5d} {r['dofs']:9d} {1e3 * r['step_s']:8.2f} "
               f"{r['step_efficiency']:5.2f} {r['whole_run_s']:8.2f} "
               f"{r['whole_run_efficiency']:5.2f} {r['interface_rows']:5d} "
-              f"{r['peak_memory_largest_bytes'] / 2**20:8.0f}")
+              f"{r['peak_memory_largest_bytes'] / 2**20:8.0f}{machine}")
+    print("(eff: parallel efficiency of the step and of the whole run; with --baseline, machine:"
+          " what P independent copies keep of one alone, own: the weak step's efficiency"
+          " against them)")
     print(f"scaling_study: {csv_path}, {png_path}")
 
 

@@ -3,7 +3,8 @@
 
   check_scaling_study.py BENCHMARK MPIEXEC WORK_DIR
 
-Checks: the CSV has the documented columns and a row per study and rank count; the strong
+Checks: the CSV has the documented columns and a row per study and rank count (with the
+weak study's baseline of independent copies); the strong
 study keeps the line and its answer (the final motion agrees across rank counts to the
 Newton tolerance), the weak study grows the line and its loads with the ranks; the
 efficiencies are the ratios of the measured times; one rank has no interface and sends no
@@ -51,7 +52,7 @@ def main():
     launcher = f"{mpiexec} --oversubscribe -n {{ranks}}"
     command = [sys.executable, STUDY, out, "--ranks", "1,2", "--strong-length", "500",
                "--weak-length-per-rank", "250", "--load-spacing", "250", "--steps", "4",
-               "--benchmark", benchmark, "--launcher", launcher]
+               "--benchmark", benchmark, "--launcher", launcher, "--baseline"]
     first = run(command)
     print(first.stdout)
     check(first.returncode == 0, "the study runs (exit 0)")
@@ -87,11 +88,17 @@ def main():
     check(int(s2["interface_rows"]) > 0 and float(s2["messages_per_step"]) > 0 and
           float(s2["reductions_per_step"]) > 0, "two ranks: an interface, messages, reductions")
     check(float(s2["peak_memory_largest_bytes"]) > 1e6, "peak memory reported")
+    product = float(w2["machine_step_efficiency"]) * float(w2["step_efficiency_on_machine"])
+    check(abs(product - float(w2["step_efficiency"])) <= 1e-9 * product and
+          float(w2["baseline_step_s"]) > 0 and s2["baseline_step_s"] == "",
+          "weak, 2 ranks: the baseline of two independent copies, and the step's efficiency "
+          "as the machine's times Catena's own")
     check(os.path.getsize(os.path.join(out, "scaling_efficiency.png")) > 1000, "the plot")
 
     second = run(command)
-    check(second.returncode == 0 and second.stdout.count("measured before") == 4,
-          "a second invocation reuses the four finished runs")
+    check(second.returncode == 0 and second.stdout.count("measured before") == 4 and
+          "at once" not in second.stdout,
+          "a second invocation reuses the four finished runs and the baseline")
     check(rows_of(csv_path) == rows, "... and writes the same table")
 
     for bad, says in ((["--ranks", "0,2"], "--ranks"), (["--study", "both"], "--study"),
