@@ -383,10 +383,10 @@ int main(int argc, char** argv) {
         o.length, o.element, model.elements.size(),
         static_cast<long long>(system.dof_map().n_global()), size);
     std::printf(
-        "  %s, dt %g s, %d steps (%ld rejected); load %g N upward at %g m/s from "
-        "x = %g m\n",
+        "  %s, dt %g s, %d steps (%ld rejected); %zu load(s) of %g N upward at %g m/s, the "
+        "first from x = %g m\n",
         method.c_str(), o.dt, static_cast<int>(timer.seconds.size()), report.steps_rejected,
-        o.force, o.speed, o.start);
+        load_starts(o).size(), o.force, o.speed, load_starts(o).front());
     std::printf(
         "  static equilibrium %.2f s (%d load steps, %d Newton iterations); set_state "
         "%.2f s; first step %.2f s (%.0f symbolic analyses)\n",
@@ -455,14 +455,15 @@ int main(int argc, char** argv) {
         "\"messages_per_step\": %.6g, \"bytes_per_step\": %.9g, "
         "\"reductions_per_step\": %.6g, \"flops_per_step\": %.9g, "
         "\"peak_memory_largest_bytes\": %.17g, \"peak_memory_total_bytes\": %.17g, "
-        "\"final_motion\": %.17g}\n",
+        "\"final_motion\": %.17g, \"local_newton_s\": %.9g}\n",
         method.c_str(), size, o.length, load_starts(o).size(),
         static_cast<long long>(system.dof_map().n_global()), o.dt, n_rest + 1,
         per_step(total.newton_iterations, k1.newton_iterations), t_step, timer.seconds.front(),
         whole_run, t_static, t_residual, t_solve, t_factor,
         per_step(total.factorizations, k1.factorizations), each(force), solve_each, n_interface,
         traffic.messages / n_rest, traffic.bytes / n_rest, traffic.reductions / n_rest,
-        traffic.flops / n_rest, memory.largest_bytes, memory.total_bytes, motion);
+        traffic.flops / n_rest, memory.largest_bytes, memory.total_bytes, motion,
+        local.seconds / n_rest);
     // CSV: method, ranks, DOFs, dt, steps, then per step after the first: Newton iterations,
     // residuals, tangents, factorisations, solve pairs, step s; first step s; unit residual
     // s, unit HHT solve pair s, in-run residual s, in-run solve pair s, both ratios.

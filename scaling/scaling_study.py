@@ -53,7 +53,7 @@ MEASURED = ["method", "ranks", "length_m", "loads", "dofs", "dt", "steps", "newt
             "solve_pair_s", "factorisation_s", "factorisations_per_step",
             "residual_in_run_s", "solve_in_run_s", "interface_rows", "messages_per_step",
             "bytes_per_step", "reductions_per_step", "flops_per_step",
-            "peak_memory_largest_bytes", "peak_memory_total_bytes", "final_motion"]
+            "peak_memory_largest_bytes", "peak_memory_total_bytes", "final_motion", "local_newton_s"]
 DERIVED = ["study", "step_efficiency", "whole_run_efficiency", "step_speedup",
            "memory_per_rank_ratio", "baseline_step_s", "machine_step_efficiency",
            "step_efficiency_on_machine"]

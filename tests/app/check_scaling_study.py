@@ -9,7 +9,8 @@ study keeps the line and its answer (the final motion agrees across rank counts 
 Newton tolerance), the weak study grows the line and its loads with the ranks; the
 efficiencies are the ratios of the measured times; one rank has no interface and sends no
 messages, two ranks have both; a second invocation reuses the finished runs; bad options
-are refused with a message; the Slurm script runs the powers of two up to its task count
+are refused with a message; the performance model fitted to the study reproduces its
+two-rank step and projects to 1024 ranks; the Slurm script runs the powers of two up to its task count
 through srun (a fake one that starts mpirun).
 """
 import csv
@@ -22,6 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 STUDY = os.path.join(ROOT, "scaling", "scaling_study.py")
 SBATCH = os.path.join(ROOT, "scaling", "slurm", "scaling_study.sbatch")
+MODEL = os.path.join(ROOT, "scaling", "performance_model.py")
 
 failures = []
 
@@ -94,6 +96,25 @@ def main():
           "weak, 2 ranks: the baseline of two independent copies, and the step's efficiency "
           "as the machine's times Catena's own")
     check(os.path.getsize(os.path.join(out, "scaling_efficiency.png")) > 1000, "the plot")
+
+    # The performance model fitted to this study: at 2 ranks it reproduces the measured
+    # step (its waiting term is fitted there, unless the model already predicts more), and
+    # it projects to 1024 ranks.
+    model = run([sys.executable, MODEL, csv_path, "--cores", "2", "--ranks", "1,2,1024"])
+    print(model.stdout)
+    check(model.returncode == 0, "the performance model runs on the study (exit 0)")
+    for study in ("strong", "weak"):
+        block = model.stdout.split(f"{study} scaling")[1].split("scaling (")[0]
+        lines = {int(l.split()[0]): l.split() for l in block.splitlines()
+                 if l.strip() and l.split()[0].isdigit()}
+        check(sorted(lines) == [1, 2, 1024], f"model, {study}: rows 1, 2, 1024")
+        if sorted(lines) == [1, 2, 1024]:
+            check(float(lines[1][5]) == 1.0 and
+                  float(lines[2][5]) <= float(lines[2][6]) + 0.011,
+                  f"model, {study}: efficiency 1 at one rank and at most the measured at two "
+                  f"({lines[2][5]} against {lines[2][6]})")
+    bad = run([sys.executable, MODEL, os.path.join(work, "no_such.csv")])
+    check(bad.returncode != 0 and "no_such.csv" in bad.stdout, "model: a missing file is named")
 
     second = run(command)
     check(second.returncode == 0 and second.stdout.count("measured before") == 4 and
