@@ -150,7 +150,7 @@ std::string padded(const std::string& text, std::size_t width) {
 
 // The ranges' table of one pantograph: each statistic, its value, the range and ✓ or ✗.
 void print_acceptance(const PantographEvaluation& e, const post::EvaluationSection& run_section) {
-  const double speed_kmh = e.pantograph->speed * kmh_per_ms;
+  const double speed_kmh = std::abs(e.pantograph->speed) * kmh_per_ms;  // either direction
   if (!e.statistics) return;
   if (!e.acceptance) {
     std::printf("\n%s at %g km/h: EN 50318 gives acceptance ranges at 250 and 300 km/h only\n",

@@ -145,7 +145,7 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
       rethrow_naming_file(error, args.file);
     }
     if (e.statistics && out.ranges == "en50318")
-      e.acceptance = post::check_en50318(*e.statistics, p.speed * kmh_per_ms);
+      e.acceptance = post::check_en50318(*e.statistics, std::abs(p.speed) * kmh_per_ms);
     out.pantographs.push_back(std::move(e));
   }
   const bool any = std::any_of(out.pantographs.begin(), out.pantographs.end(),

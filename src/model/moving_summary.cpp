@@ -27,7 +27,8 @@ std::string path_sets(const Model& m, const std::vector<int>& elements) {
 }
 
 std::string speed_text(double speed) {
-  return cat(format_number(speed), " m/s (", format_number(speed * 3.6), " km/h)");
+  return cat(format_number(std::abs(speed)), " m/s (", format_number(std::abs(speed) * 3.6),
+             " km/h)", speed < 0.0 ? " backward (toward decreasing arc length)" : "");
 }
 
 // Where something moving at `speed` from `start` (m along a path of length `length`, at
@@ -38,14 +39,16 @@ struct OnPath {
 };
 OnPath on_path(double start, double speed, double t0, double t_end, double length) {
   OnPath o;
-  if (speed <= 0.0) {
+  if (speed == 0.0) {
     o.ever = start >= 0.0 && start <= length;
     o.t_enter = t0;
     o.t_leave = t_end;
     return o;
   }
-  o.t_enter = std::max(t0, t0 + (0.0 - start) / speed);
-  o.t_leave = std::min(t_end, t0 + (length - start) / speed);
+  // Forward it enters at arc length 0 and leaves at the end; backward the other way round.
+  const double enter_at = speed > 0.0 ? 0.0 : length, leave_at = speed > 0.0 ? length : 0.0;
+  o.t_enter = std::max(t0, t0 + (enter_at - start) / speed);
+  o.t_leave = std::min(t_end, t0 + (leave_at - start) / speed);
   o.ever = o.t_enter <= o.t_leave;
   return o;
 }
@@ -60,10 +63,11 @@ std::string on_path_text(const OnPath& o, double start, double speed, double t0)
 // Warning when a load or pantograph runs off the end of its path before the analysis ends.
 void warn_path_end(const std::string& what, double start, double speed, double t0, double t_end,
                    double length, SummaryNotes& notes) {
-  if (speed <= 0.0 || start > length) return;
-  const double t_leave = t0 + (length - start) / speed;
+  if (speed == 0.0 || (speed > 0.0 && start > length) || (speed < 0.0 && start < 0.0)) return;
+  const double t_leave = t0 + ((speed > 0.0 ? length : 0.0) - start) / speed;
   if (t_leave >= t_end) return;
-  notes.warnings.push_back(cat(what, " runs beyond the end of its path (", format_number(length),
+  notes.warnings.push_back(cat(what, " runs beyond the ", speed > 0.0 ? "end" : "start",
+                               " of its path (", format_number(speed > 0.0 ? length : 0.0),
                                " m) at t = ", format_number(t_leave),
                                " s, before the analysis ends at ", format_number(t_end),
                                " s: it acts on nothing from then on"));
@@ -74,15 +78,19 @@ void warn_path_end(const std::string& what, double start, double speed, double t
 void warn_evaluation(const Model& m, const MovingContact& c, double t_end, SummaryNotes& notes) {
   const double a = m.evaluation_start, b = m.evaluation_end;
   const double s0 = c.start, s1 = c.start + c.speed * t_end;
-  if (s0 <= a && s1 >= b) return;
+  if (std::min(s0, s1) <= a && std::max(s0, s1) >= b) return;
   std::string text =
       cat("pantograph '", c.name, "' does not traverse the evaluation section (", format_number(a),
           " m to ", format_number(b), " m) within the analysis: it covers ", format_number(s0),
           " m to ", format_number(s1), " m in ", format_number(t_end), " s");
-  if (s0 > a) text += cat("; it starts ", format_number(s0 - a), " m inside or beyond it");
-  if (s1 < b && c.speed > 0.0)
-    text += cat("; reaching ", format_number(b),
-                " m needs analysis.duration >= ", format_number((b - s0) / c.speed), " s");
+  // Forward it enters the section at a and leaves at b; backward at b and a.
+  const double entry = c.speed >= 0.0 ? a : b, exit = c.speed >= 0.0 ? b : a;
+  const double ahead = c.speed >= 0.0 ? 1.0 : -1.0;  // along the direction of travel
+  if ((s0 - entry) * ahead > 0.0)
+    text += cat("; it starts ", format_number(std::abs(s0 - entry)), " m inside or beyond it");
+  if ((exit - s1) * ahead > 0.0 && c.speed != 0.0)
+    text += cat("; reaching ", format_number(exit),
+                " m needs analysis.duration >= ", format_number((exit - s0) / c.speed), " s");
   notes.warnings.push_back(text);
 }
 

@@ -99,8 +99,8 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
   std::set<std::string> names;
   for (const Field& entry : pantographs.items()) {
     entry.expect_map("a pantograph {name, path, speed or speed_kmh, start, static_force, ...}");
-    entry.check_keys({"name", "path", "line", "speed", "speed_kmh", "start", "static_force",
-                      "aerodynamic_coefficient", "model", "stages", "contact"});
+    entry.check_keys({"name", "path", "line", "speed", "speed_kmh", "direction", "start",
+                      "static_force", "aerodynamic_coefficient", "model", "stages", "contact"});
     MovingContact c;
     c.name = entry.child("name").text();
     if (!names.insert(c.name).second)
@@ -119,7 +119,7 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       m.paths.push_back(own);
       c.path = static_cast<int>(m.paths.size()) - 1;
     }
-    c.speed = read_speed(entry);
+    c.speed = read_path_velocity(entry);
     double path_length = 0.0;
     path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, path_length);
     // A start outside [0, path length] is a pantograph that reaches (or has left) the wire

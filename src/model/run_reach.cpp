@@ -21,7 +21,7 @@ RunReach read_run_reach(const Field& scene, const Field& why) {
   bool any = false;
   for (const Field& entry : scene.child("pantographs").items()) {
     if (!entry.is_map() || entry.child("path").text_or("") != kContactWirePath) continue;
-    const double v = read_speed(entry);
+    const double v = read_path_velocity(entry);
     const double start = entry.child("start").real_or(0.0, RealRange::any("m"));
     const double farthest = std::max(start, start + v * reach.duration);
     if (!any || farthest > reach.farthest) {

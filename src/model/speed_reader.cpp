@@ -20,4 +20,15 @@ double read_speed(const Field& entry) {
   return speed_kmh.real(RealRange::non_negative("km/h")) * kMetresPerSecondPerKmh;
 }
 
+double read_path_velocity(const Field& entry) {
+  const double speed = read_speed(entry);
+  const Field direction = entry.child("direction");
+  const std::string text = direction.text_or("forward");
+  if (text == "forward") return speed;
+  if (text == "backward") return -speed;
+  direction.fail("unknown direction '" + text +
+                 "'; accepted: forward (toward increasing arc length along the path, the "
+                 "default) or backward");
+}
+
 }  // namespace catena::model::detail

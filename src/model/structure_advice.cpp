@@ -55,13 +55,15 @@ std::vector<std::string> followers(const Model& m) {
     const MovingContact* ahead = nullptr;
     for (const MovingContact& o : m.contacts)
       // Moving the same way at the same speed (to round-off: speed and speed_kmh), ahead.
-      if (&o != &c && o.path == c.path && c.speed > 0.0 &&
-          std::abs(o.speed - c.speed) <= 1e-9 * c.speed && o.start > c.start &&
-          (!ahead || o.start < ahead->start))
+      // (either direction: "ahead" is along the travel, forward or backward).
+      if (&o != &c && o.path == c.path && c.speed != 0.0 &&
+          std::abs(o.speed - c.speed) <= 1e-9 * std::abs(c.speed) &&
+          (o.start - c.start) * c.speed > 0.0 &&
+          (!ahead || std::abs(o.start - c.start) < std::abs(ahead->start - c.start)))
         ahead = &o;
     if (ahead)
-      out.push_back(cat("'", c.name, "' ", format_number(ahead->start - c.start), " m behind '",
-                        ahead->name, "'"));
+      out.push_back(cat("'", c.name, "' ", format_number(std::abs(ahead->start - c.start)),
+                        " m behind '", ahead->name, "'"));
   }
   return out;
 }
@@ -111,9 +113,9 @@ void advise_structure(const Model& m, SummaryTable& t) {
   t.heading("Advice (from the scene alone; docs/accuracy.md, \"Choosing a structure model\"):");
   double worst_ratio = 0.0;
   for (const MovingContact& c : m.contacts) {
-    const double ratio = c.speed / wave.speed();
+    const double ratio = std::abs(c.speed) / wave.speed();
     worst_ratio = std::max(worst_ratio, ratio);
-    t.row(c.name, cat(format_number(c.speed * 3.6), " km/h is ", ratio_text(ratio),
+    t.row(c.name, cat(format_number(std::abs(c.speed) * 3.6), " km/h is ", ratio_text(ratio),
                       " of the contact wire's wave speed sqrt(T/mu) = ",
                       format_number(wave.speed() * 3.6), " km/h",
                       ratio > kEn50119Ratio ? " (above EN 50119's 70 %: expect large uplift "

@@ -194,7 +194,7 @@ struct MovingContact {
   std::string name;         // the pantograph's name
   int head_node = 0;        // node index of the head
   int path = 0;             // index into Model::paths
-  double speed = 0.0;       // m/s
+  double speed = 0.0;       // m/s along the path: < 0 runs backward (direction: backward)
   double start = 0.0;       // m along the path at t = 0
   double stiffness = 0.0;   // N/m, k_c > 0
   double damping = 0.0;     // N·s/m (acts only in contact)
