@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 #include "catena/core/error.hpp"
 #include "catena/elements/hermite.hpp"
@@ -17,23 +18,38 @@ PantographContact::PantographContact(const model::Model& model, int index)
     : index_(index), contact_(model.contacts[static_cast<size_t>(index)]) {
   const std::vector<int>& path = model.paths[static_cast<size_t>(contact_.path)].elements;
   stations_ = model::path_stations(model, path);
+  reach_ = model::contact_reach(model, contact_, stations_);
   for (int k = 0; k < 3; ++k) dofs_.push_back(DofKey::node(contact_.head_node, k));
-  // Each path node once, ascending, with its position and slope (6 DOFs).
+  // Each node of the reach once, ascending, with its position and slope (6 DOFs).
   const std::vector<int> counts = model::all_node_dofs(model);
   std::map<int, int> first_dof;
-  for (int e : path)
-    for (int node : model.elements[static_cast<size_t>(e)].nodes) first_dof[node] = 0;
+  for (std::size_t i = 0; i < path.size(); ++i)
+    if (reach_.contains(i))
+      for (int node : model.elements[static_cast<size_t>(path[i])].nodes) first_dof[node] = 0;
   for (auto& [node, first] : first_dof) {
     CATENA_ASSERT(counts[static_cast<size_t>(node)] >= 6,
                   "a contact's path is made of cable or beam elements");
     first = static_cast<int>(dofs_.size());
     for (int k = 0; k < 6; ++k) dofs_.push_back(DofKey::node(node, k));
   }
-  for (int e : path) {
-    const std::vector<int>& nodes = model.elements[static_cast<size_t>(e)].nodes;
-    element_a_.push_back(first_dof[nodes.front()]);
-    element_b_.push_back(first_dof[nodes.back()]);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const std::vector<int>& nodes = model.elements[static_cast<size_t>(path[i])].nodes;
+    element_a_.push_back(reach_.contains(i) ? first_dof[nodes.front()] : -1);
+    element_b_.push_back(reach_.contains(i) ? first_dof[nodes.back()] : -1);
   }
+}
+
+std::size_t PantographContact::element_in_reach(double t) const {
+  const double s = position(t);
+  const std::size_t e = stations_.element_at(s);
+  if (!reach_.contains(e)) {
+    std::ostringstream os;
+    os << "pantograph '" << contact_.name << "': its contact point at t = " << t << " s (" << s
+       << " m along its path) is beyond the part of the path prepared for the run (from its "
+          "start, speed and analysis.duration)";
+    throw Error(os.str());
+  }
+  return e;
 }
 
 void PantographContact::pattern(std::vector<std::pair<int, int>>& entries) const {
@@ -49,7 +65,7 @@ void PantographContact::pattern(std::vector<std::pair<int, int>>& entries) const
 void PantographContact::active_dofs(double t, std::vector<int>& positions) const {
   positions.clear();
   if (!on_path(t)) return;
-  const size_t e = stations_.element_at(position(t));
+  const size_t e = element_in_reach(t);
   for (int k = 0; k < 3; ++k) positions.push_back(k);
   for (int first : {element_a_[e], element_b_[e]})
     for (int k = 0; k < 6; ++k) positions.push_back(first + k);
@@ -57,7 +73,7 @@ void PantographContact::active_dofs(double t, std::vector<int>& positions) const
 
 void PantographContact::directions(double t, double* N, double* D) const {
   const double s = position(t);
-  const size_t e = stations_.element_at(s);
+  const size_t e = element_in_reach(t);
   const double L = stations_.element_length(e);
   const elements::HermiteAt h = elements::hermite_at(std::clamp(s - stations_.start[e], 0.0, L), L);
   for (int k = 0; k < 3; ++k) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "catena/model/node_kinds.hpp"
+#include "catena/model/path_stations.hpp"
 
 namespace catena::model {
 namespace {
@@ -58,10 +59,14 @@ ProblemSize problem_size(const Model& model) {
       kMultipliersPerConstraint * static_cast<std::int64_t>(model.constraints.size());
   size.dofs += multipliers;
   size.matrix_nonzeros += 2 * multipliers * kMaxBlockUnknowns;
-  // A pantograph head is coupled to every node of its path (moving_contacts.hpp).
-  for (const MovingContact& c : model.contacts)
-    size.matrix_nonzeros +=
-        2 * 3 * 6 * static_cast<std::int64_t>(model.paths[c.path].elements.size() + 1);
+  // A pantograph head is coupled to every node of the part of its path it can reach
+  // (couplings/pantograph_contact.hpp).
+  for (const MovingContact& c : model.contacts) {
+    const std::vector<int>& path = model.paths[static_cast<std::size_t>(c.path)].elements;
+    const PathReach reach = contact_reach(model, c, path_stations(model, path));
+    if (!reach.empty)
+      size.matrix_nonzeros += 2 * 3 * 6 * static_cast<std::int64_t>(reach.last - reach.first + 2);
+  }
   size.factor_multiple = integrator_factor_multiple(model);
   return size;
 }

@@ -44,4 +44,19 @@ Vec3 path_point(const Model& model, const std::vector<int>& elements, const Path
   return a + xi * (b - a);
 }
 
+PathReach contact_reach(const Model& model, const MovingContact& contact,
+                        const PathStations& stations) {
+  constexpr double kMargin = 1.0;  // m: far above round-off in start + speed·t
+  const double t_end =
+      model.analysis == AnalysisType::dynamic ? model.dynamic_options.duration : 0.0;
+  const double s0 = contact.start, s1 = contact.start + contact.speed * t_end;
+  const double low = std::min(s0, s1) - kMargin, high = std::max(s0, s1) + kMargin;
+  PathReach r;
+  if (stations.start.size() < 2 || high < 0.0 || low > stations.length()) return r;
+  r.first = stations.element_at(std::max(low, 0.0));
+  r.last = stations.element_at(std::min(high, stations.length()));
+  r.empty = false;
+  return r;
+}
+
 }  // namespace catena::model

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "catena/core/error.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"
@@ -18,10 +20,12 @@ using couplings::MatrixRequest;
 using couplings::PantographContact;
 
 // A 10 m wire of 5 cables along x and a head node below it, the head travelling at 20 m/s
-// from 3.1 m (inside element 1, [2, 4] m).
+// from 3.1 m (inside element 1, [2, 4] m) for `duration` s: by 0.5 s it has left the path.
 struct ContactModel {
   model::Model m;
-  ContactModel(double stiffness = 5e4, double damping = 80.0) {
+  ContactModel(double stiffness = 5e4, double damping = 80.0, double duration = 0.5) {
+    m.analysis = model::AnalysisType::dynamic;
+    m.dynamic_options.duration = duration;
     model::CableProps cable;
     cable.EA = 1e7;
     cable.EI = 100.0;
@@ -62,7 +66,9 @@ std::vector<double> reference_active(const model::Model& m, const PantographCont
 TEST(PantographContact, ActsOnTheHeadAndTheWireElementUnderIt) {
   ContactModel cm;
   const PantographContact c(cm.m, 0);
-  EXPECT_EQ(c.dofs().size(), 3u + 6u * 6u);  // head + 6 wire nodes with slopes
+  // The head and the wire nodes it reaches with their slopes: from 3.1 − 1 m on, element 1
+  // to the end, nodes 1 to 5 (node 0 is never under it).
+  EXPECT_EQ(c.dofs().size(), 3u + 5u * 6u);
   std::vector<int> active;
   c.active_dofs(0.0, active);  // s = 3.1 m: element 1, nodes 1 and 2
   ASSERT_EQ(active.size(), 15u);
@@ -130,7 +136,7 @@ TEST(PantographContact, JacobiansMatchFiniteDifferences) {
   for (double x : K) EXPECT_EQ(x, 0.0);
 }
 
-TEST(PantographContact, PatternCouplesTheHeadWithTheWholePath) {
+TEST(PantographContact, PatternCouplesTheHeadWithThePathItReaches) {
   ContactModel cm;
   const PantographContact c(cm.m, 0);
   std::vector<std::pair<int, int>> entries;
@@ -138,6 +144,29 @@ TEST(PantographContact, PatternCouplesTheHeadWithTheWholePath) {
   const int n = static_cast<int>(c.dofs().size());
   EXPECT_EQ(entries.size(), static_cast<size_t>(3 * n + 3 * (n - 3)));
   for (auto [r, col] : entries) EXPECT_TRUE(r < 3 || col < 3);
+}
+
+// A short run reaches part of the path only: the pattern holds those nodes, and a contact
+// point beyond them (a time past the analysis) is an error that names the pantograph, not
+// entries outside the pattern.
+TEST(PantographContact, AShortRunCouplesTheHeadToThePartOfThePathItCrosses) {
+  ContactModel cm(5e4, 80.0, 0.05);  // s from 3.1 to 4.1 m: with the 1 m margin, [2.1, 5.1]
+  cm.m.contacts[0].name = "leading";
+  const PantographContact c(cm.m, 0);
+  EXPECT_EQ(c.dofs().size(), 3u + 3u * 6u);  // elements 1 and 2: nodes 1, 2, 3
+  std::vector<int> active;
+  c.active_dofs(0.05, active);
+  EXPECT_EQ(active.size(), 15u);
+  try {
+    c.active_dofs(0.3, active);  // s = 9.1 m, on the path but never reached in the run
+    ADD_FAILURE() << "no error beyond the reach";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("pantograph 'leading'"), std::string::npos) << e.what();
+  }
+  // A static analysis: the pantograph standing at its start.
+  cm.m.analysis = model::AnalysisType::static_equilibrium;
+  const PantographContact standing(cm.m, 0);
+  EXPECT_EQ(standing.dofs().size(), 3u + 3u * 6u);  // [2.1, 4.1]: elements 1 and 2
 }
 
 }  // namespace

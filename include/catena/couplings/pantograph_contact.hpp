@@ -11,8 +11,9 @@
 // The head pushes the wire up and the wire pushes the head down, both through N.
 //
 // One rank evaluates a contact (the owner of the head node). Its matrix pattern couples the
-// head with every DOF of the path it may reach; the path's own entries belong to the path
-// elements (which therefore must be cable or beam elements).
+// head with every DOF of the part of the path it may reach within the analysis
+// (model::contact_reach); the path's own entries belong to the path elements (which
+// therefore must be cable or beam elements).
 #include <vector>
 
 #include "catena/couplings/coupling.hpp"
@@ -47,11 +48,16 @@ class PantographContact final : public Coupling {
  private:
   // N and D over the 15 active DOFs at time t (on the path).
   void directions(double t, double* N, double* D) const;
+  // The path element holding the contact point at t (on the path); an Error if it lies
+  // beyond the reach the pattern was made for (a time past analysis.duration).
+  std::size_t element_in_reach(double t) const;
 
   int index_;
   model::MovingContact contact_;
   model::PathStations stations_;
+  model::PathReach reach_;                  // the path elements the pattern holds
   std::vector<int> element_a_, element_b_;  // per path element: position of node A/B's DOFs
+                                            // (−1 outside the reach)
 };
 
 }  // namespace catena::couplings

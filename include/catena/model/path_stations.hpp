@@ -35,4 +35,17 @@ PathStations path_stations(const Model& model, const std::vector<int>& elements)
 Vec3 path_point(const Model& model, const std::vector<int>& elements, const PathStations& stations,
                 double s);
 
+// Not collective. The path elements (indices into `elements`, ascending) a pantograph's
+// contact point can reach within the analysis: from its start to where its velocity takes
+// it by analysis.duration (its start alone in a static analysis), widened by one metre on
+// either side. A head is coupled to these elements' nodes only, not to its whole path: on a
+// 20 km line a pantograph crosses a few hundred metres of it.
+struct PathReach {
+  std::size_t first = 0, last = 0;  // the elements first..last (inclusive); none if empty
+  bool empty = true;
+  bool contains(std::size_t i) const { return !empty && i >= first && i <= last; }
+};
+PathReach contact_reach(const Model& model, const MovingContact& contact,
+                        const PathStations& stations);
+
 }  // namespace catena::model
