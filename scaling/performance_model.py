@@ -2,7 +2,7 @@
 """A performance model of Catena's HHT step on a line, fitted to a scaling study, projected.
 
 Reads one or more scaling.csv files of scaling/scaling_study.py (rows at 1 rank and at
-more; rank counts beyond the machine's cores are used for their counts — interface rows,
+more; of repeated studies the run of median step time per rank count is used; rank counts beyond the machine's cores are used for their counts — interface rows,
 messages, bytes, reductions — not their times) and projects the step's parallel
 efficiency to larger rank counts, strong (the study's fixed line) and weak (the study's
 line per rank). The model, per time step on the busiest rank of P:
@@ -66,9 +66,21 @@ def rows_of(paths):
     return rows
 
 
+def median_rows(rows):
+    """Per rank count, the row of the median step time (several studies: repeated runs)."""
+    by_ranks = {}
+    for r in rows:
+        by_ranks.setdefault(int(r["ranks"]), []).append(r)
+    out = []
+    for ranks in sorted(by_ranks):
+        runs = sorted(by_ranks[ranks], key=lambda r: float(r["step_s"]))
+        out.append(runs[(len(runs) - 1) // 2])
+    return out
+
+
 def fit(rows, study, cores):
-    """The model's inputs from one study's rows."""
-    mine = sorted((r for r in rows if r["study"] == study), key=lambda r: int(r["ranks"]))
+    """The model's inputs from one study's rows (the median run of each rank count)."""
+    mine = median_rows([r for r in rows if r["study"] == study])
     one = [r for r in mine if int(r["ranks"]) == 1]
     more = [r for r in mine if int(r["ranks"]) > 1]
     if not one or not more:

@@ -130,9 +130,7 @@ def run_case(args, study, ranks, runs_dir):
     length = length_of(args, study, ranks)
     name = f"{study}_np{ranks}_{length:g}m"
     record_path = os.path.join(runs_dir, name + ".json")
-    if os.path.exists(record_path):
-        with open(record_path) as f:
-            record = json.load(f)
+    if (record := saved_record(record_path)) is not None:
         print(f"scaling_study: {name}: measured before ({record_path}), reused", flush=True)
         return record
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -151,11 +149,23 @@ def run_case(args, study, ranks, runs_dir):
     print(f"scaling_study: {name}: {record['dofs']} DOFs, step {1e3 * record['step_s']:.2f} ms, "
           f"whole run {record['whole_run_s']:.2f} s ({time.monotonic() - started:.0f} s)",
           flush=True)
-    # Written last and whole: a record on disk is a finished run.
-    with open(record_path + ".tmp", "w") as f:
-        json.dump(record, f)
-    os.replace(record_path + ".tmp", record_path)
+    save_record(record, record_path)
     return record
+
+
+def saved_record(path):
+    """A finished run's record, or None."""
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def save_record(record, path):
+    """Written last and whole (renamed into place): a record on disk is a finished run."""
+    with open(path + ".tmp", "w") as f:
+        json.dump(record, f)
+    os.replace(path + ".tmp", path)
 
 
 def bench_command(args, length):
@@ -175,9 +185,8 @@ def run_baseline(args, ranks, runs_dir):
     length = args.weak_length_per_rank
     name = f"baseline_{ranks}x_{length:g}m"
     record_path = os.path.join(runs_dir, name + ".json")
-    if os.path.exists(record_path):
-        with open(record_path) as f:
-            return json.load(f)
+    if (saved := saved_record(record_path)) is not None:
+        return saved
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     command = shlex.split(args.single_launcher) + bench_command(args, length)
     print(f"scaling_study: {name}: {ranks} at once of {' '.join(command)}", flush=True)
@@ -196,9 +205,7 @@ def run_baseline(args, ranks, runs_dir):
     slowest = max(records, key=lambda r: r["step_s"])
     print(f"scaling_study: {name}: slowest copy's step {1e3 * slowest['step_s']:.2f} ms",
           flush=True)
-    with open(record_path + ".tmp", "w") as f:
-        json.dump(slowest, f)
-    os.replace(record_path + ".tmp", record_path)
+    save_record(slowest, record_path)
     return slowest
 
 
