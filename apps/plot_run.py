@@ -132,7 +132,8 @@ def contact_force_figure(series, statistics, supports_x, x0, x1, cutoff, kind):
             ax.axvline(x, color="k", linestyle=":", linewidth=0.7,
                        label="support" if i == 0 else None)
         mean = number(stats["mean_N"])
-        title = f"{name}, {float(stats['speed_kmh']):g} km/h"
+        kmh = float(stats["speed_kmh"])
+        title = f"{name}, {abs(kmh):g} km/h" + (" backward" if kmh < 0 else "")
         if mean is not None:
             ax.axhline(mean, color="tab:red", linewidth=0.8, linestyle="--",
                        label="mean F_m")
@@ -169,7 +170,7 @@ def spectrum_figure(series, statistics, supports_x, x0, x1, cutoff):
         frequency = np.fft.rfftfreq(len(force), dt)
         keep = frequency <= top
         line, = ax.plot(frequency[keep], amplitude[keep], linewidth=0.9, label=name)
-        speed = float(stats["speed_kmh"]) / 3.6
+        speed = abs(float(stats["speed_kmh"])) / 3.6  # negative: running backward
         if span and speed > 0:
             passing = speed / span
             for k in range(1, min(int(top / passing), 5) + 1):

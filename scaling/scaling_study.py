@@ -113,6 +113,8 @@ def parse(argv):
     args.bench_options = bench_options
     if args.steps < 2:
         p.error(f"--steps {args.steps}: expected at least 2 (the first step is timed apart)")
+    if args.baseline and 1 not in args.ranks:
+        p.error("--baseline compares with one rank alone: --ranks must include 1")
     if "{ranks}" not in args.launcher:
         p.error(f"--launcher {args.launcher!r}: expected {{ranks}} where the rank count goes")
     if not os.access(args.benchmark, os.X_OK):
@@ -130,11 +132,11 @@ def run_case(args, study, ranks, runs_dir):
     length = length_of(args, study, ranks)
     name = f"{study}_np{ranks}_{length:g}m"
     record_path = os.path.join(runs_dir, name + ".json")
-    if (record := saved_record(record_path)) is not None:
+    command = shlex.split(args.launcher.format(ranks=ranks)) + bench_command(args, length)
+    if (record := saved_record(record_path, command)) is not None:
         print(f"scaling_study: {name}: measured before ({record_path}), reused", flush=True)
         return record
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = shlex.split(args.launcher.format(ranks=ranks)) + bench_command(args, length)
     print(f"scaling_study: {name}: {' '.join(command)}", flush=True)
     started = time.monotonic()
     result = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -149,22 +151,27 @@ def run_case(args, study, ranks, runs_dir):
     print(f"scaling_study: {name}: {record['dofs']} DOFs, step {1e3 * record['step_s']:.2f} ms, "
           f"whole run {record['whole_run_s']:.2f} s ({time.monotonic() - started:.0f} s)",
           flush=True)
-    save_record(record, record_path)
+    save_record(record, record_path, command)
     return record
 
 
-def saved_record(path):
-    """A finished run's record, or None."""
+def saved_record(path, command):
+    """A finished run's record, or None; a record of another command is refused."""
     if not os.path.exists(path):
         return None
     with open(path) as f:
-        return json.load(f)
+        record = json.load(f)
+    if record.get("command") != command:
+        sys.exit(f"scaling_study: {path} was measured with other settings\n  "
+                 f"{' '.join(record.get('command', ['(unknown)']))}\n  instead of\n  "
+                 f"{' '.join(command)}\nuse another output directory, or delete that one")
+    return record
 
 
-def save_record(record, path):
+def save_record(record, path, command):
     """Written last and whole (renamed into place): a record on disk is a finished run."""
     with open(path + ".tmp", "w") as f:
-        json.dump(record, f)
+        json.dump(dict(record, command=command), f)
     os.replace(path + ".tmp", path)
 
 
@@ -185,10 +192,10 @@ def run_baseline(args, ranks, runs_dir):
     length = args.weak_length_per_rank
     name = f"baseline_{ranks}x_{length:g}m"
     record_path = os.path.join(runs_dir, name + ".json")
-    if (saved := saved_record(record_path)) is not None:
+    command = shlex.split(args.single_launcher) + bench_command(args, length)
+    if (saved := saved_record(record_path, command)) is not None:
         return saved
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = shlex.split(args.single_launcher) + bench_command(args, length)
     print(f"scaling_study: {name}: {ranks} at once of {' '.join(command)}", flush=True)
     copies = [subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True) for _ in range(ranks)]
@@ -205,7 +212,7 @@ def run_baseline(args, ranks, runs_dir):
     slowest = max(records, key=lambda r: r["step_s"])
     print(f"scaling_study: {name}: slowest copy's step {1e3 * slowest['step_s']:.2f} ms",
           flush=True)
-    save_record(slowest, record_path)
+    save_record(slowest, record_path, command)
     return slowest
 
 

@@ -136,7 +136,8 @@ void command_elasticity(MPI_Comm comm, const CommandLine& cl) {
                  scene.dynamic ? ", and so is its dynamic analysis" : "");
     std::fflush(info);
   }
-  shape_catenary(comm, m, info);  // as `catena run`: dropper lengths, preloads, prestrains
+  shape_catenary(comm, m, info,
+                 cl.progress_seconds);  // as `catena run`: dropper lengths, preloads, prestrains
 
   const double t0 = MPI_Wtime();
   catenary::ElasticityProbe probe;

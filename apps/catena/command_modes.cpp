@@ -50,7 +50,9 @@ void command_modes(MPI_Comm comm, const CommandLine& cl) {
     std::fflush(stdout);
   }
   check_output_path(comm, m, cl.output.has_value());
-  shape_catenary(comm, m);  // a `catenary` scene: dropper lengths first, as `catena run`
+  shape_catenary(
+      comm, m, stdout,
+      cl.progress_seconds);  // a `catenary` scene: dropper lengths first, as `catena run`
 
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();

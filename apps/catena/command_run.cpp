@@ -120,7 +120,8 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   // One run at a time per output name (and its checkpoint and partial output).
   const io::OutputLock lock(comm, m.output.file);
   if (rank == 0) io::remove_abandoned_checkpoint_temporaries(m.output.file);
-  shape_catenary(comm, m);  // a `catenary` scene: dropper lengths before any analysis
+  shape_catenary(comm, m, stdout,
+                 cl.progress_seconds);  // a `catenary` scene: dropper lengths before any analysis
   if (m.analysis == model::AnalysisType::dynamic) {
     run_dynamic(comm, cl, m);
     if (cl.error_bar) run_error_bar(comm, cl, m);

@@ -107,10 +107,24 @@ void warn_unresolved_dropper_mode(const model::Model& m, std::FILE* out) {
                integrator.dt * omega, 1.0 / omega);
 }
 
-void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out) {
+void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out, double progress_seconds) {
   if (!m.catenary) return;
-  const catenary::ShapeFindingOptions options;
+  catenary::ShapeFindingOptions options;
   const double start = MPI_Wtime();
+  // A progress line after a whole-structure solve once progress_seconds have passed since
+  // the last one (or the start): a long line's solves take tens of seconds each.
+  double last_line = start;
+  const int rank = mpi_rank(comm);
+  options.on_iteration = [&, rank](int iteration, double max_error) {
+    const double now = MPI_Wtime();
+    if (rank != 0 || progress_seconds <= 0.0 || now - last_line < progress_seconds) return;
+    last_line = now;
+    std::fprintf(out,
+                 "progress: shape finding, %d whole-structure static solves, largest height "
+                 "error %.3g mm (tolerance %.3g mm), wall %.0f s\n",
+                 iteration, 1e3 * max_error, 1e3 * options.height_tolerance, now - start);
+    std::fflush(out);
+  };
   const catenary::ShapeFindingReport report = [&] {
     const LogStage stage("Shape finding");
     return catenary::find_catenary_shape(comm, m, options);

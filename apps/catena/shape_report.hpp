@@ -12,7 +12,9 @@ namespace catena::app {
 // Collective. When m has a catenary, runs catenary::find_catenary_shape (which sets the
 // dropper lengths, steady-arm preloads and wire prestrains in m) and prints its report on
 // rank 0 to `out` (stderr where stdout carries JSON); does nothing otherwise.
-void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out = stdout);
+// Prints a progress line (rank 0, to `out`) after a whole-structure solve once
+// `progress_seconds` have passed since the last (0: none).
+void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out, double progress_seconds);
 
 // The highest first axial frequency of the cable droppers (rad/s; 0 without cable droppers
 // with mass): a cable dropper's mass on its own EA, ω1 = (π/l0) √(EA/μ), the first mode of

@@ -256,6 +256,7 @@ ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
     const double previous_max = report.error_history.empty() ? 0.0 : report.error_history.back();
     e = measure(model, snapshot);
     report.error_history.push_back(e.max);
+    if (options.on_iteration) options.on_iteration(iteration, e.max);
     if (e.max < options.height_tolerance && tensions_converged(layout, e, options.tension_rtol))
       break;
     if (iteration >= options.max_iterations) {

@@ -122,7 +122,11 @@ def main():
           "a second invocation reuses the four finished runs and the baseline")
     check(rows_of(csv_path) == rows, "... and writes the same table")
 
+    other = run(command[:command.index("--steps") + 1] + ["5"] + command[command.index("--steps") + 2:])
+    check(other.returncode != 0 and "measured with other settings" in other.stdout,
+          "runs of other settings in the directory are refused, not reused")
     for bad, says in ((["--ranks", "0,2"], "--ranks"), (["--study", "both"], "--study"),
+                      (["--ranks", "2,4", "--baseline"], "must include 1"),
                       (["--benchmark", "/nonexistent"], "not an executable"),
                       (["--launcher", "mpirun -n 2"], "{ranks}")):
         r = run([sys.executable, STUDY, out] + bad)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "catena/assembly/petsc_call.hpp"
@@ -101,13 +102,13 @@ TEST(InterfaceSchur, SolvesExactlyWithAnInterfaceOfTheHubAndTheCuts) {
   EXPECT_LT(error, 1e-12 * scale);
 }
 
+namespace {
+
 // A failed factorisation is the PC's failure (the KSP reports it, the solution is not
-// finite), and it does not stick: the next matrix factors and solves again.
-TEST(InterfaceSchur, AFailedFactorisationIsReportedAndDoesNotStick) {
-  catena::test::ensure_petsc();
-  int size = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  if (size == 1) GTEST_SKIP() << "one rank has no interface";
+// finite), and it does not stick: the next matrix factors and solves again. `row` is set
+// to `bad` in place, its pattern kept: an interior row of rank 0 (a zero pivot of its
+// interior block) or the hub (an interface row: S gets a zero row, or a NaN).
+void expect_failure_then_recovery(PetscInt row, PetscScalar bad) {
   catena::MatHandle A = chain_with_hub();
   catena::VecHandle b, x;
   CATENA_PETSC(MatCreateVecs(A.get(), x.out(), b.out()));
@@ -118,33 +119,32 @@ TEST(InterfaceSchur, AFailedFactorisationIsReportedAndDoesNotStick) {
   CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
   catena::solvers::use_interface_schur(ksp.get(), A.get());
   KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-  // Rank 0's first row (interior) set to zero in place, its pattern kept: a zero pivot.
-  const bool owner = catena::mpi_rank(PETSC_COMM_WORLD) == 0;
+  PetscInt first = 0, end = 0;
+  CATENA_PETSC(MatGetOwnershipRange(A.get(), &first, &end));
+  const bool owner = row >= first && row < end;
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> saved;
   if (owner) {
     PetscInt n = 0;
     const PetscInt* c = nullptr;
     const PetscScalar* v = nullptr;
-    CATENA_PETSC(MatGetRow(A.get(), 0, &n, &c, &v));
+    CATENA_PETSC(MatGetRow(A.get(), row, &n, &c, &v));
     columns.assign(c, c + n);
     saved.assign(v, v + n);
-    CATENA_PETSC(MatRestoreRow(A.get(), 0, &n, &c, &v));
+    CATENA_PETSC(MatRestoreRow(A.get(), row, &n, &c, &v));
   }
-  // Collective: rank 0's first row set to `values`, then a solve with the new values.
+  // Collective: `row` set to `values`, then a solve with the new values.
   const auto solve_with_row = [&](const std::vector<PetscScalar>& values) {
-    if (owner) {
-      const PetscInt row = 0;
+    if (owner)
       CATENA_PETSC(MatSetValues(A.get(), 1, &row, static_cast<PetscInt>(columns.size()),
                                 columns.data(), values.data(), INSERT_VALUES));
-    }
     CATENA_PETSC(MatAssemblyBegin(A.get(), MAT_FINAL_ASSEMBLY));
     CATENA_PETSC(MatAssemblyEnd(A.get(), MAT_FINAL_ASSEMBLY));
     CATENA_PETSC(KSPSetOperators(ksp.get(), A.get(), A.get()));
     CATENA_PETSC(KSPSolve(ksp.get(), b.get(), x.get()));
     CATENA_PETSC(KSPGetConvergedReason(ksp.get(), &reason));
   };
-  solve_with_row(std::vector<PetscScalar>(columns.size(), 0.0));
+  solve_with_row(std::vector<PetscScalar>(columns.size(), bad));
   EXPECT_EQ(reason, KSP_DIVERGED_PC_FAILED);
   PetscReal norm = 0.0;
   CATENA_PETSC(VecNorm(x.get(), NORM_INFINITY, &norm));
@@ -158,4 +158,26 @@ TEST(InterfaceSchur, AFailedFactorisationIsReportedAndDoesNotStick) {
   CATENA_PETSC(VecAXPY(r.get(), -1.0, b.get()));
   CATENA_PETSC(VecNorm(r.get(), NORM_INFINITY, &norm));
   EXPECT_LT(norm, 1e-10);
+}
+
+bool more_than_one_rank() {
+  catena::test::ensure_petsc();
+  return catena::mpi_size(PETSC_COMM_WORLD) > 1;
+}
+
+}  // namespace
+
+TEST(InterfaceSchur, AZeroPivotOfAnInteriorBlockIsReportedAndDoesNotStick) {
+  if (!more_than_one_rank()) GTEST_SKIP() << "one rank has no interface";
+  expect_failure_then_recovery(0, 0.0);
+}
+
+TEST(InterfaceSchur, ASingularSchurComplementIsReportedAndDoesNotStick) {
+  if (!more_than_one_rank()) GTEST_SKIP() << "one rank has no interface";
+  expect_failure_then_recovery(kRows - 1, 0.0);  // the hub's row: a zero row of S
+}
+
+TEST(InterfaceSchur, ANonFiniteSchurComplementIsReportedAndDoesNotStick) {
+  if (!more_than_one_rank()) GTEST_SKIP() << "one rank has no interface";
+  expect_failure_then_recovery(kRows - 1, std::numeric_limits<double>::quiet_NaN());
 }

@@ -21,6 +21,7 @@
 // not depend on the previous iterate's state, only on the lengths, loads and prestrains.
 #include <mpi.h>
 
+#include <functional>
 #include <vector>
 
 #include "catena/model/model.hpp"
@@ -31,6 +32,9 @@ struct ShapeFindingOptions {
   double height_tolerance = 1e-4;  // m: max |z − z_design| at droppers and held registrations
   double tension_rtol = 1e-4;      // mean axial force of each wire within this of its tension
   int max_iterations = 30;         // whole-structure static solves
+  // Called on every rank after each whole-structure static solve with its number and the
+  // largest height error then (m): a long line's shape finding takes minutes.
+  std::function<void(int iteration, double max_height_error)> on_iteration;
 };
 
 struct ShapeFindingReport {

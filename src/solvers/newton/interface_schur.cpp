@@ -1,6 +1,7 @@
 #include "catena/solvers/newton/interface_schur.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -16,7 +17,8 @@ namespace {
 PetscInt petsc(Eigen::Index n) { return static_cast<PetscInt>(n); }
 
 // Rows coupled to more than this many unknowns of other ranks are hubs: a pantograph's,
-// whose contact can reach any element of its contact wire (the pattern holds them all).
+// whose contact can reach any element of the part of its wire it crosses in the run (the
+// pattern holds them all).
 // A hub joins the interface alone; its neighbours need not.
 constexpr PetscInt kHubColumns = 64;
 
@@ -292,10 +294,11 @@ class InterfaceSchur {
     return info;
   }
 
-  // The numeric LU of `matrix` into `factor` (its symbolic part done); false on a zero pivot
-  // (not sticky: the next factorisation starts clean).
-  static bool factor_numeric(Mat factor, Mat matrix) {
-    const MatFactorInfo info = factor_info();
+  // The numeric LU of `matrix` into `factor` (its symbolic part done); false on a zero pivot,
+  // one below 100 ε × `scale` (not sticky: the next factorisation starts clean).
+  static bool factor_numeric(Mat factor, Mat matrix, double scale = 1.0) {
+    MatFactorInfo info = factor_info();
+    info.zeropivot *= scale;
     CATENA_PETSC(MatFactorClearError(factor));
     CATENA_PETSC(MatLUFactorNumeric(factor, matrix, &info));
     MatFactorError error = MAT_FACTOR_NOERROR;
@@ -415,9 +418,20 @@ class InterfaceSchur {
     CATENA_PETSC(MatSeqAIJGetArray(schur_matrix_.get(), &s));
     std::fill(s, s + schur_values_.size(), 0.0);
     for (std::size_t k = 0; k < all_terms_.size(); ++k) s[term_slot_[k]] += all_terms_[k];
+    // PETSc's LU without pivoting compares a pivot with an absolute 100 ε and lets a NaN
+    // through: a non-finite S fails here, and the threshold is made relative to S's largest
+    // diagonal entry (stiffness-sized: 1e6 and more), as a vanishing pivot is.
+    bool finite = true;
+    for (std::size_t k = 0; k < schur_values_.size(); ++k) finite = finite && std::isfinite(s[k]);
+    double largest = 0.0;
+    for (std::size_t i = 0; i + 1 < schur_ia_.size(); ++i)
+      for (PetscInt k = schur_ia_[i]; k < schur_ia_[i + 1]; ++k)
+        if (schur_ja_[static_cast<std::size_t>(k)] == static_cast<PetscInt>(i))
+          largest = std::max(largest, std::abs(s[k]));
     CATENA_PETSC(MatSeqAIJRestoreArray(schur_matrix_.get(), &s));
     if (interface_.empty()) return true;
-    return factor_numeric(schur_factor_.get(), schur_matrix_.get());
+    if (!finite) return false;
+    return factor_numeric(schur_factor_.get(), schur_matrix_.get(), std::max(largest, 1.0));
   }
 
   // The interface columns (positions) A_IΓ has entries in, ascending.

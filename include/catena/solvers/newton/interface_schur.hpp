@@ -2,8 +2,8 @@
 // An exact parallel solve of a line's Newton matrix by its partition interface (a Schur
 // complement): the rows a rank shares with another rank (its interface: rows with a
 // column owned elsewhere, and the hubs — rows coupled to many other ranks' unknowns, a
-// pantograph's head, whose contact pattern reaches the whole contact wire) are split from
-// the rest (its interior). The interior rows of different ranks never couple, so each rank
+// pantograph's head, whose contact pattern reaches the wire it crosses in the run) are
+// split from the rest (its interior). The interior rows of different ranks never couple, so each rank
 // factors its own interior block A_II with PETSc's LU (the fast solver of
 // docs/performance.md, "Direct solver"); the interface's Schur complement
 // S = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ is formed explicitly as a sparse matrix and factored on every
