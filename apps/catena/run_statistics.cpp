@@ -128,9 +128,16 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
       }
     PantographEvaluation e;
     e.pantograph = &p;
-    e.section = covered_part_of(out.section, p, out.run.dt, args.cutoff_hz);
+    // Without an evaluation section (the scene's or --section) each pantograph is evaluated
+    // over its own record: on a long line with several trains no two share a stretch.
+    const post::EvaluationSection whole =
+        !args.section && !out.run.evaluation_section && !p.position.empty()
+            ? post::EvaluationSection{*std::min_element(p.position.begin(), p.position.end()),
+                                      *std::max_element(p.position.begin(), p.position.end())}
+            : out.section;
+    e.section = covered_part_of(whole, p, out.run.dt, args.cutoff_hz);
     e.partial = e.section.x_end - e.section.x_start <
-                (out.section.x_end - out.section.x_start) - std::abs(p.speed) * out.run.dt;
+                (whole.x_end - whole.x_start) - std::abs(p.speed) * out.run.dt;
     options.section = e.section;
     try {
       e.filtered_force = post::butterworth_lowpass_zero_phase(p.force, out.run.dt, args.cutoff_hz);
