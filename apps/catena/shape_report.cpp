@@ -120,7 +120,7 @@ void shape_catenary(MPI_Comm comm, model::Model& m, std::FILE* out, double progr
     if (rank != 0 || progress_seconds <= 0.0 || now - last_line < progress_seconds) return;
     last_line = now;
     std::fprintf(out,
-                 "progress: shape finding, %d whole-structure static solves, largest height "
+                 "progress: shape finding, whole-structure static solve %d, largest height "
                  "error %.3g mm (tolerance %.3g mm), wall %.0f s\n",
                  iteration, 1e3 * max_error, 1e3 * options.height_tolerance, now - start);
     std::fflush(out);
