@@ -135,8 +135,13 @@ class OutputObserver : public solvers::TransientObserver {
     if (std::vector<double> own; integrator_.contact_forces_at(t, own)) contacts.force = own;
     travel_.move(contacts.position, positions);
     const assembly::Reactions reactions = view_.reactions({q, v, {}, t});
+    io::BodySample bodies;
+    if (!system_.model().rigid_bodies.empty()) {
+      assembly::BodyPoses poses = view_.body_poses(q, v);
+      bodies = {std::move(poses.orientation), std::move(poses.angular_velocity)};
+    }
     writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
-                          {reactions.force, reactions.moment});
+                          {reactions.force, reactions.moment}, bodies);
   }
 
   void step(const solvers::StepRecord& r) override {

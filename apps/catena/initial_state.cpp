@@ -30,6 +30,21 @@ void apply_initial_conditions(const assembly::SecondOrderSystem& system, Vec q, 
     for (int node : dofs.owned_nodes())
       for (int d = 0; d < 3; ++d) add(v, dofs.global_dof(node, d), ic.velocity[d]);
   }
+  // A rigid body's own velocity: ṙ += its velocity, ė_k = ω × e_k at the axes it starts
+  // with (the reference's, or the static equilibrium's).
+  for (const model::RigidBody& body : system.model().rigid_bodies) {
+    if (dofs.global_dof(body.node, 3) < lo || dofs.global_dof(body.node, 3) >= hi) continue;
+    for (int d = 0; d < 3; ++d) add(v, dofs.global_dof(body.node, d), body.velocity[d]);
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 e;
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt g = dofs.global_dof(body.node, 3 + 3 * axis + d);
+        CATENA_PETSC(VecGetValues(q, 1, &g, &e[d]));
+      }
+      const Vec3 rate = body.angular_velocity.cross(e);
+      for (int d = 0; d < 3; ++d) add(v, dofs.global_dof(body.node, 3 + 3 * axis + d), rate[d]);
+    }
+  }
   CATENA_PETSC(VecAssemblyBegin(v));
   CATENA_PETSC(VecAssemblyEnd(v));
 }

@@ -1,5 +1,6 @@
 // StateView: what output, checkpoints and tests ask of a state (the class:
 // include/catena/assembly/state_view.hpp).
+#include <Eigen/SVD>
 #include <algorithm>
 #include <memory>
 
@@ -257,6 +258,52 @@ void StateView::owned_constraint_forces(Vec q, std::vector<int>& constraints,
       forces.push_back(-a[sys.dofs_.multiplier_local(c, k)]);
   }
   CATENA_PETSC(VecRestoreArrayRead(q, &a));
+}
+
+BodyPoses StateView::body_poses(Vec q, Vec v) const {
+  const SecondOrderSystem& sys = system_;
+  const std::vector<model::RigidBody>& bodies = sys.model_->rigid_bodies;
+  BodyPoses out;
+  out.orientation.assign(4 * bodies.size(), 0.0);
+  out.angular_velocity.assign(3 * bodies.size(), 0.0);
+  if (bodies.empty()) return out;
+  const PetscScalar *qa = nullptr, *va = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &qa));
+  CATENA_PETSC(VecGetArrayRead(v, &va));
+  const PetscInt first = sys.dofs_.first_owned();
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const int node = bodies[b].node;
+    if (sys.dofs_.node_owner(node) != mpi_rank(sys.comm_)) continue;
+    Mat3 R;
+    Vec3 omega = Vec3::Zero();
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 e, rate;
+      for (int d = 0; d < 3; ++d) {
+        // A body's axes are never fixed (the scene reader refuses such supports).
+        const PetscInt g = sys.dofs_.global_dof(node, 3 + 3 * axis + d);
+        e[d] = qa[g - first];
+        rate[d] = va[g - first];
+      }
+      R.col(axis) = e;
+      omega += 0.5 * e.cross(rate);
+    }
+    // The nearest rotation to R (its orthonormal polar factor), then its quaternion.
+    const Eigen::JacobiSVD<Mat3> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Quaterniond rotation(Mat3(svd.matrixU() * svd.matrixV().transpose()));
+    rotation.normalize();
+    if (rotation.w() < 0.0) rotation.coeffs() *= -1.0;  // one of ±p: w ≥ 0
+    const double wxyz[4] = {rotation.w(), rotation.x(), rotation.y(), rotation.z()};
+    std::copy(wxyz, wxyz + 4, out.orientation.begin() + static_cast<std::ptrdiff_t>(4 * b));
+    for (int d = 0; d < 3; ++d) out.angular_velocity[3 * b + static_cast<size_t>(d)] = omega[d];
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &qa));
+  CATENA_PETSC(VecRestoreArrayRead(v, &va));
+  // Each body's values are nonzero on its owner only: a sum gathers them.
+  MPI_Allreduce(MPI_IN_PLACE, out.orientation.data(), static_cast<int>(out.orientation.size()),
+                MPI_DOUBLE, MPI_SUM, sys.comm_);
+  MPI_Allreduce(MPI_IN_PLACE, out.angular_velocity.data(),
+                static_cast<int>(out.angular_velocity.size()), MPI_DOUBLE, MPI_SUM, sys.comm_);
+  return out;
 }
 
 }  // namespace catena::assembly

@@ -2,13 +2,16 @@
 // the multiplier slots, the prescribed motions' acceleration, whether the load path needs
 // its release phase, and DOF names for messages (the class:
 // include/catena/assembly/second_order_system.hpp).
+#include <array>
+#include <memory>
 #include <string>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
-#include "catena/couplings/node_constraint.hpp"
+#include "catena/couplings/constraint_coupling.hpp"
 #include "catena/elements/ancf_cable.hpp"
+#include "local_array.hpp"
 
 namespace catena::assembly {
 
@@ -46,15 +49,33 @@ void SecondOrderSystem::algebraic_mask(Vec mask) const {
   CATENA_PETSC(VecAssemblyEnd(mask));
 }
 
-void SecondOrderSystem::constraint_acceleration(double t, Vec out) const {
+bool SecondOrderSystem::constraints_linear() const {
+  for (const model::Constraint& c : model_->constraints)
+    if (c.type == model::ConstraintType::frame_lengths ||
+        c.type == model::ConstraintType::frame_angles)
+      return false;
+  return true;
+}
+
+void SecondOrderSystem::constraint_acceleration(const EvalPoint& p, Vec out) const {
   CATENA_PETSC(VecSet(out, 0.0));
-  for (const auto& coupling : couplings_) {
-    const auto* c = dynamic_cast<const couplings::NodeConstraint*>(coupling.get());
-    if (!c) continue;
-    const Vec3 acc = c->acceleration(t);
-    if (acc == Vec3::Zero()) continue;
-    for (int k = 0; k < 3; ++k)
-      CATENA_PETSC(VecSetValue(out, dofs_.multiplier_dof(c->index(), k), acc[k], INSERT_VALUES));
+  scatter_to_local(p.q, q_work_.get());
+  if (p.v) scatter_to_local(p.v, v_work_.get());
+  {
+    const detail::LocalArrayRead q(q_work_.get());
+    std::unique_ptr<detail::LocalArrayRead> v;
+    if (p.v) v = std::make_unique<detail::LocalArrayRead>(v_work_.get());
+    for (size_t i = 0; i < couplings_.size(); ++i) {
+      const auto* c = dynamic_cast<const couplings::ConstraintCoupling*>(couplings_[i].get());
+      if (!c) continue;
+      const ActiveDofs dofs = active(i, p.t, work_);
+      const std::array<double, 3> target = c->acceleration_target(
+          gather(dofs, q.data(), v ? v->data() : nullptr, p.path, p.t, work_));
+      for (int k = 0; k < 3; ++k)
+        if (target[static_cast<size_t>(k)] != 0.0)
+          CATENA_PETSC(VecSetValue(out, dofs_.multiplier_dof(c->index(), k),
+                                   target[static_cast<size_t>(k)], INSERT_VALUES));
+    }
   }
   CATENA_PETSC(VecAssemblyBegin(out));
   CATENA_PETSC(VecAssemblyEnd(out));

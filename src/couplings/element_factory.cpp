@@ -7,6 +7,7 @@
 #include "catena/elements/linear_spring.hpp"
 #include "catena/elements/point_mass.hpp"
 #include "catena/elements/rayleigh_damped.hpp"
+#include "catena/elements/rigid_body.hpp"
 #include "catena/elements/tension_bar.hpp"
 
 namespace catena::couplings {
@@ -95,6 +96,12 @@ std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::M
     const auto& m = model.point_masses[i];
     add(std::make_unique<elements::PointMass>(m.mass, model.gravity), m.node,
         ElementOrigin::point_mass, static_cast<int>(i));
+  }
+  for (size_t i = 0; i < model.rigid_bodies.size(); ++i) {
+    const auto& b = model.rigid_bodies[i];
+    add(std::make_unique<elements::RigidBodyInertia>(b.mass, b.centre_of_mass, b.inertia,
+                                                     model.gravity),
+        b.node, ElementOrigin::rigid_body, static_cast<int>(i));
   }
   for (size_t i = 0; i < model.elastic_supports.size(); ++i) {
     const auto& s = model.elastic_supports[i];

@@ -1,5 +1,6 @@
 #include "catena/couplings/model_couplings.hpp"
 
+#include "catena/couplings/body_frame_constraint.hpp"
 #include "catena/couplings/element_factory.hpp"
 #include "catena/couplings/moving_load.hpp"
 #include "catena/couplings/node_constraint.hpp"
@@ -33,9 +34,15 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
     }
     if (any) list.push_back(std::make_unique<MovingLoad>(model, load, evaluated));
   }
-  for (int c = 0; c < static_cast<int>(model.constraints.size()); ++c)
-    if (node_owner[static_cast<size_t>(model.constraints[static_cast<size_t>(c)].node_a)] == rank)
+  for (int c = 0; c < static_cast<int>(model.constraints.size()); ++c) {
+    const model::Constraint& constraint = model.constraints[static_cast<size_t>(c)];
+    if (node_owner[static_cast<size_t>(constraint.node_a)] != rank) continue;
+    if (constraint.type == model::ConstraintType::frame_lengths ||
+        constraint.type == model::ConstraintType::frame_angles)
+      list.push_back(std::make_unique<BodyFrameConstraint>(model, c));
+    else
       list.push_back(std::make_unique<NodeConstraint>(model, c));
+  }
   for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c)
     if (node_owner[static_cast<size_t>(model.contacts[static_cast<size_t>(c)].head_node)] == rank)
       list.push_back(std::make_unique<PantographContact>(model, c));

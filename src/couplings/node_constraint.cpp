@@ -13,7 +13,7 @@ Vec3 prescribed_displacement(const model::Constraint& c, double t) {
 }  // namespace
 
 NodeConstraint::NodeConstraint(const model::Model& model, int index)
-    : index_(index),
+    : ConstraintCoupling(index),
       constraint_(model.constraints[static_cast<size_t>(index)]),
       reference_a_(model.nodes[static_cast<size_t>(constraint_.node_a)].position) {
   for (int k = 0; k < 3; ++k) dofs_.push_back(DofKey::multiplier(index, k));
@@ -33,10 +33,11 @@ void NodeConstraint::pattern(std::vector<std::pair<int, int>>& entries) const {
   }
 }
 
-Vec3 NodeConstraint::acceleration(double t) const {
-  if (constraint_.type != model::ConstraintType::prescribed) return Vec3::Zero();
+std::array<double, 3> NodeConstraint::acceleration_target(const CouplingState& s) const {
+  if (constraint_.type != model::ConstraintType::prescribed) return {0.0, 0.0, 0.0};
   const double w = 2.0 * M_PI * constraint_.frequency;
-  return -w * w * std::sin(w * t) * constraint_.amplitude;
+  const Vec3 u_tt = -w * w * std::sin(w * s.t) * constraint_.amplitude;
+  return {u_tt[0], u_tt[1], u_tt[2]};
 }
 
 void NodeConstraint::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,

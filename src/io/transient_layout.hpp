@@ -82,6 +82,19 @@ inline constexpr Dataset step_contact_force{"/steps/contact_force", "N"};
 // from every step. Only with registration nodes.
 inline constexpr Dataset step_registration_height{"/steps/registration_height", "m"};
 
+// (n_samples, n_bodies, 4) float64: each rigid body's orientation, the unit quaternion
+// (w, x, y, z) of its axes [e1 e2 e3] (w ≥ 0); (n_samples, n_bodies, 3): its angular
+// velocity, global components. Rows: /mesh/body_nodes. Only with rigid bodies.
+inline constexpr Dataset body_orientation{"/samples/body_orientation", "1"};
+inline constexpr Dataset body_angular_velocity{"/samples/body_angular_velocity", "rad/s"};
+// (n_bodies,) int64: node index of each rigid body's point r (its position is that node's
+// row of /samples/positions). Only with rigid bodies.
+inline constexpr Dataset body_nodes{"/mesh/body_nodes", nullptr};
+// ---- Rigid bodies: a group /bodies/<name> each (the scene's name), attribute `index`
+// (its row in the body datasets). ----
+inline constexpr const char* bodies_group = "/bodies";
+inline constexpr const char* body_index_attribute = "index";
+
 // ---- Pantographs: a group /pantographs/<name> each (the scene's name). ----
 inline constexpr const char* pantographs_group = "/pantographs";
 namespace pantograph_attribute {

@@ -187,7 +187,9 @@ struct TransientWriter::Impl {
   bool has_supports = false;
   hsize_t n_contacts = 0;
   hsize_t n_registration = 0;
+  hsize_t n_bodies = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
+  Series body_orientation, body_angular_velocity;
   Series reaction_force, reaction_moment;
   Series contact_force, contact_position, step_contact_force, step_registration_height;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
@@ -202,6 +204,7 @@ struct TransientWriter::Impl {
     std::size_t n = 0;
     std::vector<double> time, positions, velocities, slopes, axial, constraint_forces;
     std::vector<double> reaction_force, reaction_moment, contact_force, contact_position;
+    std::vector<double> body_orientation, body_angular_velocity;
   } pending;
   void write_pending_samples();
   bool failed = false;  // a write failed (on every rank alike): the file is only closed
@@ -224,7 +227,8 @@ struct TransientWriter::Impl {
                  "owned support nodes"),
         has_supports(!supported.empty()),
         n_contacts(static_cast<hsize_t>(m.contacts.size())),
-        n_registration(static_cast<hsize_t>(m.registration_nodes.size())) {
+        n_registration(static_cast<hsize_t>(m.registration_nodes.size())),
+        n_bodies(static_cast<hsize_t>(m.rigid_bodies.size())) {
     MPI_Comm_rank(c, &rank);
   }
 
@@ -302,6 +306,11 @@ struct TransientWriter::Impl {
       step_registration_height =
           series(layout::step_registration_height, {n_registration}, real, steps);
     }
+    if (n_bodies > 0) {
+      require_on_resume(layout::body_orientation, "the rigid bodies' poses");
+      body_orientation = series(layout::body_orientation, {n_bodies, 4}, real, samples);
+      body_angular_velocity = series(layout::body_angular_velocity, {n_bodies, 3}, real, samples);
+    }
     time = series(layout::time, {}, real, samples);
     positions = series(layout::positions, {n_nodes, 3}, real, samples);
     velocities = series(layout::velocities, {n_nodes, 3}, real, samples);
@@ -315,11 +324,11 @@ struct TransientWriter::Impl {
   }
 
   std::vector<Series*> all_series() {
-    return {&time,          &positions,         &velocities,         &slopes,
-            &axial,         &constraint_forces, &reaction_force,     &reaction_moment,
-            &contact_force, &contact_position,  &step_contact_force, &step_registration_height,
-            &step_time,     &step_dt,           &step_iterations,    &step_error,
-            &step_rejected};
+    return {&time,          &positions,         &velocities,           &slopes,
+            &axial,         &constraint_forces, &reaction_force,       &reaction_moment,
+            &contact_force, &contact_position,  &step_contact_force,   &step_registration_height,
+            &step_time,     &step_dt,           &step_iterations,      &step_error,
+            &step_rejected, &body_orientation,  &body_angular_velocity};
   }
 
   // Collective. Closes every dataset, then the file.
@@ -411,6 +420,22 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
       });
     }
   }
+  if (s.n_bodies > 0) {
+    const auto n_bodies = static_cast<std::int64_t>(s.n_bodies);
+    std::vector<std::int64_t> nodes;
+    if (s.rank == 0)
+      for (const model::RigidBody& b : model.rigid_bodies) nodes.push_back(b.node);
+    write_mesh(layout::body_nodes, n_bodies, 1, RowBlock{0, s.rank == 0 ? n_bodies : 0}, nodes);
+    create_group(s.file, layout::bodies_group);
+    for (size_t i = 0; i < model.rigid_bodies.size(); ++i) {
+      const std::string name = std::string(layout::bodies_group) + "/" + model.rigid_bodies[i].name;
+      const GroupHandle group = create_group(s.file, name.c_str());
+      run_output_phase(s.comm, [&] {
+        write_int64_attribute({group.get(), p}, layout::body_index_attribute,
+                              static_cast<std::int64_t>(i));
+      });
+    }
+  }
   {
     const auto n_reg = static_cast<std::int64_t>(model.registration_nodes.size());
     std::vector<std::int64_t> reg;
@@ -474,7 +499,8 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
                                     const std::vector<double>& slopes,
                                     const std::vector<double>& axial_force,
                                     const std::vector<double>& constraint_forces,
-                                    const ContactSample& contacts, const SupportSample& supports) {
+                                    const ContactSample& contacts, const SupportSample& supports,
+                                    const BodySample& bodies) {
   Impl& s = *impl_;
   Impl::PendingSamples& b = s.pending;
   const auto add = [](std::vector<double>& to, const std::vector<double>& rows) {
@@ -496,6 +522,11 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
       CATENA_ASSERT(contacts.force.size() == s.n_contacts, "one force per contact");
       add(b.contact_force, contacts.force);
       add(b.contact_position, contacts.position);
+    }
+    if (s.n_bodies > 0 && s.rank == 0) {
+      CATENA_ASSERT(bodies.orientation.size() == 4 * s.n_bodies, "one quaternion per body");
+      add(b.body_orientation, bodies.orientation);
+      add(b.body_angular_velocity, bodies.angular_velocity);
     }
   });
   ++b.n;
@@ -523,6 +554,11 @@ void TransientWriter::Impl::write_pending_samples() {
       const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_contacts) : 0};
       contact_force.append(x, n, all, pending.contact_force.data());
       contact_position.append(x, n, all, pending.contact_position.data());
+    }
+    if (n_bodies > 0) {
+      const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_bodies) : 0};
+      body_orientation.append(x, n, all, pending.body_orientation.data());
+      body_angular_velocity.append(x, n, all, pending.body_angular_velocity.data());
     }
   });
   pending = PendingSamples{};

@@ -51,8 +51,11 @@ void check_no_free_body(const SceneBuild& build) {
   for (const Support& s : model.supports) held[parts.find(static_cast<std::size_t>(s.node))] = true;
   for (const ElasticSupport& s : model.elastic_supports)
     held[parts.find(static_cast<std::size_t>(s.node))] = true;
+  // A rigid body's frame constraints hold its axes to each other, not the body to ground.
   for (const Constraint& c : model.constraints)
-    if (c.node_b < 0) held[parts.find(static_cast<std::size_t>(c.node_a))] = true;
+    if (c.node_b < 0 && c.type != ConstraintType::frame_lengths &&
+        c.type != ConstraintType::frame_angles)
+      held[parts.find(static_cast<std::size_t>(c.node_a))] = true;
 
   // Report the part of the first unsupported node, listing its nodes in scene order.
   std::size_t first_free = n;

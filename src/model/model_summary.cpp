@@ -1,5 +1,7 @@
 #include "catena/model/model_summary.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -149,13 +151,28 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
   if (!model.constraints.empty()) {
-    int by_type[3] = {0, 0, 0};
+    int by_type[5] = {0, 0, 0, 0, 0};
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
+    const int frames = by_type[static_cast<int>(ConstraintType::frame_lengths)] +
+                       by_type[static_cast<int>(ConstraintType::frame_angles)];
     t.row("constraints", std::to_string(model.constraints.size()) + " (coincident " +
                              std::to_string(by_type[0]) + ", pinned " + std::to_string(by_type[1]) +
                              ", prescribed " + std::to_string(by_type[2]) +
+                             (frames > 0 ? ", rigid-body frames " + std::to_string(frames) : "") +
                              "): " + std::to_string(3 * model.constraints.size()) +
                              " Lagrange multipliers");
+  }
+  for (const RigidBody& b : model.rigid_bodies) {
+    const model::Node& node = model.nodes[static_cast<size_t>(b.node)];
+    const Eigen::SelfAdjointEigenSolver<Mat3> principal(b.inertia);
+    t.row("rigid body '" + b.name + "'",
+          "node " + std::to_string(node.id) + ", mass " + format_number(b.mass) +
+              " kg, centre of mass " +
+              format_vector(node.position + b.centre_of_mass[0] * node.tangent +
+                            b.centre_of_mass[1] * node.section_y +
+                            b.centre_of_mass[2] * node.section_z) +
+              " m, principal moments " + format_vector(principal.eigenvalues()) +
+              " kg*m^2; natural coordinates (r, e1, e2, e3: 12 unknowns, 6 frame constraints)");
   }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");

@@ -45,6 +45,16 @@ std::vector<UnknownKind> node_kinds(const Model& model) {
       kinds[node] = *both;
     }
   }
+  for (const RigidBody& body : model.rigid_bodies) {
+    const int node = body.node;
+    if (!kind_holding_both(kinds[node], UnknownKind::rigid_body))
+      throw Error("node " + std::to_string(model.nodes[node].id) + " carries rigid body '" +
+                  body.name + "' and " + element_text(model.elements[decided_by[node]]) + " (" +
+                  std::string(kind_info(kinds[node]).name) +
+                  "); a body's node takes bars, springs and masses only: join a cable or beam "
+                  "to the body through a constraint at another node");
+    kinds[node] = UnknownKind::rigid_body;
+  }
   return kinds;
 }
 

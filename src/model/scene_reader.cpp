@@ -13,6 +13,7 @@
 
 #include "analysis_reader.hpp"
 #include "attachment_reader.hpp"
+#include "body_reader.hpp"
 #include "catena/core/error.hpp"
 #include "catena/model/node_kinds.hpp"
 #include "catenary_reader.hpp"
@@ -37,9 +38,9 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",     "gravity",          "sections", "nodes",    "lines",       "elements",
-      "supports", "elastic_supports", "loads",    "masses",   "constraints", "moving_loads",
-      "analysis", "integrator",       "output",   "catenary", "pantographs"};
+      "name",     "gravity",          "sections",   "nodes",  "lines",       "elements",
+      "supports", "elastic_supports", "loads",      "masses", "constraints", "moving_loads",
+      "bodies",   "analysis",         "integrator", "output", "catenary",    "pantographs"};
   return keys;
 }
 
@@ -92,9 +93,11 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
 
   detail::check_element_lengths(build);
   detail::assign_nodal_frames(build);
+  detail::read_bodies(scene.child("bodies"), build);
   detail::read_supports(scene.child("supports"), node_kinds(model), build);
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
   detail::read_constraints(scene.child("constraints"), build);
+  detail::add_body_frame_constraints(scene.child("bodies"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);

@@ -11,7 +11,7 @@ struct Row {
   UnknownKindInfo info;
 };
 
-constexpr std::array<Row, 4> kTable{{
+constexpr std::array<Row, 5> kTable{{
     {UnknownKind::point,
      {"a point node",
       "point",
@@ -38,6 +38,16 @@ constexpr std::array<Row, 4> kTable{{
       "a beam attaches there",
       12,
       {"x", "y", "z", "rx_x", "rx_y", "rx_z", "ry_x", "ry_y", "ry_z", "rz_x", "rz_y", "rz_z"},
+      0,
+      3,
+      UpdateRule::additive,
+      true}},
+    {UnknownKind::rigid_body,
+     {"a rigid body's node",
+      "rigid body",
+      "a rigid body sits there (its point r and its axes e1, e2, e3)",
+      12,
+      {"x", "y", "z", "e1_x", "e1_y", "e1_z", "e2_x", "e2_y", "e2_z", "e3_x", "e3_y", "e3_z"},
       0,
       3,
       UpdateRule::additive,

@@ -48,11 +48,24 @@ TEST(UnknownKinds, EveryRowIsWellFormed) {
       ASSERT_GE(info.position, 0);
       EXPECT_EQ(info.components[info.position], "x");
     }
+    // The gradient slots: an ANCF node's r_x (r_y, r_z), a rigid body's axes e1 (e2, e3),
+    // which reference values, output and supports treat alike.
     if (info.gradients >= 0) {
-      EXPECT_EQ(info.components[info.gradients], "rx_x");
+      EXPECT_TRUE(info.components[info.gradients] == "rx_x" ||
+                  info.components[info.gradients] == "e1_x")
+          << info.components[info.gradients];
     }
   }
-  EXPECT_EQ(all_unknown_kinds().size(), 4u);
+  EXPECT_EQ(all_unknown_kinds().size(), 5u);
+}
+
+TEST(UnknownKinds, ARigidBodyNodeHoldsAPointButNoCableOrBeam) {
+  EXPECT_EQ(kind_holding_both(UnknownKind::point, UnknownKind::rigid_body),
+            UnknownKind::rigid_body);
+  EXPECT_FALSE(kind_holding_both(UnknownKind::ancf_cable, UnknownKind::rigid_body).has_value());
+  EXPECT_FALSE(kind_holding_both(UnknownKind::ancf_beam, UnknownKind::rigid_body).has_value());
+  EXPECT_EQ(kind_info(UnknownKind::rigid_body).size, 12);
+  EXPECT_EQ(kind_info(UnknownKind::rigid_body).gradients, 3);
 }
 
 TEST(UnknownKinds, TheWidestNodeFillsACheckpointRow) {

@@ -12,7 +12,9 @@
 // q hold λ (those of v and a are unused and kept zero), and the multiplier rows of a
 // residual hold g(q, t), in metres. algebraic_mask() marks the multiplier slots, so
 // integrators can treat them as the algebraic part of the DAE (docs/integrators.md).
-// The constraints are linear in q (positions only), so G is constant.
+// Node constraints are linear in q, so their G is constant; a rigid body's frame
+// constraints are quadratic (couplings/body_frame_constraint.hpp): where the model has any,
+// constraints_linear() is false and integrators re-evaluate Gᵀ with the tangent.
 //
 // Every term is a coupling (couplings/coupling.hpp): this class partitions the model,
 // numbers the unknowns the couplings name, and runs the one gather–evaluate–scatter loop
@@ -84,7 +86,8 @@ class SecondOrderSystem {
   // Collective. K = ∂f/∂q + G (G in the multiplier rows: ∂R/∂q of the whole residual)
   // and C = ∂f/∂v at p in one element pass (matrices from create_matrix(); either may be
   // null). For integrators that combine them with coefficients of their own; the
-  // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (constant).
+  // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (at the same point where the
+  // constraints are not linear). K holds the constraints' Σ λ_k H_k.
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
 
   // Local patches (local_patch.hpp; local_patch.cpp). Collective: finds which owned DOFs
@@ -114,9 +117,13 @@ class SecondOrderSystem {
   bool has_constraints() const { return !model_->constraints.empty(); }
   // Collective. 1 in the multiplier slots, 0 in the nodal ones.
   void algebraic_mask(Vec mask) const;
-  // Collective. ∂²u/∂t² of the prescribed motions at t in the multiplier slots (0 in the
-  // others): with G constant, the acceleration-level constraint is G a = that.
-  void constraint_acceleration(double t, Vec out) const;
+  // Not collective (the same answer on every rank). False if some constraint's G depends
+  // on q (a rigid body's frame).
+  bool constraints_linear() const;
+  // Collective. γ(q, v, t) of the acceleration-level constraints G a = γ in the multiplier
+  // slots, 0 in the others (couplings/constraint_coupling.hpp): a prescribed motion's
+  // ∂²u/∂t², a quadratic constraint's −vᵀ H v. p.v null: at rest.
+  void constraint_acceleration(const EvalPoint& p, Vec out) const;
 
   // Collective. Replaces the element kernel of every model element for which
   // `linearize(element index)` is true by its linearisation about q0 (elements/

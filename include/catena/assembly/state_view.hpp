@@ -29,6 +29,16 @@ struct ContactState {
   bool on_path = false;      // the contact point is on its path
 };
 
+// Every rigid body's pose and angular velocity at a state (model::RigidBody order;
+// identical on every rank).
+struct BodyPoses {
+  // Unit quaternions (w, x, y, z), 4 per body, of the rotation R = [e1 e2 e3] from the body
+  // axes to the global frame (the nearest rotation: R is orthonormal to the Newton
+  // tolerance only).
+  std::vector<double> orientation;
+  std::vector<double> angular_velocity;  // rad/s, 3 per body: ω = ½ Σ e_k × ė_k
+};
+
 class StateView {
  public:
   explicit StateView(const SecondOrderSystem& system);
@@ -47,6 +57,8 @@ class StateView {
                           std::vector<double>& slopes) const;
   // Collective. Support reactions at owned supported nodes.
   Reactions reactions(const EvalPoint& p) const;
+  // Collective. Every rigid body's orientation and angular velocity at (q, v).
+  BodyPoses body_poses(Vec q, Vec v) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
   // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
   void owned_constraint_forces(Vec q, std::vector<int>& constraints,

@@ -8,29 +8,25 @@
 #include <vector>
 
 #include "catena/core/vec3.hpp"
-#include "catena/couplings/coupling.hpp"
+#include "catena/couplings/constraint_coupling.hpp"
 #include "catena/model/model.hpp"
 
 namespace catena::couplings {
 
-class NodeConstraint final : public Coupling {
+class NodeConstraint final : public ConstraintCoupling {
  public:
-  // `index`: into model.constraints.
+  // `index`: into model.constraints (coincident, pinned or prescribed).
   NodeConstraint(const model::Model& model, int index);
 
-  bool dense() const override { return false; }
   void pattern(std::vector<std::pair<int, int>>& entries) const override;
   void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                 Scratch& scratch) const override;
-  PatchRole patch_role() const override { return PatchRole::excluded; }
 
-  int index() const { return index_; }
-  // ∂²u/∂t² of a prescribed motion at t (zero for the others): with G constant, the
-  // acceleration-level constraint is G a = this.
-  Vec3 acceleration(double t) const;
+  bool linear() const override { return true; }
+  // ∂²u/∂t² of a prescribed motion at s.t (zero for the others).
+  std::array<double, 3> acceleration_target(const CouplingState& s) const override;
 
  private:
-  int index_;
   model::Constraint constraint_;
   Vec3 reference_a_;  // X_A
 };

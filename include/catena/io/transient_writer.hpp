@@ -9,7 +9,10 @@
 // /steps/* (one row per accepted
 // step), with pantographs /samples/contact_force and /samples/contact_position
 // (n_samples × n_pantographs), /steps/contact_force (n_steps × n_pantographs), a group
-// /pantographs/<name> each (attributes index, speed), /mesh/registration_nodes and root
+// /pantographs/<name> each (attributes index, speed), with rigid bodies /mesh/body_nodes,
+// /samples/body_orientation (n_samples × n_bodies × 4, quaternions) and
+// /samples/body_angular_velocity (× 3) and a group /bodies/<name> each (attribute index),
+// /mesh/registration_nodes and root
 // attributes evaluation_start/end, and root attributes (`format` = "catena-transient-1",
 // `scene_text`, run facts, `status`). Every name is defined once, in
 // src/io/transient_layout.hpp.
@@ -61,6 +64,12 @@ struct ContactSample {
   std::vector<double> position;  // m along the path
 };
 
+// Every rigid body's pose at a sample (identical on every rank; assembly::BodyPoses).
+struct BodySample {
+  std::vector<double> orientation;       // 4 per body: unit quaternion (w, x, y, z)
+  std::vector<double> angular_velocity;  // rad/s, 3 per body
+};
+
 // Where a restarted run continues an existing output file: the rows it had when the
 // checkpoint was taken (later rows, written before the run stopped, are cut off).
 struct ResumePoint {
@@ -98,7 +107,8 @@ class TransientWriter {
                      const std::vector<double>& velocities, const std::vector<double>& slopes,
                      const std::vector<double>& axial_force,
                      const std::vector<double>& constraint_forces = {},
-                     const ContactSample& contacts = {}, const SupportSample& supports = {});
+                     const ContactSample& contacts = {}, const SupportSample& supports = {},
+                     const BodySample& bodies = {});
   // Not collective (identical on every rank): buffered until flush().
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.

@@ -67,7 +67,13 @@ struct ElasticSupport {
 // (X_A: reference position, so the reference configuration satisfies g(q_ref, 0) = 0).
 // λ is the force the constraint applies to node A, with the sign convention
 // M a + f + Gᵀλ = 0 (G = ∂g/∂q): the force on A is −λ (on B, +λ).
-enum class ConstraintType { coincident, pinned, prescribed };
+//
+// A rigid body's node (RigidBody) carries two more, added by the scene reader, that keep
+// its axes e1, e2, e3 orthonormal; they are quadratic in q, so their G depends on q:
+//   frame_lengths:  g_k = ½(e_k·e_k − 1),           k = 1, 2, 3
+//   frame_angles:   g = (e2·e3, e3·e1, e1·e2)
+// Their multipliers are generalised forces on the axes (N·m), not forces on the node.
+enum class ConstraintType { coincident, pinned, prescribed, frame_lengths, frame_angles };
 
 struct Constraint {
   ConstraintType type = ConstraintType::pinned;
@@ -86,6 +92,23 @@ struct NodalLoad {
 struct PointMass {
   int node = 0;
   double mass = 0.0;  // kg
+};
+
+// A rigid body in natural coordinates on one node (docs/formulation.md, "Rigid bodies"):
+// the node's unknowns are a body point r (the node) and the body's axes e1, e2, e3 in the
+// global frame, so the body point at body coordinates ξ is at x = r + ξ_k e_k, linear in
+// the unknowns, and the mass matrix is constant. The node's reference frame (Node::tangent,
+// section_y, section_z) holds the axes' initial directions; two constraints (frame_lengths,
+// frame_angles) keep them orthonormal.
+struct RigidBody {
+  std::string name;
+  int node = 0;
+  double mass = 0.0;                     // kg, > 0
+  Vec3 centre_of_mass = Vec3::Zero();    // m, body coordinates of the centre of mass from r
+  Mat3 inertia = Mat3::Zero();           // kg·m², about the centre of mass, in body axes
+  Vec3 velocity = Vec3::Zero();          // m/s: initial velocity of r
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s: initial, global components
+  int first_constraint = -1;  // index of its frame_lengths constraint (frame_angles follows)
 };
 
 struct StaticOptions {
@@ -252,6 +275,7 @@ struct Model {
   std::vector<ElasticSupport> elastic_supports;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;
+  std::vector<RigidBody> rigid_bodies;
   std::vector<Constraint> constraints;
 
   std::vector<MovingLoad> moving_loads;

@@ -11,7 +11,7 @@
 //   - reference coordinates (assembly/second_order_system: the same slots),
 //   - checkpoints (rows of kMaxBlockUnknowns per node, io/checkpoint),
 //   - the integrators' state update (`update`, checked by solvers/time/integrator_factory).
-// A new kind (a rigid body's coordinates, a modal block, a slider coordinate) is a new row
+// A new kind (a modal block, a slider coordinate) is a new row
 // here; a `switch` over UnknownKind or UpdateRule has no `default:`, so a kind or rule some
 // code does not handle is a compile error (-Wswitch), not a silent fallback.
 #include <array>
@@ -32,6 +32,9 @@ enum class UnknownKind : std::uint8_t {
   point,       // [x, y, z]: a node only bars, springs, point masses or supports touch
   ancf_cable,  // [r, r_x]: a node of gradient-deficient ANCF cables
   ancf_beam,   // [r, r_x, r_y, r_z]: a node of full-gradient ANCF beams
+  // [r, e1, e2, e3]: a rigid body's point and axes (natural coordinates, model::RigidBody);
+  // bars, springs and masses at its node act on r
+  rigid_body,
   multiplier,  // [λx, λy, λz]: the Lagrange multipliers of one constraint
 };
 

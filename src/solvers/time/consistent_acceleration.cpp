@@ -8,18 +8,25 @@
 namespace catena::solvers {
 
 AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat mass)
-    : system_(system), algebraic_(system, mass) {
+    : system_(system), algebraic_(system, mass), mass_(mass) {
   rhs_ = system.create_vector();
-  Mat A = mass;
   if (algebraic_.active()) {
     target_ = system.create_vector();
     saddle_ = system.create_matrix();
-    system.jacobian({rhs_.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
-    A = saddle_.get();
   }
   ksp_ = create_direct_ksp(
       system.comm(), "mass_",
       algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
+  // G constant: factored once here, at any state (the reference's zero vector will do).
+  if (system.constraints_linear()) factor(rhs_.get());
+}
+
+void AccelerationSolver::factor(Vec q) {
+  Mat A = mass_;
+  if (algebraic_.active()) {
+    system_.jacobian({q, nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
+    A = saddle_.get();
+  }
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
   CATENA_PETSC(KSPSetUp(ksp_.get()));
   if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
@@ -35,10 +42,11 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
 void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
   // f without the constraint forces (λ = 0): they are unknowns here.
   algebraic_.zero_algebraic(q);
+  if (!system_.constraints_linear()) factor(q);  // G at this state
   system_.force({q, v, {}, t}, rhs_.get());
   CATENA_PETSC(VecScale(rhs_.get(), -1.0));
   if (algebraic_.active()) {
-    system_.constraint_acceleration(t, target_.get());
+    system_.constraint_acceleration({q, v, {}, t}, target_.get());
     algebraic_.take_algebraic(rhs_.get(), target_.get());
   }
   CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), a));

@@ -4,9 +4,10 @@
 //
 // With constraints (Lagrange multipliers) it is the acceleration-level system
 //   [M  Gᵀ] [a]   [−f(t, q, v)]
-//   [G  0 ] [λ] = [ ü(t)       ]     (G a = ü: the constraints are linear in q),
-// which also gives the multipliers consistent with the state. Both matrices are
-// constant, so AccelerationSolver factors once and solves many times.
+//   [G  0 ] [λ] = [ γ(q, v, t) ]     (G a = γ: couplings/constraint_coupling.hpp),
+// which also gives the multipliers consistent with the state. Where the constraints are
+// linear, both matrices are constant and AccelerationSolver factors once and solves many
+// times; a rigid body's frame makes G depend on q, and each solve factors at its state.
 #include <petscmat.h>
 
 #include "catena/assembly/petsc_handle.hpp"
@@ -29,8 +30,12 @@ class AccelerationSolver {
   assembly::SecondOrderSystem& system_;
   AlgebraicPart algebraic_;
   MatHandle saddle_;
+  Mat mass_;
   KspHandle ksp_;
   VecHandle rhs_, target_;
+
+  // Collective. Factors M, or the saddle-point matrix with G at q; throws if singular.
+  void factor(Vec q);
 };
 
 // Collective. One-off AccelerationSolver(system, mass).solve(t, q, v, a).

@@ -7,8 +7,8 @@
 //               the system has damping), with the round-off floor's diagonal of K;
 //   J           the Newton matrix, given M's full pattern once so that MatCopy/MatAXPY
 //               keep it;
-//   Gᵀ          the multipliers' columns (constant: the constraints are linear in q) and
-//               the algebraic part, where the system has constraints.
+//   Gᵀ          the multipliers' columns and the algebraic part, where the system has
+//               constraints: constant where they are linear in q, else evaluated with K.
 // The integrators derive their private state from this struct, so that their formulas
 // read `mass`, `K`, `evaluate_tangent(...)` as before; what differs (the coefficients of
 // J, the unknown) stays theirs.
@@ -25,8 +25,8 @@
 namespace catena::solvers {
 
 struct StepMatrices {
-  // Collective. q: a state of the system's layout (the matrices' point is irrelevant: M and
-  // Gᵀ are constant).
+  // Collective. q: a state of the system's layout (M is constant, and so is Gᵀ where the
+  // constraints are linear; else evaluate_tangent sets it).
   StepMatrices(assembly::SecondOrderSystem& system, Vec q);
 
   assembly::SecondOrderSystem& system;
