@@ -33,6 +33,7 @@
 #include "catena/post/contact_resolution.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
+#include "catena/solvers/time/consistent_acceleration.hpp"
 #include "catena/solvers/time/integrator_factory.hpp"
 #include "catena/solvers/time/state_guard.hpp"
 #include "catena/solvers/time/transient_solver.hpp"
@@ -514,7 +515,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     }
     VecHandle a = system.create_vector();
     const std::vector<double> no_multipliers(
-        model::kMultipliersPerConstraint * m.constraints.size(), 0.0);
+        static_cast<std::size_t>(model::multiplier_width(m)) * m.constraints.size(), 0.0);
     const assembly::StateView view(system);
     view.set_from_node_rows(q.get(), resumed->q, resumed->lambda);
     view.set_from_node_rows(v.get(), resumed->v, no_multipliers);
@@ -540,6 +541,17 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         linearize_structure(system, q.get(), rank);
     }
     apply_initial_conditions(system, q.get(), v.get());
+    // Velocities that pull joined parts apart (a crank's speed given alone) would be an
+    // impulse in the first step; projected here instead, and said.
+    PetscReal speed = 0.0;
+    CATENA_PETSC(VecNorm(v.get(), NORM_INFINITY, &speed));
+    if (const double change = solvers::project_initial_velocity(system, 0.0, q.get(), v.get());
+        change > 1e-9 * speed + 1e-12 && rank == 0)
+      std::printf(
+          "initial velocity: projected onto the constraints (largest change %g of %g): the "
+          "scene's velocities moved joined parts apart; they start with the least change in "
+          "kinetic energy that lets them move together (docs/scene.md, 'bodies')\n",
+          change, speed);
     integrator->set_state(0.0, q.get(), v.get(), nullptr);
   }
   if (rank == 0) {

@@ -40,9 +40,12 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
   for (int n = 0; n < n_nodes; ++n) nodes_of_rank[partition.node_owner[n]].push_back(n);
   const int n_constraints = static_cast<int>(model.constraints.size());
   constraint_owner_.resize(n_constraints);
-  multiplier_.assign(static_cast<std::size_t>(kMultipliers) * n_constraints, -1);
-  for (int c = 0; c < n_constraints; ++c)
+  multiplier_offset_.assign(1, 0);
+  for (int c = 0; c < n_constraints; ++c) {
     constraint_owner_[c] = partition.node_owner[model.constraints[c].node_a];
+    multiplier_offset_.push_back(multiplier_offset_.back() + model.constraints[c].equations);
+  }
+  multiplier_.assign(static_cast<std::size_t>(multiplier_offset_.back()), -1);
   PetscInt next = 0;
   for (int r = 0; r < partition.n_parts; ++r) {
     if (r == rank) first_owned_ = next;
@@ -59,8 +62,8 @@ DofMap::DofMap(const model::Model& model, const Partition& partition, int rank,
       }
     for (int c = 0; c < n_constraints; ++c)
       if (constraint_owner_[c] == r)
-        for (int k = 0; k < kMultipliers; ++k) {
-          multiplier_[kMultipliers * c + k] = next++;
+        for (int k = 0; k < n_multipliers(c); ++k) {
+          multiplier_[static_cast<std::size_t>(multiplier_offset_[c] + k)] = next++;
           global_node_.push_back(model.constraints[c].node_a);
           global_constraint_.push_back(c);
         }
@@ -97,7 +100,7 @@ int DofMap::node_of_global(PetscInt global) const { return global_node_.at(globa
 
 int DofMap::component_of_global(PetscInt global) const {
   if (const int c = constraint_of_global(global); c >= 0)
-    for (int k = 0; k < kMultipliers; ++k)
+    for (int k = 0; k < n_multipliers(c); ++k)
       if (multiplier_dof(c, k) == global) return k;
   const int n = node_of_global(global);
   for (int k = 0; k < node_dofs(n); ++k)

@@ -249,7 +249,7 @@ void SecondOrderSystem::reference_state(Vec q) const {
         a[g - dofs_.first_owned()] += dofs_.coefficient(n, k) * node_reference_[kBlock * n + k];
   }
   for (int c = 0; c < dofs_.n_constraints(); ++c)
-    for (int k = 0; k < DofMap::kMultipliers; ++k)
+    for (int k = 0; k < dofs_.n_multipliers(c); ++k)
       if (const PetscInt l = dofs_.multiplier_local(c, k); l >= 0) a[l] = 0.0;
   CATENA_PETSC(VecRestoreArray(q, &a));
 }

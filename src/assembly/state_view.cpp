@@ -213,18 +213,23 @@ void StateView::owned_node_rows(Vec x, std::vector<double>& rows,
       const PetscInt g = k < sys.dofs_.node_dofs(n) ? sys.dofs_.global_dof(n, k) : -1;
       rows.push_back(g >= 0 ? sys.dofs_.coefficient(n, k) * a[g - sys.dofs_.first_owned()] : 0.0);
     }
+  // Rows of multiplier_width() values, padded with 0 beyond a constraint's equations.
+  const int width = model::multiplier_width(*sys.model_);
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
-    for (int k = 0; k < DofMap::kMultipliers; ++k)
-      if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0) multipliers.push_back(a[l]);
+    if (sys.dofs_.multiplier_local(c, 0) >= 0)
+      for (int k = 0; k < width; ++k)
+        multipliers.push_back(k < sys.dofs_.n_multipliers(c) ? a[sys.dofs_.multiplier_local(c, k)]
+                                                             : 0.0);
   CATENA_PETSC(VecRestoreArrayRead(x, &a));
 }
 
 void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
                                    const std::vector<double>& multipliers) const {
   const SecondOrderSystem& sys = system_;
+  const auto width = static_cast<size_t>(model::multiplier_width(*sys.model_));
   CATENA_ASSERT(rows.size() == kBlock * sys.model_->nodes.size() &&
-                    multipliers.size() == DofMap::kMultipliers * sys.model_->constraints.size(),
-                "a row per node, a multiplier block per constraint");
+                    multipliers.size() == width * sys.model_->constraints.size(),
+                "a row per node, a multiplier row per constraint");
   PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArray(x, &a));
   // Each unknown is Σ c_k·row_k over its slots: the row itself, or a linked slope's
@@ -238,9 +243,9 @@ void StateView::set_from_node_rows(Vec x, const std::vector<double>& rows,
             sys.dofs_.coefficient(n, k) * rows[kBlock * static_cast<size_t>(n) + k];
   }
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c)
-    for (int k = 0; k < DofMap::kMultipliers; ++k)
+    for (int k = 0; k < sys.dofs_.n_multipliers(c); ++k)
       if (const PetscInt l = sys.dofs_.multiplier_local(c, k); l >= 0)
-        a[l] = multipliers[DofMap::kMultipliers * static_cast<size_t>(c) + k];
+        a[l] = multipliers[width * static_cast<size_t>(c) + static_cast<size_t>(k)];
   CATENA_PETSC(VecRestoreArray(x, &a));
 }
 
@@ -251,11 +256,12 @@ void StateView::owned_constraint_forces(Vec q, std::vector<int>& constraints,
   forces.clear();
   const PetscScalar* a = nullptr;
   CATENA_PETSC(VecGetArrayRead(q, &a));
+  const int width = model::multiplier_width(*sys.model_);
   for (int c = 0; c < sys.dofs_.n_constraints(); ++c) {
     if (sys.dofs_.multiplier_local(c, 0) < 0) continue;
     constraints.push_back(c);
-    for (int k = 0; k < DofMap::kMultipliers; ++k)
-      forces.push_back(-a[sys.dofs_.multiplier_local(c, k)]);
+    for (int k = 0; k < width; ++k)
+      forces.push_back(k < sys.dofs_.n_multipliers(c) ? -a[sys.dofs_.multiplier_local(c, k)] : 0.0);
   }
   CATENA_PETSC(VecRestoreArrayRead(q, &a));
 }

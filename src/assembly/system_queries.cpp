@@ -43,7 +43,7 @@ void SecondOrderSystem::algebraic_mask(Vec mask) const {
   CATENA_PETSC(VecSet(mask, 0.0));
   for (int c = 0; c < dofs_.n_constraints(); ++c)
     if (dofs_.multiplier_local(c, 0) >= 0)
-      for (int k = 0; k < DofMap::kMultipliers; ++k)
+      for (int k = 0; k < dofs_.n_multipliers(c); ++k)
         CATENA_PETSC(VecSetValue(mask, dofs_.multiplier_dof(c, k), 1.0, INSERT_VALUES));
   CATENA_PETSC(VecAssemblyBegin(mask));
   CATENA_PETSC(VecAssemblyEnd(mask));
@@ -58,6 +58,14 @@ bool SecondOrderSystem::constraints_linear() const {
 }
 
 void SecondOrderSystem::constraint_acceleration(const EvalPoint& p, Vec out) const {
+  constraint_targets(p, out, false);
+}
+
+void SecondOrderSystem::constraint_velocity(const EvalPoint& p, Vec out) const {
+  constraint_targets(p, out, true);
+}
+
+void SecondOrderSystem::constraint_targets(const EvalPoint& p, Vec out, bool velocity) const {
   CATENA_PETSC(VecSet(out, 0.0));
   scatter_to_local(p.q, q_work_.get());
   if (p.v) scatter_to_local(p.v, v_work_.get());
@@ -69,9 +77,16 @@ void SecondOrderSystem::constraint_acceleration(const EvalPoint& p, Vec out) con
       const auto* c = dynamic_cast<const couplings::ConstraintCoupling*>(couplings_[i].get());
       if (!c) continue;
       const ActiveDofs dofs = active(i, p.t, work_);
-      const std::array<double, 3> target = c->acceleration_target(
-          gather(dofs, q.data(), v ? v->data() : nullptr, p.path, p.t, work_));
-      for (int k = 0; k < 3; ++k)
+      const int n = dofs_.n_multipliers(c->index());
+      std::array<double, model::kMaxMultipliersPerConstraint> target{};
+      const couplings::CouplingState state =
+          gather(dofs, q.data(), v ? v->data() : nullptr, p.path, p.t, work_);
+      const std::span<double> into{target.data(), static_cast<size_t>(n)};
+      if (velocity)
+        c->velocity_target(state, into);
+      else
+        c->acceleration_target(state, into);
+      for (int k = 0; k < n; ++k)
         if (target[static_cast<size_t>(k)] != 0.0)
           CATENA_PETSC(VecSetValue(out, dofs_.multiplier_dof(c->index(), k),
                                    target[static_cast<size_t>(k)], INSERT_VALUES));

@@ -87,9 +87,10 @@ void BodyFrameConstraint::evaluate(const CouplingState& s, double* f,
   }
 }
 
-std::array<double, 3> BodyFrameConstraint::acceleration_target(const CouplingState& s) const {
-  std::array<double, 3> target{};
-  if (s.v.empty()) return target;  // at rest: vᵀ H v = 0
+void BodyFrameConstraint::acceleration_target(const CouplingState& s,
+                                              std::span<double> target) const {
+  std::fill(target.begin(), target.end(), 0.0);
+  if (s.v.empty()) return;  // at rest: vᵀ H v = 0
   auto rate = [&](int a) { return Vec3(s.v[slot(a, 0)], s.v[slot(a, 1)], s.v[slot(a, 2)]); };
   for (int k = 0; k < 3; ++k) {
     const auto [i, j] = axes_[static_cast<size_t>(k)];
@@ -97,7 +98,6 @@ std::array<double, 3> BodyFrameConstraint::acceleration_target(const CouplingSta
     target[static_cast<size_t>(k)] =
         lengths_ ? -rate(i).squaredNorm() : -2.0 * rate(i).dot(rate(j));
   }
-  return target;
 }
 
 }  // namespace catena::couplings

@@ -2,6 +2,7 @@
 
 #include "catena/couplings/body_frame_constraint.hpp"
 #include "catena/couplings/element_factory.hpp"
+#include "catena/couplings/joint_constraint.hpp"
 #include "catena/couplings/moving_load.hpp"
 #include "catena/couplings/node_constraint.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
@@ -40,6 +41,8 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
     if (constraint.type == model::ConstraintType::frame_lengths ||
         constraint.type == model::ConstraintType::frame_angles)
       list.push_back(std::make_unique<BodyFrameConstraint>(model, c));
+    else if (constraint.type == model::ConstraintType::joint)
+      list.push_back(std::make_unique<JointConstraint>(model, c));
     else
       list.push_back(std::make_unique<NodeConstraint>(model, c));
   }

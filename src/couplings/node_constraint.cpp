@@ -33,11 +33,20 @@ void NodeConstraint::pattern(std::vector<std::pair<int, int>>& entries) const {
   }
 }
 
-std::array<double, 3> NodeConstraint::acceleration_target(const CouplingState& s) const {
-  if (constraint_.type != model::ConstraintType::prescribed) return {0.0, 0.0, 0.0};
+void NodeConstraint::acceleration_target(const CouplingState& s, std::span<double> out) const {
   const double w = 2.0 * M_PI * constraint_.frequency;
-  const Vec3 u_tt = -w * w * std::sin(w * s.t) * constraint_.amplitude;
-  return {u_tt[0], u_tt[1], u_tt[2]};
+  const Vec3 u_tt = constraint_.type == model::ConstraintType::prescribed
+                        ? Vec3(-w * w * std::sin(w * s.t) * constraint_.amplitude)
+                        : Vec3::Zero();
+  for (int k = 0; k < 3; ++k) out[static_cast<size_t>(k)] = u_tt[k];
+}
+
+void NodeConstraint::velocity_target(const CouplingState& s, std::span<double> out) const {
+  const double w = 2.0 * M_PI * constraint_.frequency;
+  const Vec3 u_t = constraint_.type == model::ConstraintType::prescribed
+                       ? Vec3(constraint_.velocity + w * std::cos(w * s.t) * constraint_.amplitude)
+                       : Vec3::Zero();
+  for (int k = 0; k < 3; ++k) out[static_cast<size_t>(k)] = u_t[k];
 }
 
 void NodeConstraint::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,

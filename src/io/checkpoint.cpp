@@ -45,7 +45,6 @@ constexpr const char* kResumeMultipliers = "/resume/multipliers";
 // Row widths: a node's row holds the widest block of unknowns (model/unknown_kinds.hpp), so
 // every node kind fits and the file does not depend on which kinds a scene uses.
 constexpr std::size_t kNodeRow = model::kMaxBlockUnknowns;
-constexpr std::size_t kMultiplierRow = model::kMultipliersPerConstraint;
 
 // "<group>/<name>", a member of one of the /resume groups.
 std::string member_path(const char* group, const std::string& name) {
@@ -120,14 +119,15 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   c.q = r.values(kPositions, kNodeRow * n);
   c.v = r.values(kVelocities, kNodeRow * n);
   c.a = r.values(kAccelerations, kNodeRow * n);
-  c.lambda = r.values(kMultipliers, kMultiplierRow * model.constraints.size());
+  const auto multiplier_row = static_cast<std::size_t>(model::multiplier_width(model));
+  c.lambda = r.values(kMultipliers, multiplier_row * model.constraints.size());
   if (format == kFormatWithoutResume) return c;
   c.facts.ranks = static_cast<int>(r.integer("ranks"));
   r.numbers(kResumeGroup, c.resume.reals, c.resume.integers);
   for (const std::string& name : r.members(kResumeVectors)) {
     c.resume.rows[name] = r.values(member_path(kResumeVectors, name).c_str(), kNodeRow * n);
     c.resume.multipliers[name] = r.values(member_path(kResumeMultipliers, name).c_str(),
-                                          kMultiplierRow * model.constraints.size());
+                                          multiplier_row * model.constraints.size());
   }
   return c;
 }
@@ -139,6 +139,7 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
                        const ResumeRows& resume) {
   const auto n_nodes = static_cast<std::int64_t>(model.nodes.size());
   const auto n_constraints = static_cast<std::int64_t>(model.constraints.size());
+  const int multiplier_row = model::multiplier_width(model);
   const GroupHandle group = create_group(file, kResumeGroup);
   create_group(file, kResumeVectors);
   create_group(file, kResumeMultipliers);
@@ -148,8 +149,8 @@ void write_resume_rows(MPI_Comm comm, const ParallelHdf5File& file, const model:
     write_block_dataset<double>(file, {node_path.c_str(), n_nodes, kNodeRow}, nodes.block(), block);
     const std::string multiplier_path = member_path(kResumeMultipliers, name);
     const std::vector<double> lambda =
-        constraints.to_block(resume.multipliers.at(name), kMultiplierRow);
-    write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, kMultiplierRow},
+        constraints.to_block(resume.multipliers.at(name), multiplier_row);
+    write_block_dataset<double>(file, {multiplier_path.c_str(), n_constraints, multiplier_row},
                                 constraints.block(), lambda);
   }
   run_collective_phase(comm, [&] {
@@ -178,9 +179,10 @@ void write_checkpoint_atomically(MPI_Comm comm, const std::string& path, const m
       const std::vector<double> block = nodes.to_block(*values, kNodeRow);
       write_block_dataset<double>(file, {name, n_nodes, kNodeRow}, nodes.block(), block);
     }
-    const std::vector<double> lambda = constraints.to_block(share.lambda, kMultiplierRow);
-    write_block_dataset<double>(file, {kMultipliers, n_constraints, 3, "N"}, constraints.block(),
-                                lambda);
+    const int multiplier_row = model::multiplier_width(model);
+    const std::vector<double> lambda = constraints.to_block(share.lambda, multiplier_row);
+    write_block_dataset<double>(file, {kMultipliers, n_constraints, multiplier_row, "N"},
+                                constraints.block(), lambda);
     write_resume_rows(comm, file, model, nodes, constraints, share.resume);
     run_collective_phase(comm, [&] {
       const AttributeTarget root{file.id(), file.path()};

@@ -182,6 +182,7 @@ struct TransientWriter::Impl {
   ParallelHdf5File file;
   RowRedistribution nodes, elements, constraints;
   bool has_constraints = false;
+  int multiplier_width = 3;    // values per constraint row (model::multiplier_width)
   std::vector<int> supported;  // the supported nodes, ascending (layout::support_nodes)
   RowRedistribution supports;
   bool has_supports = false;
@@ -222,6 +223,7 @@ struct TransientWriter::Impl {
         constraints(c, static_cast<std::int64_t>(m.constraints.size()), own_constraints,
                     "owned_constraints"),
         has_constraints(!m.constraints.empty()),
+        multiplier_width(model::multiplier_width(m)),
         supported(model::supported_nodes(m)),
         supports(c, static_cast<std::int64_t>(supported.size()), support_rows(supported, own_nodes),
                  "owned support nodes"),
@@ -276,9 +278,10 @@ struct TransientWriter::Impl {
     const auto n_elements = static_cast<hsize_t>(model.elements.size());
     const hid_t real = H5T_IEEE_F64LE, count = H5T_STD_I32LE;
     if (has_constraints)
-      constraint_forces =
-          series(layout::constraint_forces, {static_cast<hsize_t>(model.constraints.size()), 3},
-                 real, samples);
+      constraint_forces = series(layout::constraint_forces,
+                                 {static_cast<hsize_t>(model.constraints.size()),
+                                  static_cast<hsize_t>(model::multiplier_width(model))},
+                                 real, samples);
     // A file to continue that lacks a series newer Catenas write: refused, naming it.
     const auto require_on_resume = [&](const layout::Dataset& dataset, const char* what) {
       if (!resume) return;
@@ -512,7 +515,8 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
     add(b.velocities, s.nodes.to_block(velocities, 3));
     add(b.slopes, s.nodes.to_block(slopes, 3));
     add(b.axial, s.elements.to_block(axial_force, 1));
-    if (s.has_constraints) add(b.constraint_forces, s.constraints.to_block(constraint_forces, 3));
+    if (s.has_constraints)
+      add(b.constraint_forces, s.constraints.to_block(constraint_forces, s.multiplier_width));
     if (s.has_supports) {
       add(b.reaction_force, s.supports.to_block(supports.force, 3));
       add(b.reaction_moment, s.supports.to_block(supports.moment, 3));

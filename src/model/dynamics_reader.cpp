@@ -18,7 +18,8 @@ void fail_if_present(const Field& f, const std::string& why) {
 
 // What the integrator types are and which keys apply to each: model/integrator_catalogue.hpp,
 // which the solvers ask too. `constraints`: the scene's Lagrange-multiplier constraints.
-void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions& o) {
+void read_integrator(const Field& in, std::size_t constraints, bool nonlinear_constraints,
+                     IntegratorOptions& o) {
   if (!in.present()) return;
   in.expect_map("integrator settings {type, stages, alpha, dt, adaptive, ...}");
   in.check_keys({"type", "stages", "alpha", "dt", "adaptive", "rtol", "atol", "dt_min", "dt_max",
@@ -143,7 +144,8 @@ void read_integrator(const Field& in, std::size_t constraints, IntegratorOptions
                            .integer_or(o.max_newton_iterations, IntRange::between(1, 1000)));
   // The combinations the solvers refuse (constraints, the embedded estimate, the decoupled
   // solve), here where the message can name the line.
-  if (const std::optional<IntegratorRefusal> refusal = refuse_integrator(o, constraints)) {
+  if (const std::optional<IntegratorRefusal> refusal =
+          refuse_integrator(o, constraints, nonlinear_constraints)) {
     const Field key = in.child(refusal->key);
     (key.present() ? key : in).fail(refusal->why);
   }
@@ -286,7 +288,7 @@ void read_dynamics(const Field& scene, Model& model) {
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
   read_structure(analysis, model);
-  read_integrator(scene.child("integrator"), model.constraints.size(),
+  read_integrator(scene.child("integrator"), model.constraints.size(), !model.rigid_bodies.empty(),
                   model.dynamic_options.integrator);
   check_step_within_duration(scene.child("integrator").child("dt"), duration,
                              model.dynamic_options);

@@ -54,11 +54,11 @@ ProblemSize problem_size(const Model& model) {
       for (std::size_t j = 0; j < e.nodes.size(); ++j)
         if (i != j)
           size.matrix_nonzeros += static_cast<std::int64_t>(dofs[e.nodes[i]]) * dofs[e.nodes[j]];
-  // Multipliers: three rows and columns per constraint, each against a node block.
-  const std::int64_t multipliers =
-      kMultipliersPerConstraint * static_cast<std::int64_t>(model.constraints.size());
+  // Multipliers: a row and a column each, against up to two node blocks (a joint's two
+  // bodies).
+  const auto multipliers = static_cast<std::int64_t>(total_multipliers(model));
   size.dofs += multipliers;
-  size.matrix_nonzeros += 2 * multipliers * kMaxBlockUnknowns;
+  size.matrix_nonzeros += 4 * multipliers * kMaxBlockUnknowns;
   // A pantograph head is coupled to every node of the part of its path it can reach
   // (couplings/pantograph_contact.hpp).
   for (const MovingContact& c : model.contacts) {

@@ -151,16 +151,17 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
   if (!model.constraints.empty()) {
-    int by_type[5] = {0, 0, 0, 0, 0};
+    int by_type[6] = {0, 0, 0, 0, 0, 0};
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
     const int frames = by_type[static_cast<int>(ConstraintType::frame_lengths)] +
                        by_type[static_cast<int>(ConstraintType::frame_angles)];
-    t.row("constraints", std::to_string(model.constraints.size()) + " (coincident " +
-                             std::to_string(by_type[0]) + ", pinned " + std::to_string(by_type[1]) +
-                             ", prescribed " + std::to_string(by_type[2]) +
-                             (frames > 0 ? ", rigid-body frames " + std::to_string(frames) : "") +
-                             "): " + std::to_string(3 * model.constraints.size()) +
-                             " Lagrange multipliers");
+    t.row("constraints",
+          std::to_string(model.constraints.size()) + " (coincident " + std::to_string(by_type[0]) +
+              ", pinned " + std::to_string(by_type[1]) + ", prescribed " +
+              std::to_string(by_type[2]) +
+              (frames > 0 ? ", rigid-body frames " + std::to_string(frames) : "") +
+              (model.joints.empty() ? "" : ", joints " + std::to_string(model.joints.size())) +
+              "): " + std::to_string(total_multipliers(model)) + " Lagrange multipliers");
   }
   for (const RigidBody& b : model.rigid_bodies) {
     const model::Node& node = model.nodes[static_cast<size_t>(b.node)];
@@ -173,6 +174,20 @@ std::string describe(const Model& model, int n_ranks_running) {
                             b.centre_of_mass[2] * node.section_z) +
               " m, principal moments " + format_vector(principal.eigenvalues()) +
               " kg*m^2; natural coordinates (r, e1, e2, e3: 12 unknowns, 6 frame constraints)");
+  }
+  static const char* joint_types[] = {"spherical", "revolute", "cylindrical", "prismatic", "fixed"};
+  for (const Joint& j : model.joints) {
+    const std::string other =
+        j.body_b >= 0   ? "body '" + model.rigid_bodies[static_cast<size_t>(j.body_b)].name + "'"
+        : j.node_b >= 0 ? "node " + std::to_string(model.nodes[static_cast<size_t>(j.node_b)].id)
+                        : std::string("ground");
+    const bool has_axis = j.type == JointType::revolute || j.type == JointType::cylindrical ||
+                          j.type == JointType::prismatic;
+    t.row("joint '" + j.name + "'",
+          std::string(joint_types[static_cast<int>(j.type)]) + " between body '" +
+              model.rigid_bodies[static_cast<size_t>(j.body_a)].name + "' and " + other + " at " +
+              format_vector(j.point) + " m" + (has_axis ? ", axis " + format_vector(j.axis) : "") +
+              ": " + std::to_string(joint_equations(j.type)) + " multipliers");
   }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");

@@ -21,6 +21,7 @@
 #include "dynamics_reader.hpp"
 #include "element_reader.hpp"
 #include "free_body_check.hpp"
+#include "joint_reader.hpp"
 #include "line_generator.hpp"
 #include "memory_check.hpp"
 #include "moving_load_reader.hpp"
@@ -38,9 +39,10 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",     "gravity",          "sections",   "nodes",  "lines",       "elements",
-      "supports", "elastic_supports", "loads",      "masses", "constraints", "moving_loads",
-      "bodies",   "analysis",         "integrator", "output", "catenary",    "pantographs"};
+      "name",        "gravity",      "sections",         "nodes",      "lines",
+      "elements",    "supports",     "elastic_supports", "loads",      "masses",
+      "constraints", "moving_loads", "bodies",           "joints",     "analysis",
+      "integrator",  "output",       "catenary",         "pantographs"};
   return keys;
 }
 
@@ -98,6 +100,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
   detail::read_constraints(scene.child("constraints"), build);
   detail::add_body_frame_constraints(scene.child("bodies"), build);
+  detail::read_joints(scene.child("joints"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);

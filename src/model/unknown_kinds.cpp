@@ -56,8 +56,8 @@ constexpr std::array<Row, 5> kTable{{
      {"a constraint's multipliers",
       "multiplier",
       "one block per constraint",
-      3,
-      {"x", "y", "z"},
+      kMaxMultipliersPerConstraint,
+      {"1", "2", "3", "4", "5", "6"},
       -1,
       -1,
       UpdateRule::additive,
@@ -77,7 +77,7 @@ constexpr bool table_is_consistent() {
       return false;
   }
   return kTable[static_cast<std::size_t>(UnknownKind::multiplier)].info.size ==
-         kMultipliersPerConstraint;
+         kMaxMultipliersPerConstraint;
 }
 static_assert(table_is_consistent(), "unknown-kind table: order, size or slots wrong");
 

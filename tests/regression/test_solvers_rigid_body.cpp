@@ -6,7 +6,10 @@
 //    while the energy and the angular momentum about the vertical (both conserved) hold and
 //    the axes stay orthonormal to the Newton tolerance;
 //  - the physical pendulum (the same body hanging, swinging in a plane) has the small-
-//    amplitude period 2π √(I_pivot / (m g l)).
+//    amplitude period 2π √(I_pivot / (m g l));
+//  - a body on a revolute joint to ground released at 60° has the large-amplitude period
+//    4 √(I / (m g l)) K(sin 30°) and, at the bottom, the joint force m g + m ω² l with
+//    ω² = 2 m g l (1 − cos 60°) / I.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,6 +266,79 @@ TEST(RigidBody, PhysicalPendulumHasTheClosedFormPeriod) {
   // Linear interpolation of a sine between samples 1e-3 s apart: error O((ω dt)²/ 8) of
   // the crossing time's fraction, far below 1e-6 of the period after differencing.
   EXPECT_NEAR(measured, period, 1e-6 * period);
+}
+
+// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric mean.
+double elliptic_k(double k) {
+  double a = 1.0, b = std::sqrt(1.0 - k * k);
+  for (int i = 0; i < 30; ++i) {
+    const double next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = next;
+  }
+  return M_PI / (2.0 * a);
+}
+
+TEST(RigidBody, RevolutePendulumHasTheEllipticPeriodAndJointForce) {
+  catena::test::ensure_petsc();
+  const double m = 2.0, l = 0.5, g = 9.81, theta0 = M_PI / 3.0;
+  const double inertia_y = 0.03 + m * l * l;  // about the joint's axis (y)
+  // The body's point r is its centre of mass, l from the pivot at the origin, swung by θ₀
+  // about y: its axes are the global ones turned by θ₀ about y.
+  const Vec3 r(l * std::sin(theta0), 0.0, -l * std::cos(theta0));
+  const Vec3 e1(std::cos(theta0), 0.0, -std::sin(theta0));
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "name: revolute pendulum\n"
+                "gravity: [0, 0, %.17g]\n"
+                "nodes: [{id: 1, position: [%.17g, 0, %.17g]}]\n"
+                "bodies:\n"
+                "  - {name: arm, node: 1, mass: %.17g, inertia: [0.02, 0.03, 0.04],\n"
+                "     axes: [[%.17g, 0, %.17g], [0, 1, 0]]}\n"
+                "joints:\n"
+                "  - {type: revolute, between: [arm, ground], point: [0, 0, 0], axis: [0, 1, 0]}\n"
+                "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n",
+                -g, r[0], r[2], m, e1[0], e1[2]);
+  const model::Model pendulum = model::parse_scene(text, "revolute_pendulum.yaml");
+  catena::assembly::SecondOrderSystem system(PETSC_COMM_WORLD, pendulum);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  auto integrator = make(system, "radau_iia");
+  integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  const double period = 4.0 * std::sqrt(inertia_y / (m * g * l)) * elliptic_k(std::sin(theta0 / 2));
+  const double omega_bottom = std::sqrt(2.0 * m * g * l * (1.0 - std::cos(theta0)) / inertia_y);
+  const double force_bottom = m * g + m * omega_bottom * omega_bottom * l;
+  // The swing angle from the point's position; the joint's force on the body is −λ (its
+  // first three multipliers, the last constraint's).
+  const auto& dofs = system.dof_map();
+  const int joint = dofs.n_constraints() - 1;
+  auto angle_and_force = [&] {
+    const BodyState s = body_state(system, integrator->q(), integrator->v());
+    const double lambda_z = catena::test::global_value(PETSC_COMM_WORLD, integrator->q(),
+                                                       dofs.multiplier_dof(joint, 2));
+    return std::pair{std::atan2(s.r[0], -s.r[2]), -lambda_z};
+  };
+  const double dt = 1e-3;
+  std::vector<double> crossings, forces;
+  auto [previous, previous_force] = angle_and_force();
+  for (int n = 1; n * dt < 1.3 * period && crossings.size() < 2; ++n) {
+    catena::test::advance_fixed(*integrator, dt, 1);
+    const auto [now, force] = angle_and_force();
+    if ((previous > 0.0) != (now > 0.0)) {
+      const double w = previous / (previous - now);
+      crossings.push_back((n - 1 + w) * dt);
+      forces.push_back(previous_force + w * (force - previous_force));
+    }
+    previous = now;
+    previous_force = force;
+  }
+  ASSERT_EQ(crossings.size(), 2u);
+  std::printf(
+      "revolute pendulum: half period %.9f s (closed form %.9f), force at the bottom "
+      "%.6f N and %.6f N (closed form %.6f)\n",
+      crossings[1] - crossings[0], period / 2, forces[0], forces[1], force_bottom);
+  EXPECT_NEAR(crossings[1] - crossings[0], period / 2, 1e-6 * period);
+  for (const double f : forces) EXPECT_NEAR(f, force_bottom, 1e-4 * force_bottom);
 }
 
 }  // namespace

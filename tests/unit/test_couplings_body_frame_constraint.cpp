@@ -127,7 +127,8 @@ TEST(BodyFrameConstraint, AccelerationTargetIsGAccelerationMinusTheSecondDerivat
     const MatrixRequest request[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
     const std::vector<double> q = q_at(t);
     frame.evaluate({q, {}, {}, 0.0}, nullptr, request, scratch);
-    const std::array<double, 3> target = frame.acceleration_target({q, v, {}, t});
+    std::array<double, 3> target{};
+    frame.acceleration_target({q, v, {}, t}, target);
     const std::vector<double> gp = g(t + h), g0 = g(t), gm = g(t - h);
     for (int k = 0; k < 3; ++k) {
       double Ga = 0.0;

@@ -26,7 +26,7 @@ TEST(UnknownKinds, MultipliersShareABlockWithNoNode) {
   EXPECT_FALSE(kind_holding_both(UnknownKind::point, UnknownKind::multiplier).has_value());
   EXPECT_FALSE(kind_holding_both(UnknownKind::multiplier, UnknownKind::ancf_beam).has_value());
   EXPECT_FALSE(kind_info(UnknownKind::multiplier).nodal);
-  EXPECT_EQ(kind_info(UnknownKind::multiplier).size, kMultipliersPerConstraint);
+  EXPECT_EQ(kind_info(UnknownKind::multiplier).size, kMaxMultipliersPerConstraint);
 }
 
 TEST(UnknownKinds, EveryRowIsWellFormed) {

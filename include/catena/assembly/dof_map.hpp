@@ -33,9 +33,6 @@ namespace catena::assembly {
 
 class DofMap {
  public:
-  // Multipliers per constraint.
-  static constexpr int kMultipliers = model::kMultipliersPerConstraint;
-
   // Not collective (deterministic on every rank). `touched`: the nodes this rank's
   // couplings act on (any order, repeats allowed; owned ones are ignored).
   DofMap(const model::Model& model, const Partition& partition, int rank, std::vector<int> touched);
@@ -62,11 +59,13 @@ class DofMap {
 
   int n_constraints() const { return static_cast<int>(constraint_owner_.size()); }
   int constraint_owner(int c) const { return constraint_owner_[c]; }
-  // Global index of multiplier k (0 .. kMultipliers − 1) of constraint c.
-  PetscInt multiplier_dof(int c, int k) const { return multiplier_[kMultipliers * c + k]; }
+  // Multipliers of constraint c (model::Constraint::equations).
+  int n_multipliers(int c) const { return multiplier_offset_[c + 1] - multiplier_offset_[c]; }
+  // Global index of multiplier k (0 .. n_multipliers(c) − 1) of constraint c.
+  PetscInt multiplier_dof(int c, int k) const { return multiplier_[multiplier_offset_[c] + k]; }
   // Index of that multiplier in the ghosted local form (owned: the owner rank only), or −1.
   PetscInt multiplier_local(int c, int k) const {
-    return constraint_owner_[c] == rank_ ? multiplier_[kMultipliers * c + k] - first_owned_ : -1;
+    return constraint_owner_[c] == rank_ ? multiplier_dof(c, k) - first_owned_ : -1;
   }
   // Constraint a global DOF is a multiplier of, or −1 for a nodal DOF.
   int constraint_of_global(PetscInt global) const { return global_constraint_.at(global); }
@@ -90,7 +89,8 @@ class DofMap {
   std::vector<int> global_node_;        // per global DOF: its node
   std::vector<int> global_constraint_;  // per global DOF: its constraint or −1
   std::vector<int> constraint_owner_;   // per constraint: owning rank
-  std::vector<PetscInt> multiplier_;    // 3 per constraint: global index
+  std::vector<int> multiplier_offset_;  // n_constraints + 1: each one's first in multiplier_
+  std::vector<PetscInt> multiplier_;    // per multiplier: global index
   int rank_ = 0;
   PetscInt n_global_ = 0, n_owned_ = 0, first_owned_ = 0;
 };

@@ -124,6 +124,9 @@ class SecondOrderSystem {
   // slots, 0 in the others (couplings/constraint_coupling.hpp): a prescribed motion's
   // ∂²u/∂t², a quadratic constraint's −vᵀ H v. p.v null: at rest.
   void constraint_acceleration(const EvalPoint& p, Vec out) const;
+  // Collective. β(t) of the velocity-level constraints G v = β in the multiplier slots, 0 in
+  // the others: a prescribed motion's velocity.
+  void constraint_velocity(const EvalPoint& p, Vec out) const;
 
   // Collective. Replaces the element kernel of every model element for which
   // `linearize(element index)` is true by its linearisation about q0 (elements/
@@ -200,6 +203,9 @@ class SecondOrderSystem {
   static const double* scale_block(const ActiveDofs& dofs, const double* block,
                                    std::vector<double>& out);
   void scatter_to_local(Vec global, Vec local_ghosted) const;
+  // Collective. Each constraint's acceleration (or velocity) target at p into out's
+  // multiplier slots (system_queries.cpp).
+  void constraint_targets(const EvalPoint& p, Vec out, bool velocity) const;
   // Collective. Evaluates every coupling's force at p (or only the couplings listed in
   // `only`) and calls fn(i, dofs, f_el) (defined in visit_forces.hpp: inlined into the
   // residual loop, which runs per coupling).

@@ -60,7 +60,8 @@ class StateView {
   // Collective. Every rigid body's orientation and angular velocity at (q, v).
   BodyPoses body_poses(Vec q, Vec v) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
-  // to its node A, −λ (3 per constraint, N), from the multiplier slots of q.
+  // to its node A, −λ (model::multiplier_width values per constraint, padded with 0; N for a
+  // node constraint), from the multiplier slots of q.
   void owned_constraint_forces(Vec q, std::vector<int>& constraints,
                                std::vector<double>& forces) const;
 
@@ -79,11 +80,12 @@ class StateView {
   // Not collective. x's free DOFs of the owned nodes in their kinds' layouts, padded to
   // model::kMaxBlockUnknowns values per node of dof_map().owned_nodes() (fixed and absent
   // components 0), and this rank's
-  // multiplier slots (3 per owned constraint, ascending): a partition-independent form.
+  // multiplier slots (model::multiplier_width per owned constraint, ascending, padded with
+  // 0): a partition-independent form.
   void owned_node_rows(Vec x, std::vector<double>& rows, std::vector<double>& multipliers) const;
   // Not collective. The inverse for every node and constraint at once: x's owned free DOFs
   // from rows (kMaxBlockUnknowns per node, all nodes) and its owned multiplier slots from
-  // multipliers (3 per constraint, all constraints).
+  // multipliers (model::multiplier_width per constraint, all constraints).
   void set_from_node_rows(Vec x, const std::vector<double>& rows,
                           const std::vector<double>& multipliers) const;
 

@@ -25,7 +25,7 @@ class BodyFrameConstraint final : public ConstraintCoupling {
   void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                 Scratch& scratch) const override;
   bool linear() const override { return false; }
-  std::array<double, 3> acceleration_target(const CouplingState& s) const override;
+  void acceleration_target(const CouplingState& s, std::span<double> out) const override;
 
  private:
   // Row k's axes (0-based): (k, k) for the lengths, (i, j) for the angles.

@@ -1,6 +1,6 @@
 #pragma once
-// What every constraint coupling (three Lagrange multipliers λ of model constraint
-// `index`, and the nodal unknowns its g(q, t) = 0 reads) tells the system besides its
+// What every constraint coupling (the Lagrange multipliers λ of model constraint `index`,
+// one per equation, and the nodal unknowns its g(q, t) = 0 reads) tells the system besides its
 // residual and matrix: whether g is linear in q, and the right-hand side of the
 // acceleration-level constraint
 //   d²g/dt² = G a + γ̃(q, v, t) = 0   ⇒   G a = γ(q, v, t) = −γ̃,
@@ -11,7 +11,8 @@
 // Over its dofs() — the three multipliers first, then the nodal unknowns — a constraint adds
 // Gᵀλ to the nodal rows and g to the multiplier rows; its matrix is
 //   c_K Σ_k λ_k H_k  (nodal block; zero when g is linear)  + c_λ Gᵀ + c_g G.
-#include <array>
+#include <algorithm>
+#include <span>
 
 #include "catena/couplings/coupling.hpp"
 
@@ -25,8 +26,12 @@ class ConstraintCoupling : public Coupling {
   int index() const { return index_; }
   // False if G depends on q (integrators then re-evaluate Gᵀ with the tangent).
   virtual bool linear() const = 0;
-  // γ at the state s (all of dofs(), multiplier slots first: their values are ignored).
-  virtual std::array<double, 3> acceleration_target(const CouplingState& s) const = 0;
+  // γ at the state s (all of dofs(), multiplier slots first: their values are ignored), one
+  // per multiplier into `out`.
+  virtual void acceleration_target(const CouplingState& s, std::span<double> out) const = 0;
+  // β of the velocity-level constraint G v = β = −∂g/∂t at s.t, one per multiplier: zero
+  // unless the constraint moves with time (a prescribed motion's velocity).
+  virtual void velocity_target(const CouplingState& s, std::span<double> out) const;
 
   bool dense() const override { return false; }
   // Its nodes may be unknowns of a local patch, but the multipliers never are.
@@ -35,5 +40,9 @@ class ConstraintCoupling : public Coupling {
  private:
   int index_;
 };
+
+inline void ConstraintCoupling::velocity_target(const CouplingState&, std::span<double> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+}
 
 }  // namespace catena::couplings

@@ -24,7 +24,9 @@ class NodeConstraint final : public ConstraintCoupling {
 
   bool linear() const override { return true; }
   // ∂²u/∂t² of a prescribed motion at s.t (zero for the others).
-  std::array<double, 3> acceleration_target(const CouplingState& s) const override;
+  void acceleration_target(const CouplingState& s, std::span<double> out) const override;
+  // u̇ of a prescribed motion at s.t (zero for the others).
+  void velocity_target(const CouplingState& s, std::span<double> out) const override;
 
  private:
   model::Constraint constraint_;

@@ -43,6 +43,9 @@ struct IntegratorType {
   std::string_view embedded_constraint_refusal = {};
   // Why the type takes no Lagrange-multiplier constraints, or "" if it does.
   std::string_view constraint_refusal = {};
+  // Why it takes linear constraints but not nonlinear ones (a rigid body's frame, joints
+  // between bodies), or "" if it takes both.
+  std::string_view nonlinear_constraint_refusal = {};
   // IRK: why the decoupled stage solve is not exact for this family (its A has no distinct
   // nonzero eigenvalues: tableau_decomposition.hpp), or "" if it is.
   std::string_view decoupled_refusal = {};
@@ -92,8 +95,10 @@ struct IntegratorRefusal {
 // constraints with a type that takes none (key "type"), error_estimate: embedded where
 // there is no embedded estimate ("error_estimate"), linear_algebra: decoupled where it is
 // not exact ("linear_algebra"), step doubling for a multistep method ("error_estimate"), a
-// BDF order above 2 with fixed steps ("order").
+// BDF order above 2 with fixed steps ("order"); with `nonlinear_constraints` (the model has
+// rigid bodies) also the types that take only linear ones ("type").
 std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& options,
-                                                   std::size_t constraints);
+                                                   std::size_t constraints,
+                                                   bool nonlinear_constraints = false);
 
 }  // namespace catena::model

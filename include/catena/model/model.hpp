@@ -3,6 +3,7 @@
 // the scene reader (scene_reader.hpp) on every rank from the same text, consumed by the
 // assembly layer. Indices are 0-based positions in the vectors below; user-facing ids
 // (as written in the scene) are kept for messages and output. Units are SI throughout.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -73,7 +74,10 @@ struct ElasticSupport {
 //   frame_lengths:  g_k = ½(e_k·e_k − 1),           k = 1, 2, 3
 //   frame_angles:   g = (e2·e3, e3·e1, e1·e2)
 // Their multipliers are generalised forces on the axes (N·m), not forces on the node.
-enum class ConstraintType { coincident, pinned, prescribed, frame_lengths, frame_angles };
+//
+// A joint (`joints` in the scene, model::Joint) is one constraint of type `joint` whose
+// multipliers are its equations (3 to 6: couplings/joint_constraint.hpp).
+enum class ConstraintType { coincident, pinned, prescribed, frame_lengths, frame_angles, joint };
 
 struct Constraint {
   ConstraintType type = ConstraintType::pinned;
@@ -82,7 +86,50 @@ struct Constraint {
   Vec3 velocity = Vec3::Zero();   // m/s, prescribed only
   Vec3 amplitude = Vec3::Zero();  // m, prescribed only
   double frequency = 0.0;         // Hz, prescribed only
+  int joint = -1;                 // joint only: index into Model::joints
+  int equations = 3;              // its multipliers (a joint's: 3 to 6)
 };
+
+// A joint between a rigid body and another body, a node of the structure or the ground
+// (`joints` in the scene), enforced as one constraint (type `joint`) whose multipliers are
+// its equations (couplings/joint_constraint.hpp). With X the joint's point and u its axis
+// in the reference configuration (which satisfies the equations), the body A and the other
+// side B:
+//   spherical    A's point X stays at B's                                        3 equations
+//   revolute     ... and A's axis stays along B's: rotation about u only          5
+//   cylindrical  A's axis stays on B's line through X: rotation about and sliding
+//                along u                                                          4
+//   prismatic    ... and no rotation about u: sliding along u only               5
+//   fixed        A's point and axes stay B's: welded                             6
+// A node side (spherical only) is the node's position; the ground side is fixed.
+enum class JointType { spherical, revolute, cylindrical, prismatic, fixed };
+
+struct Joint {
+  std::string name;
+  JointType type = JointType::spherical;
+  int body_a = 0;             // index into Model::rigid_bodies
+  int body_b = -1;            // index into Model::rigid_bodies, or −1 (a node or the ground)
+  int node_b = -1;            // a node that is no body's (spherical joints), or −1
+  Vec3 point = Vec3::Zero();  // m, global, reference configuration
+  Vec3 axis = Vec3::UnitZ();  // unit, global, reference (revolute, cylindrical, prismatic)
+};
+
+// Equations (multipliers) of a joint of this type.
+inline int joint_equations(JointType type) {
+  switch (type) {
+    case JointType::spherical:
+      return 3;
+    case JointType::revolute:
+      return 5;
+    case JointType::cylindrical:
+      return 4;
+    case JointType::prismatic:
+      return 5;
+    case JointType::fixed:
+      return 6;
+  }
+  return 0;
+}
 
 struct NodalLoad {
   int node = 0;
@@ -276,6 +323,7 @@ struct Model {
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<Joint> joints;
   std::vector<Constraint> constraints;
 
   std::vector<MovingLoad> moving_loads;
@@ -299,5 +347,21 @@ struct Model {
   // (catenary/shape_finding.hpp) adjusts; empty otherwise.
   std::optional<CatenaryLayout> catenary;
 };
+
+// Not collective. Σ Constraint::equations: the model's Lagrange multipliers.
+inline int total_multipliers(const Model& model) {
+  int total = 0;
+  for (const Constraint& c : model.constraints) total += c.equations;
+  return total;
+}
+
+// Not collective. The width of a constraint's row of multipliers in output and checkpoints:
+// the most equations of any constraint of the model, at least 3 (a model of node and frame
+// constraints only keeps the three columns it always had); shorter rows are padded with 0.
+inline int multiplier_width(const Model& model) {
+  int width = 3;
+  for (const Constraint& c : model.constraints) width = std::max(width, c.equations);
+  return width;
+}
 
 }  // namespace catena::model

@@ -25,8 +25,9 @@ namespace catena::model {
 // The widest block (an ANCF beam node: r, r_x, r_y, r_z). Checkpoint rows have this width.
 inline constexpr int kMaxBlockUnknowns = 12;
 
-// Multipliers of one constraint (a position constraint: one per axis).
-inline constexpr int kMultipliersPerConstraint = 3;
+// The most multipliers one constraint has (model::Constraint::equations: a fixed joint's
+// six).
+inline constexpr int kMaxMultipliersPerConstraint = 6;
 
 enum class UnknownKind : std::uint8_t {
   point,       // [x, y, z]: a node only bars, springs, point masses or supports touch
@@ -35,7 +36,9 @@ enum class UnknownKind : std::uint8_t {
   // [r, e1, e2, e3]: a rigid body's point and axes (natural coordinates, model::RigidBody);
   // bars, springs and masses at its node act on r
   rigid_body,
-  multiplier,  // [λx, λy, λz]: the Lagrange multipliers of one constraint
+  // [λ1 … λn]: the Lagrange multipliers of one constraint, n = Constraint::equations (a
+  // position constraint's three are along x, y, z); the row is as wide as the widest
+  multiplier,
 };
 
 // How an integrator moves a block's unknowns by an increment Δ. Every kind so far is

@@ -2,6 +2,7 @@
 
 #include <petscmat.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "catena/assembly/petsc_call.hpp"
@@ -49,6 +50,39 @@ DirectSolveStatus direct_solve_status(KSP ksp) {
   CATENA_PETSC(KSPGetConvergedReason(ksp, &status.reason));
   status.mumps = mumps_status(ksp);
   return status;
+}
+
+bool enlarge_mumps_workspace(KSP ksp, const DirectSolveStatus& status) {
+  const long code = status.mumps.infog1;
+  if (!status.mumps.is_mumps ||
+      !(code == -8 || code == -9 || code == -14 || code == -17 || code == -20))
+    return false;
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  Mat factor = nullptr;
+  CATENA_PETSC(PCFactorGetMatrix(pc, &factor));
+  PetscInt margin = 0;
+  CATENA_PETSC(MatMumpsGetIcntl(factor, 14, &margin));
+  if (margin >= 1600) return false;
+  // MUMPS sizes its workspace in the analysis, so a larger margin needs a new factor: the
+  // option for the KSP's prefix (read when the PC makes the factor), the PC reset, the
+  // operators set again so that the next set-up analyses and factors anew.
+  const char* prefix = nullptr;
+  CATENA_PETSC(KSPGetOptionsPrefix(ksp, &prefix));
+  std::string option = "-";  // appended piecewise: GCC 12 warns falsely on "-" + string
+  if (prefix) option.append(prefix);
+  option.append("mat_mumps_icntl_14");
+  const std::string value = std::to_string(std::max<PetscInt>(2 * margin, margin + 100));
+  CATENA_PETSC(PetscOptionsSetValue(nullptr, option.c_str(), value.c_str()));
+  Mat A = nullptr, P = nullptr;
+  CATENA_PETSC(KSPGetOperators(ksp, &A, &P));
+  CATENA_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(A)));
+  CATENA_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(P)));
+  CATENA_PETSC(PCReset(pc));
+  CATENA_PETSC(KSPSetOperators(ksp, A, P));
+  CATENA_PETSC(MatDestroy(&A));
+  CATENA_PETSC(MatDestroy(&P));
+  return true;
 }
 
 namespace {

@@ -279,6 +279,8 @@ NewtonResult ReusableNewton::linear_step(Vec x) {
   }
   if (!step_) CATENA_PETSC(VecDuplicate(x, step_.out()));
   CATENA_PETSC(KSPSolve(solver, residual_, step_.get()));
+  while (enlarge_mumps_workspace(solver, direct_solve_status(solver)))
+    CATENA_PETSC(KSPSolve(solver, residual_, step_.get()));
   ++counters_.iterations;
   ++counters_.linear_solves;
   result.iterations = 1;

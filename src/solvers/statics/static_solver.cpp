@@ -46,7 +46,7 @@ struct StaticSolver::Impl {
     MumpsStatus status = mumps_status(stability_ksp.get());
     // [K Gᵀ; G 0] has exactly one negative eigenvalue per multiplier when K is positive
     // definite on the constraints' null space: only the excess means instability.
-    status.negative_pivots -= 3 * static_cast<long>(system.model().constraints.size());
+    status.negative_pivots -= model::total_multipliers(system.model());
     return status;
   }
 

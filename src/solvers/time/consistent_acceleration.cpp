@@ -29,6 +29,8 @@ void AccelerationSolver::factor(Vec q) {
   }
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
   CATENA_PETSC(KSPSetUp(ksp_.get()));
+  while (enlarge_mumps_workspace(ksp_.get(), direct_solve_status(ksp_.get())))
+    CATENA_PETSC(KSPSetUp(ksp_.get()));
   if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
     throw NumericalError(
         std::string(algebraic_.active() ? "the constrained mass matrix [M G'; G 0]"
@@ -54,6 +56,32 @@ void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
     throw NumericalError("the acceleration solve failed (" + status.describe() + ")");
   algebraic_.take_algebraic(q, a);
   algebraic_.zero_algebraic(a);
+}
+
+double AccelerationSolver::project_velocity(double t, Vec q, Vec v) {
+  if (!algebraic_.active()) return 0.0;
+  algebraic_.zero_algebraic(q);
+  if (!system_.constraints_linear()) factor(q);
+  CATENA_PETSC(MatMult(mass_, v, rhs_.get()));
+  system_.constraint_velocity({q, nullptr, {}, t}, target_.get());
+  algebraic_.take_algebraic(rhs_.get(), target_.get());
+  VecHandle projected = system_.create_vector();
+  CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), projected.get()));
+  if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
+    throw NumericalError("the initial velocity's projection failed (" + status.describe() + ")");
+  algebraic_.zero_algebraic(projected.get());
+  CATENA_PETSC(VecAXPY(v, -1.0, projected.get()));  // v − v′
+  PetscReal change = 0.0;
+  CATENA_PETSC(VecNorm(v, NORM_INFINITY, &change));
+  CATENA_PETSC(VecCopy(projected.get(), v));
+  return change;
+}
+
+double project_initial_velocity(assembly::SecondOrderSystem& system, double t, Vec q, Vec v) {
+  if (!system.has_constraints()) return 0.0;
+  MatHandle mass = system.create_matrix();
+  system.jacobian({q, nullptr, {}}, {0.0, 0.0, 1.0}, mass.get());
+  return AccelerationSolver(system, mass.get()).project_velocity(t, q, v);
 }
 
 void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q, Vec v,

@@ -33,8 +33,8 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
                                                 const model::IntegratorOptions& o) {
   check_update_rules(system.dof_map());
   // What the scene reader refuses with the scene's line; here for models built otherwise.
-  if (const std::optional<model::IntegratorRefusal> refusal =
-          model::refuse_integrator(o, system.model().constraints.size()))
+  if (const std::optional<model::IntegratorRefusal> refusal = model::refuse_integrator(
+          o, system.model().constraints.size(), !system.constraints_linear()))
     throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
   if (o.type == "hht" || o.type == "central_difference") {
     HhtOptions h;

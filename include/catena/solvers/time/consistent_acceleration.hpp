@@ -25,6 +25,14 @@ class AccelerationSolver {
   // Collective. a at (t, q, v). With constraints it also writes λ into the multiplier
   // slots of q (their previous value is ignored) and leaves a's multiplier slots zero.
   void solve(double t, Vec q, Vec v, Vec a);
+  // Collective. Projects v onto the velocities the constraints allow at (t, q): the v′
+  // nearest to v in the kinetic-energy norm with G v′ = β(t) (a prescribed motion's
+  // velocity; 0 for the others),
+  //   [M  Gᵀ] [v′]   [M v]
+  //   [G  0 ] [μ ] = [β  ],
+  // as an impulse through the joints would (the mass-weighted least change). v's
+  // multiplier slots stay zero. Returns max |v′ − v| over the nodal slots.
+  double project_velocity(double t, Vec q, Vec v);
 
  private:
   assembly::SecondOrderSystem& system_;
@@ -37,6 +45,10 @@ class AccelerationSolver {
   // Collective. Factors M, or the saddle-point matrix with G at q; throws if singular.
   void factor(Vec q);
 };
+
+// Collective. One-off AccelerationSolver(system, M).project_velocity(t, q, v), M assembled
+// here; 0 without constraints.
+double project_initial_velocity(assembly::SecondOrderSystem& system, double t, Vec q, Vec v);
 
 // Collective. One-off AccelerationSolver(system, mass).solve(t, q, v, a).
 void consistent_acceleration(assembly::SecondOrderSystem& system, Mat mass, double t, Vec q, Vec v,

@@ -105,6 +105,8 @@ struct DecoupledStageSolver::Impl {
       Block& block = blocks[b];
       CATENA_PETSC(KSPSetOperators(block.ksp.get(), block.matrix(), block.matrix()));
       CATENA_PETSC(KSPSetUp(block.ksp.get()));
+      while (enlarge_mumps_workspace(block.ksp.get(), direct_solve_status(block.ksp.get())))
+        CATENA_PETSC(KSPSetUp(block.ksp.get()));
       failure = block_failure(b, block, "factorisation");
     }
   }

@@ -341,7 +341,7 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
     // singular in the multiplier rows (the catalogue's refusal, also the scene reader's).
     if (const std::optional<model::IntegratorRefusal> refusal = model::refuse_integrator(
             {.type = std::string(tableau_family_name(m.T.family)), .stages = m.s},
-            system.model().constraints.size()))
+            system.model().constraints.size(), !system.constraints_linear()))
       throw InputError({"", 0, "integrator." + refusal->key}, refusal->why);
     if (m.T.family != TableauFamily::radau_iia)
       m.end_multipliers = std::make_unique<AccelerationSolver>(system, m.mass.get());

@@ -1,0 +1,146 @@
+#include "joint_reader.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "did_you_mean.hpp"
+#include "number_format.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+const std::vector<std::string>& type_names() {
+  static const std::vector<std::string> names{"spherical", "revolute", "cylindrical", "prismatic",
+                                              "fixed"};
+  return names;
+}
+
+JointType read_type(const Field& type) {
+  if (!type.present())
+    type.fail(
+        "missing required key; expected one of spherical, revolute, cylindrical, "
+        "prismatic, fixed");
+  const std::string name = type.text();
+  const std::vector<std::string>& names = type_names();
+  for (size_t k = 0; k < names.size(); ++k)
+    if (name == names[k]) return static_cast<JointType>(k);
+  type.fail("unknown joint type '" + name + "';" + did_you_mean(name, names) +
+            " expected spherical (a shared point), revolute (a point and an axis: rotation "
+            "about it), cylindrical (rotation about and sliding along an axis), prismatic "
+            "(sliding along an axis) or fixed (welded)");
+}
+
+// A side of the joint: a body (by name), a node (by id, an integer) or `ground`.
+struct SideRef {
+  int body = -1;
+  int node = -1;
+  bool ground = false;
+};
+
+SideRef read_side(const Field& field, const SceneBuild& build) {
+  const std::string expected = "a rigid body's name, a node id (an integer) or ground";
+  if (!field.is_scalar()) field.fail("got " + field.value_text() + "; expected " + expected);
+  const std::string text = field.text();
+  if (text == "ground") return {-1, -1, true};
+  const std::vector<RigidBody>& bodies = build.model.rigid_bodies;
+  for (size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].name == text) return {static_cast<int>(b), -1, false};
+  if (parse_integer(text)) {
+    SideRef side;
+    side.node = build.resolve_node(field);
+    for (size_t b = 0; b < bodies.size(); ++b)
+      if (bodies[b].node == side.node)
+        field.fail("node " + text + " is rigid body '" + bodies[b].name +
+                   "''s point; name the body instead (its joint point is 'point')");
+    return side;
+  }
+  std::vector<std::string> names{"ground"};
+  for (const RigidBody& b : bodies) names.push_back(b.name);
+  field.fail("no rigid body is named '" + text + "';" + did_you_mean(text, names) + " expected " +
+             expected);
+}
+
+}  // namespace
+
+void read_joints(const Field& joints, SceneBuild& build) {
+  static const std::vector<std::string> keys{"name", "type", "between", "point", "axis"};
+  Model& model = build.model;
+  for (const Field& entry : joints.items()) {
+    entry.expect_map("a joint {type, between, point, axis}");
+    entry.check_keys(keys);
+    Joint joint;
+    joint.name = entry.child("name").text_or("joint " + std::to_string(model.joints.size() + 1));
+    joint.type = read_type(entry.child("type"));
+    const Field between = entry.child("between");
+    if (!between.present())
+      between.fail(
+          "missing required key; expected [A, B]: A a rigid body's name, B a body's "
+          "name, a node id or ground");
+    const std::vector<Field> sides = between.items();
+    if (sides.size() != 2)
+      between.fail("expected two sides [A, B], got " + std::to_string(sides.size()));
+    const SideRef a = read_side(sides[0], build), b = read_side(sides[1], build);
+    if (a.body < 0)
+      sides[0].fail(
+          "the first side of a joint must be a rigid body (the second may be a body, "
+          "a node or ground); got " +
+          sides[0].value_text());
+    if (a.body == b.body)
+      sides[1].fail("a joint joins two different sides; got body '" +
+                    model.rigid_bodies[static_cast<size_t>(a.body)].name + "' twice");
+    joint.body_a = a.body;
+    joint.body_b = b.body;
+    joint.node_b = b.node;
+    if (b.node >= 0 && joint.type != JointType::spherical)
+      sides[1].fail("a node has no axes of its own: a " +
+                    type_names()[static_cast<size_t>(joint.type)] +
+                    " joint needs a body or ground there (a node takes a spherical joint)");
+
+    const Field point = entry.child("point");
+    if (b.node >= 0) {
+      // The node is the joint's point on its side.
+      joint.point = model.nodes[static_cast<size_t>(b.node)].position;
+      if (point.present()) {
+        const Vec3 given = point.vec3(RealRange::any("m"));
+        if ((given - joint.point).norm() > 1e-9 * std::max(1.0, joint.point.norm()))
+          point.fail("the joint's point must be node " + sides[1].text() + "'s position " +
+                     format_vector(joint.point) + " m (the node is the joint's point); got " +
+                     point.value_text() + " (or leave 'point' out)");
+      }
+    } else {
+      if (!point.present())
+        point.fail(
+            "missing required key; expected the joint's point [x, y, z] in m (global, "
+            "reference configuration)");
+      joint.point = point.vec3(RealRange::any("m"));
+    }
+    const Field axis = entry.child("axis");
+    const bool has_axis = joint.type == JointType::revolute ||
+                          joint.type == JointType::cylindrical ||
+                          joint.type == JointType::prismatic;
+    if (has_axis) {
+      if (!axis.present())
+        axis.fail(
+            "missing required key; expected the joint's axis [x, y, z] (global, "
+            "reference configuration, nonzero)");
+      joint.axis = axis.vec3(RealRange::any(""));
+      if (!(joint.axis.norm() > 0.0)) axis.fail("the axis is zero; expected a nonzero vector");
+      joint.axis.normalize();
+    } else if (axis.present()) {
+      axis.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+                " joint has no axis; remove 'axis'");
+    }
+
+    Constraint c;
+    c.type = ConstraintType::joint;
+    c.node_a = model.rigid_bodies[static_cast<size_t>(a.body)].node;
+    c.node_b = b.body >= 0 ? model.rigid_bodies[static_cast<size_t>(b.body)].node : b.node;
+    c.joint = static_cast<int>(model.joints.size());
+    c.equations = joint_equations(joint.type);
+    model.joints.push_back(joint);
+    model.constraints.push_back(c);
+  }
+}
+
+}  // namespace catena::model::detail
