@@ -3,6 +3,7 @@
 #include "catena/couplings/body_frame_constraint.hpp"
 #include "catena/couplings/element_factory.hpp"
 #include "catena/couplings/joint_constraint.hpp"
+#include "catena/couplings/joint_spring.hpp"
 #include "catena/couplings/moving_load.hpp"
 #include "catena/couplings/node_constraint.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
@@ -45,6 +46,12 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
       list.push_back(std::make_unique<JointConstraint>(model, c));
     else
       list.push_back(std::make_unique<NodeConstraint>(model, c));
+  }
+  for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
+    const model::Joint& joint = model.joints[static_cast<size_t>(j)];
+    const int node = model.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
+    if (joint.has_spring() && node_owner[static_cast<size_t>(node)] == rank)
+      list.push_back(std::make_unique<JointSpring>(model, j));
   }
   for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c)
     if (node_owner[static_cast<size_t>(model.contacts[static_cast<size_t>(c)].head_node)] == rank)

@@ -1,6 +1,7 @@
 #include "joint_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -64,7 +65,8 @@ SideRef read_side(const Field& field, const SceneBuild& build) {
 }  // namespace
 
 void read_joints(const Field& joints, SceneBuild& build) {
-  static const std::vector<std::string> keys{"name", "type", "between", "point", "axis"};
+  static const std::vector<std::string> keys{"name",      "type",    "between", "point",   "axis",
+                                             "stiffness", "damping", "neutral", "actuator"};
   Model& model = build.model;
   for (const Field& entry : joints.items()) {
     entry.expect_map("a joint {type, between, point, axis}");
@@ -131,6 +133,26 @@ void read_joints(const Field& joints, SceneBuild& build) {
       axis.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
                 " joint has no axis; remove 'axis'");
     }
+
+    // A spring, a dashpot and an actuator on the coordinate of a revolute or prismatic joint.
+    const bool revolute = joint.type == JointType::revolute;
+    const bool sliding = joint.type == JointType::prismatic;
+    const char* spring_keys[] = {"stiffness", "damping", "neutral", "actuator"};
+    for (const char* key : spring_keys)
+      if (const Field field = entry.child(key); field.present() && !revolute && !sliding)
+        field.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+                   " joint has no coordinate for '" + key +
+                   "'; springs, dampers and actuators act on revolute (an angle) and prismatic "
+                   "(a slide) joints");
+    const std::string unit = revolute ? "rad" : "m";
+    joint.stiffness = entry.child("stiffness")
+                          .real_or(0.0, RealRange::non_negative(revolute ? "N*m/rad" : "N/m"));
+    joint.damping = entry.child("damping").real_or(
+        0.0, RealRange::non_negative(revolute ? "N*m*s/rad" : "N*s/m"));
+    joint.neutral = revolute ? entry.child("neutral").real_or(
+                                   0.0, RealRange::between(-M_PI, false, M_PI, true, unit))
+                             : entry.child("neutral").real_or(0.0, RealRange::any(unit));
+    joint.actuator = entry.child("actuator").real_or(0.0, RealRange::any(revolute ? "N*m" : "N"));
 
     Constraint c;
     c.type = ConstraintType::joint;

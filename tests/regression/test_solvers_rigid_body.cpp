@@ -9,7 +9,10 @@
 //    amplitude period 2π √(I_pivot / (m g l));
 //  - a body on a revolute joint to ground released at 60° has the large-amplitude period
 //    4 √(I / (m g l)) K(sin 30°) and, at the bottom, the joint force m g + m ω² l with
-//    ω² = 2 m g l (1 − cos 60°) / I.
+//    ω² = 2 m g l (1 − cos 60°) / I;
+//  - a body on a revolute (prismatic) joint with a spring, a dashpot and an actuator,
+//    started at rest, follows the damped oscillator's closed form about the static offset
+//    actuator / stiffness.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -340,5 +343,53 @@ TEST(RigidBody, RevolutePendulumHasTheEllipticPeriodAndJointForce) {
   EXPECT_NEAR(crossings[1] - crossings[0], period / 2, 1e-6 * period);
   for (const double f : forces) EXPECT_NEAR(f, force_bottom, 1e-4 * force_bottom);
 }
+
+// A body on a joint to ground (no gravity) with a spring k, a dashpot c and an actuator F on
+// its coordinate, started at rest: ξ(t) = ξ_s + e^{−σt}(A cos ω_d t + B sin ω_d t), ξ_s = F/k,
+// σ = c/(2 m_ξ), ω_d = √(k/m_ξ − σ²), A = −ξ_s, B = σ A / ω_d, m_ξ the inertia on ξ.
+class SpringJoint : public testing::TestWithParam<std::string> {};
+
+TEST_P(SpringJoint, FollowsTheDampedOscillatorAboutTheActuatorsOffset) {
+  catena::test::ensure_petsc();
+  const bool revolute = GetParam() == "revolute";
+  const double k = revolute ? 3.0 : 400.0, c = revolute ? 0.02 : 1.0, F = revolute ? 0.3 : 8.0;
+  const double inertia = revolute ? 0.05 : 2.0;  // I_zz about the centre (= the joint) or m
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "name: spring joint\n"
+                "gravity: [0, 0, 0]\n"
+                "nodes: [{id: 1, position: [0, 0, 0]}]\n"
+                "bodies: [{name: b, node: 1, mass: 2, inertia: [0.03, 0.04, 0.05]}]\n"
+                "joints:\n"
+                "  - {type: %s, between: [b, ground], point: [0, 0, 0], axis: [0, 0, 1],\n"
+                "     stiffness: %.17g, damping: %.17g, actuator: %.17g}\n"
+                "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n",
+                GetParam().c_str(), k, c, F);
+  const model::Model m = model::parse_scene(text, "spring_joint.yaml");
+  catena::assembly::SecondOrderSystem system(PETSC_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  auto integrator = make(system, "radau_iia");
+  integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  const double sigma = c / (2 * inertia), wd = std::sqrt(k / inertia - sigma * sigma);
+  const double offset = F / k, A = -offset, B = sigma * A / wd;
+  const double dt = 1e-3;
+  double worst = 0.0;
+  for (int n = 1; n <= 1500; ++n) {
+    catena::test::advance_fixed(*integrator, dt, 1);
+    const BodyState s = body_state(system, integrator->q(), integrator->v());
+    const double xi = revolute ? std::atan2(s.e[0][1], s.e[0][0]) : s.r[2];
+    const double t = n * dt;
+    const double exact =
+        offset + std::exp(-sigma * t) * (A * std::cos(wd * t) + B * std::sin(wd * t));
+    worst = std::max(worst, std::abs(xi - exact));
+  }
+  std::printf("%s spring joint: largest error %.3g against an offset of %.6g\n", GetParam().c_str(),
+              worst, offset);
+  EXPECT_LT(worst, 1e-7 * offset);
+}
+
+INSTANTIATE_TEST_SUITE_P(RevoluteAndPrismatic, SpringJoint,
+                         testing::Values("revolute", "prismatic"));
 
 }  // namespace

@@ -112,6 +112,15 @@ struct Joint {
   int node_b = -1;            // a node that is no body's (spherical joints), or −1
   Vec3 point = Vec3::Zero();  // m, global, reference configuration
   Vec3 axis = Vec3::UnitZ();  // unit, global, reference (revolute, cylindrical, prismatic)
+  // Revolute and prismatic joints: a spring, a dashpot and an actuator on the joint's
+  // coordinate ξ (the rotation of A relative to B about the axis, rad, in (−π, π] from the
+  // reference; or A's slide along it, m): the generalised force on ξ is
+  //   −stiffness (ξ − neutral) − damping ξ̇ + actuator     (couplings/joint_spring.hpp).
+  double stiffness = 0.0;  // N·m/rad or N/m
+  double damping = 0.0;    // N·m·s/rad or N·s/m
+  double neutral = 0.0;    // rad or m
+  double actuator = 0.0;   // N·m or N, constant
+  bool has_spring() const { return stiffness != 0.0 || damping != 0.0 || actuator != 0.0; }
 };
 
 // Equations (multipliers) of a joint of this type.

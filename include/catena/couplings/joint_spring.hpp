@@ -1,0 +1,47 @@
+#pragma once
+// A spring, a dashpot and a constant actuator on a revolute or prismatic joint's coordinate
+// ξ (model::Joint): its potential ½ k (ξ − ξ₀)² and the work of the actuator F and the
+// dashpot c give the generalised forces (sign convention f = f_int + f_damp − f_ext)
+//   f = [k (ξ − ξ₀) + c ξ̇ − F] ∂ξ/∂q,          ξ̇ = ∂ξ/∂q · v,
+//   K = ∂f/∂q = [k (ξ − ξ₀) + c ξ̇ − F] ∂²ξ/∂q² + k ∂ξ/∂q ∂ξ/∂qᵀ + c ∂ξ/∂q (∂²ξ/∂q² v)ᵀ,
+//   C = ∂f/∂v = c ∂ξ/∂q ∂ξ/∂qᵀ,
+// with ∂ξ/∂q and ∂²ξ/∂q² exact by forward-mode differentiation (elements/dual.hpp). Over the
+// DOFs [body A's node (12), body B's node (12)] (B the ground: A's only). The coordinates,
+// in the joint's reference frame (u its axis, n₁ ⊥ u, n₂ = u × n₁, each carried by its side):
+//   revolute   ξ = atan2((n₁_B × n₁_A)·u_B, n₁_A·n₁_B), the rotation of A relative to B about
+//              u, in (−π, π] (a spring must stay within half a turn of the reference)
+//   prismatic  ξ = (p_A − p_B)·u_B, A's slide along u relative to B.
+#include <vector>
+
+#include "catena/couplings/coupling.hpp"
+#include "catena/model/model.hpp"
+
+namespace catena::couplings {
+
+class JointSpring final : public Coupling {
+ public:
+  // `joint`: into model.joints, a revolute or prismatic joint with has_spring().
+  JointSpring(const model::Model& model, int joint);
+
+  void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
+                Scratch& scratch) const override;
+  bool has_damping() const override { return damping_ != 0.0; }
+  bool in_force_scale() const override { return true; }
+  // The bodies' nodes belong to their frame constraints, which patches leave out.
+  PatchRole patch_role() const override { return PatchRole::excluded; }
+
+  // ξ at the state q (dofs() order), for output and tests.
+  double coordinate(std::span<const double> q) const;
+
+ private:
+  model::JointType type_;
+  double stiffness_, damping_, neutral_, actuator_;
+  int n_ = 12;  // 12 (to ground) or 24
+  // Body coordinates of the joint frame's vectors and point on each side (the ground's
+  // are global constants: `ground_*`).
+  Vec3 point_a_, point_b_, axis_b_, n1_a_, n1_b_;
+  Vec3 ground_point_, ground_axis_, ground_n1_;
+  bool to_ground_ = true;
+};
+
+}  // namespace catena::couplings
