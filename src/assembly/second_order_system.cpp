@@ -8,6 +8,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/couplings/constraint_coupling.hpp"
 #include "catena/couplings/model_couplings.hpp"
 #include "catena/model/supported_nodes.hpp"
 #include "local_array.hpp"
@@ -133,6 +134,11 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   bool damps = false;
   for (const auto& c : couplings_) damps = damps || c->has_damping();
   has_damping_ = any_rank(comm, damps);
+  bool nonlinear = false;
+  for (const auto& c : couplings_)
+    if (const auto* k = dynamic_cast<const couplings::ConstraintCoupling*>(c.get()))
+      nonlinear = nonlinear || !k->linear();
+  constraints_linear_ = !any_rank(comm, nonlinear);
 
   q_work_ = create_vector();
   v_work_ = create_vector();

@@ -49,14 +49,6 @@ void SecondOrderSystem::algebraic_mask(Vec mask) const {
   CATENA_PETSC(VecAssemblyEnd(mask));
 }
 
-bool SecondOrderSystem::constraints_linear() const {
-  for (const model::Constraint& c : model_->constraints)
-    if (c.type == model::ConstraintType::frame_lengths ||
-        c.type == model::ConstraintType::frame_angles)
-      return false;
-  return true;
-}
-
 void SecondOrderSystem::constraint_acceleration(const EvalPoint& p, Vec out) const {
   constraint_targets(p, out, false);
 }

@@ -1,6 +1,7 @@
 #include "catena/couplings/joint_constraint.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "catena/core/error.hpp"
 
@@ -63,7 +64,7 @@ JointConstraint::JointConstraint(const model::Model& model, int index) : Constra
   const model::Constraint& c = model.constraints[static_cast<size_t>(index)];
   CATENA_ASSERT(c.type == model::ConstraintType::joint, "JointConstraint takes a joint");
   const model::Joint& joint = model.joints[static_cast<size_t>(c.joint)];
-  const int n_eq = model::joint_equations(joint.type);
+  const int n_eq = model::joint_equations(joint);
   for (int k = 0; k < n_eq; ++k) dofs_.push_back(DofKey::multiplier(index, k));
 
   auto body_side = [&](int body, int first_block) {
@@ -117,12 +118,55 @@ JointConstraint::JointConstraint(const model::Model& model, int index) : Constra
       dot(n1_a, n2_b);
       break;
   }
-  CATENA_ASSERT(static_cast<int>(equations_.size()) == n_eq, "a multiplier per equation");
+  for (size_t k = 0; k < equations_.size(); ++k) equations_[k].row = static_cast<int>(k);
+  rows_ = static_cast<int>(equations_.size());
+  if (joint.driven) {
+    const Affine u_b = b.direction(u, blocks_);
+    velocity_ = joint.motion_velocity;
+    amplitude_ = joint.motion_amplitude;
+    frequency_ = joint.motion_frequency;
+    if (joint.type == model::JointType::revolute) {
+      drive_ = Drive::angle;
+      equations_.push_back({true, 0, n1_a, n2_b, rows_, 1});
+      equations_.push_back({true, 0, n1_a, n1_b, rows_, 2});
+    } else {
+      drive_ = Drive::slide;
+      equations_.push_back({true, 0, gap, u_b, rows_, 0});
+    }
+    ++rows_;
+  }
+  CATENA_ASSERT(rows_ == n_eq, "a multiplier per equation");
+}
+
+JointConstraint::Weights JointConstraint::weights(double t) const {
+  Weights w;
+  if (drive_ == Drive::none) return w;
+  const double omega = 2.0 * M_PI * frequency_;
+  const double xi = velocity_ * t + amplitude_ * std::sin(omega * t);
+  const double xi_t = velocity_ + amplitude_ * omega * std::cos(omega * t);
+  const double xi_tt = -amplitude_ * omega * omega * std::sin(omega * t);
+  if (drive_ == Drive::slide) {
+    w.offset = xi;
+    w.offset_t = xi_t;
+    w.offset_tt = xi_tt;
+    return w;
+  }
+  // c₁ = cos ξ, c₂ = −sin ξ.
+  const double c = std::cos(xi), s = std::sin(xi);
+  w.c[1] = c;
+  w.c[2] = -s;
+  w.c_t[1] = -s * xi_t;
+  w.c_t[2] = -c * xi_t;
+  w.c_tt[1] = -c * xi_t * xi_t - s * xi_tt;
+  w.c_tt[2] = s * xi_t * xi_t - c * xi_tt;
+  return w;
 }
 
 bool JointConstraint::linear() const {
   // A dot of a body's direction with the ground's is linear too, but G is re-evaluated
-  // only where some equation needs it: a dot with state on both sides.
+  // only where some equation needs it: a dot with state on both sides, or a driven angle
+  // (whose G turns with time).
+  if (drive_ == Drive::angle) return false;
   return std::none_of(equations_.begin(), equations_.end(), [](const Equation& e) {
     if (!e.dot) return false;
     const auto moves = [](const Affine& a) {
@@ -142,35 +186,37 @@ Vec3 JointConstraint::value(const Affine& a, std::span<const double> nodal) cons
 
 void JointConstraint::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                                Scratch&) const {
-  const auto n_eq = static_cast<int>(equations_.size());
-  const int n = n_eq + 3 * blocks_;
-  const std::span<const double> nodal = s.q.subspan(static_cast<size_t>(n_eq));
+  const int n = rows_ + 3 * blocks_;
+  const std::span<const double> nodal = s.q.subspan(static_cast<size_t>(rows_));
+  const Weights w = weights(s.t);
   if (f) std::fill(f, f + n, 0.0);
   for (const MatrixRequest& r : m) std::fill(r.out, r.out + n * n, 0.0);
-  for (int i = 0; i < n_eq; ++i) {
-    const Equation& e = equations_[static_cast<size_t>(i)];
+  for (const Equation& e : equations_) {
+    const int i = e.row;
+    const double c = w.c[e.weight];
+    if (c == 0.0) continue;
     const double lambda = s.q[static_cast<size_t>(i)];
     const Vec3 x = value(e.x, nodal);
     const Vec3 y = e.dot ? value(e.y, nodal) : Vec3::Zero();
-    // ∂g/∂q_j: a 3-vector per block.
+    // c ∂T/∂q_j: a 3-vector per block.
     auto gradient = [&](int j) -> Vec3 {
-      const double w = e.x.w[static_cast<size_t>(j)];
-      if (!e.dot) return w * Vec3::Unit(e.d);
-      return w * y + e.y.w[static_cast<size_t>(j)] * x;
+      const double wx = e.x.w[static_cast<size_t>(j)];
+      if (!e.dot) return c * wx * Vec3::Unit(e.d);
+      return c * (wx * y + e.y.w[static_cast<size_t>(j)] * x);
     };
     if (f) {
-      f[i] = e.dot ? x.dot(y) : x[e.d];
+      f[i] += c * (e.dot ? x.dot(y) : x[e.d]);
       for (int j = 0; j < blocks_; ++j) {
         const Vec3 g = gradient(j);
-        for (int d = 0; d < 3; ++d) f[n_eq + 3 * j + d] += lambda * g[d];
+        for (int d = 0; d < 3; ++d) f[rows_ + 3 * j + d] += lambda * g[d];
       }
     }
     for (const MatrixRequest& r : m) {
       for (int j = 0; j < blocks_; ++j) {
         const Vec3 g = gradient(j);
         for (int d = 0; d < 3; ++d) {
-          r.out[(n_eq + 3 * j + d) * n + i] += r.c.c_lambda * g[d];
-          r.out[i * n + n_eq + 3 * j + d] += r.c.c_g * g[d];
+          r.out[(rows_ + 3 * j + d) * n + i] += r.c.c_lambda * g[d];
+          r.out[i * n + rows_ + 3 * j + d] += r.c.c_g * g[d];
         }
       }
       if (!e.dot || r.c.c_K == 0.0) continue;
@@ -180,25 +226,49 @@ void JointConstraint::evaluate(const CouplingState& s, double* f, std::span<cons
                            e.y.w[static_cast<size_t>(j)] * e.x.w[static_cast<size_t>(k)];
           if (h == 0.0) continue;
           for (int d = 0; d < 3; ++d)
-            r.out[(n_eq + 3 * j + d) * n + n_eq + 3 * k + d] += r.c.c_K * lambda * h;
+            r.out[(rows_ + 3 * j + d) * n + rows_ + 3 * k + d] += r.c.c_K * lambda * c * h;
         }
     }
   }
+  if (f && drive_ == Drive::slide) f[rows_ - 1] -= w.offset;
 }
 
 void JointConstraint::acceleration_target(const CouplingState& s, std::span<double> out) const {
-  const auto n_eq = static_cast<int>(equations_.size());
+  // d²g/dt² = G a + Σ [c̈ T + 2 ċ Ṫ + c (T̈ − ∂T/∂q a)] − ξ̈_p, with T̈ − ∂T/∂q a = 2 ẋ·ẏ for
+  // a dot and 0 for a component: γ is minus the rest.
   std::fill(out.begin(), out.end(), 0.0);
-  if (s.v.empty()) return;  // at rest: vᵀ H v = 0
-  const std::span<const double> rates = s.v.subspan(static_cast<size_t>(n_eq));
-  for (int i = 0; i < n_eq; ++i) {
-    const Equation& e = equations_[static_cast<size_t>(i)];
-    if (!e.dot) continue;  // linear: G a = 0 (no prescribed motion)
-    // ẋ, ẏ: the affine maps' linear parts applied to v.
+  const Weights w = weights(s.t);
+  const std::span<const double> nodal = s.q.subspan(static_cast<size_t>(rows_));
+  const bool moving = !s.v.empty();
+  const std::span<const double> rates =
+      moving ? s.v.subspan(static_cast<size_t>(rows_)) : std::span<const double>{};
+  for (const Equation& e : equations_) {
+    const auto i = static_cast<size_t>(e.row);
     Affine x_rate = e.x, y_rate = e.y;
     x_rate.constant = y_rate.constant = Vec3::Zero();
-    out[static_cast<size_t>(i)] = -2.0 * value(x_rate, rates).dot(value(y_rate, rates));
+    const Vec3 x = value(e.x, nodal), y = e.dot ? value(e.y, nodal) : Vec3::Zero();
+    const Vec3 xd = moving ? value(x_rate, rates) : Vec3::Zero();
+    const Vec3 yd = moving && e.dot ? value(y_rate, rates) : Vec3::Zero();
+    const double T = e.dot ? x.dot(y) : x[e.d];
+    const double T_t = e.dot ? xd.dot(y) + x.dot(yd) : xd[e.d];
+    const double second = e.dot ? 2.0 * xd.dot(yd) : 0.0;
+    out[i] -= w.c_tt[e.weight] * T + 2.0 * w.c_t[e.weight] * T_t + w.c[e.weight] * second;
   }
+  if (drive_ == Drive::slide) out[static_cast<size_t>(rows_ - 1)] += w.offset_tt;
+}
+
+void JointConstraint::velocity_target(const CouplingState& s, std::span<double> out) const {
+  // dg/dt = G v + Σ ċ T − ξ̇_p = 0.
+  std::fill(out.begin(), out.end(), 0.0);
+  if (drive_ == Drive::none) return;
+  const Weights w = weights(s.t);
+  const std::span<const double> nodal = s.q.subspan(static_cast<size_t>(rows_));
+  for (const Equation& e : equations_) {
+    if (e.weight == 0) continue;
+    const Vec3 x = value(e.x, nodal), y = value(e.y, nodal);
+    out[static_cast<size_t>(e.row)] -= w.c_t[e.weight] * x.dot(y);
+  }
+  if (drive_ == Drive::slide) out[static_cast<size_t>(rows_ - 1)] += w.offset_t;
 }
 
 }  // namespace catena::couplings

@@ -84,6 +84,12 @@ void read_bodies(const Field& bodies, SceneBuild& build) {
     if (body.name.find('/') != std::string::npos || body.name == "." || body.name == "..")
       name.fail("a body's name names its output group; got '" + body.name +
                 "', expected a name without '/' (and not '.' or '..')");
+    // Joints name their sides by body name, node id or `ground` (joint_reader.cpp).
+    if (body.name == "ground" || parse_integer(body.name))
+      name.fail(
+          "a body's name must not be 'ground' or an integer (joints name their sides by "
+          "body name, node id or ground); got '" +
+          body.name + "'");
     for (const RigidBody& other : model.rigid_bodies)
       if (other.name == body.name)
         name.fail("two bodies are named '" + body.name + "'; expected distinct names");

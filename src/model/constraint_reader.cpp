@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "did_you_mean.hpp"
+#include "sine_motion.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -107,19 +108,7 @@ void read_constraints(const Field& constraints, SceneBuild& build) {
       if (c.type == ConstraintType::prescribed) {
         c.velocity = entry.child("velocity").vec3_or(Vec3::Zero(), RealRange::any("m/s"));
         c.amplitude = entry.child("amplitude").vec3_or(Vec3::Zero(), RealRange::any("m"));
-        const Field frequency = entry.child("frequency");
-        if (c.amplitude.isZero()) {
-          if (frequency.present())
-            frequency.fail(
-                "frequency is given but amplitude is zero or missing; give "
-                "amplitude [m] too, or drop frequency");
-        } else {
-          if (!frequency.present())
-            frequency.fail(
-                "missing required key (amplitude is nonzero); expected the "
-                "frequency of the sine motion, a finite number > 0 [Hz]");
-          c.frequency = frequency.real(RealRange::positive("Hz"));
-        }
+        c.frequency = read_sine_frequency(entry.child("frequency"), c.amplitude.isZero(), "m");
       }
     }
     model.constraints.push_back(c);

@@ -270,6 +270,15 @@ void check_step_within_duration(const Field& dt, const Field& duration, const Dy
 void read_dynamics(const Field& scene, Model& model) {
   const Field analysis = scene.child("analysis");
   const Field output = scene.child("output");
+  // A rigid body's rotations have no stiffness until its frame's multipliers carry load, so
+  // the static solve's first Newton matrix is singular: bodies start from the scene's state.
+  const std::string no_statics =
+      "a static equilibrium with rigid bodies is not available (their rotations have no "
+      "stiffness until the constraints carry load, and the first Newton matrix is singular)";
+  if (!model.rigid_bodies.empty() && model.analysis != AnalysisType::dynamic)
+    analysis.child("type").fail(no_statics +
+                                "; run analysis.type: dynamic from the scene's configuration "
+                                "(initial: {from: reference})");
   if (model.analysis != AnalysisType::dynamic) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);
@@ -287,6 +296,13 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
+  if (!model.rigid_bodies.empty() && model.dynamic_options.initial.from_static) {
+    const Field from = analysis.child("initial").child("from");
+    (from.present() ? from : analysis)
+        .fail(no_statics +
+              "; start from the scene's configuration: analysis.initial.from: "
+              "reference");
+  }
   read_structure(analysis, model);
   read_integrator(scene.child("integrator"), model.constraints.size(), !model.rigid_bodies.empty(),
                   model.dynamic_options.integrator);

@@ -7,6 +7,7 @@
 
 #include "did_you_mean.hpp"
 #include "number_format.hpp"
+#include "sine_motion.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -65,8 +66,9 @@ SideRef read_side(const Field& field, const SceneBuild& build) {
 }  // namespace
 
 void read_joints(const Field& joints, SceneBuild& build) {
-  static const std::vector<std::string> keys{"name",      "type",    "between", "point",   "axis",
-                                             "stiffness", "damping", "neutral", "actuator"};
+  static const std::vector<std::string> keys{"name",    "type",    "between",   "point",
+                                             "axis",    "motion",  "stiffness", "damping",
+                                             "neutral", "actuator"};
   Model& model = build.model;
   for (const Field& entry : joints.items()) {
     entry.expect_map("a joint {type, between, point, axis}");
@@ -153,13 +155,32 @@ void read_joints(const Field& joints, SceneBuild& build) {
                                    0.0, RealRange::between(-M_PI, false, M_PI, true, unit))
                              : entry.child("neutral").real_or(0.0, RealRange::any(unit));
     joint.actuator = entry.child("actuator").real_or(0.0, RealRange::any(revolute ? "N*m" : "N"));
+    // A prescribed motion of the coordinate, as a node's: ξ(t) = velocity·t + amplitude·sin(2πft).
+    if (const Field motion = entry.child("motion"); motion.present()) {
+      if (!revolute && !sliding)
+        motion.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+                    " joint has no coordinate to move; a prescribed motion drives a revolute "
+                    "(an angle) or prismatic (a slide) joint");
+      if (joint.has_spring())
+        motion.fail(
+            "a joint with a prescribed motion takes no stiffness, damping or actuator "
+            "(the motion is imposed whatever they do); remove one or the other");
+      motion.expect_map("a prescribed motion {velocity, amplitude, frequency}");
+      motion.check_keys({"velocity", "amplitude", "frequency"});
+      joint.driven = true;
+      joint.motion_velocity =
+          motion.child("velocity").real_or(0.0, RealRange::any(revolute ? "rad/s" : "m/s"));
+      joint.motion_amplitude = motion.child("amplitude").real_or(0.0, RealRange::any(unit));
+      joint.motion_frequency =
+          read_sine_frequency(motion.child("frequency"), joint.motion_amplitude == 0.0, unit);
+    }
 
     Constraint c;
     c.type = ConstraintType::joint;
     c.node_a = model.rigid_bodies[static_cast<size_t>(a.body)].node;
     c.node_b = b.body >= 0 ? model.rigid_bodies[static_cast<size_t>(b.body)].node : b.node;
     c.joint = static_cast<int>(model.joints.size());
-    c.equations = joint_equations(joint.type);
+    c.equations = joint_equations(joint);
     model.joints.push_back(joint);
     model.constraints.push_back(c);
   }

@@ -173,7 +173,8 @@ std::string describe(const Model& model, int n_ranks_running) {
                             b.centre_of_mass[1] * node.section_y +
                             b.centre_of_mass[2] * node.section_z) +
               " m, principal moments " + format_vector(principal.eigenvalues()) +
-              " kg*m^2; natural coordinates (r, e1, e2, e3: 12 unknowns, 6 frame constraints)");
+              " kg*m^2; natural coordinates (r, e1, e2, e3: 12 unknowns; 2 frame constraints, 6 "
+              "multipliers)");
   }
   static const char* joint_types[] = {"spherical", "revolute", "cylindrical", "prismatic", "fixed"};
   for (const Joint& j : model.joints) {
@@ -187,7 +188,7 @@ std::string describe(const Model& model, int n_ranks_running) {
           std::string(joint_types[static_cast<int>(j.type)]) + " between body '" +
               model.rigid_bodies[static_cast<size_t>(j.body_a)].name + "' and " + other + " at " +
               format_vector(j.point) + " m" + (has_axis ? ", axis " + format_vector(j.axis) : "") +
-              ": " + std::to_string(joint_equations(j.type)) + " multipliers");
+              ": " + std::to_string(joint_equations(j)) + " multipliers");
   }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");

@@ -34,6 +34,7 @@ lines:
   - {name: left, from: 1, to: 5, elements: 15, section: rope, tension: 20000}
   - {name: right, from: 5, to: 2, elements: 15, section: rope, tension: 20000}
 supports: [{node: 1, fix: pinned}, {node: 2, fix: pinned}]
+analysis: {type: dynamic, duration: 1, initial: {from: reference}}
 bodies:
   - {name: block, node: 3, mass: 20, inertia: [0.5, 0.5, 0.3]}
   - {name: hook, node: 4, mass: 5, inertia: [0.1, 0.12, 0.05], axes: [[1, 0, 0.2], [0, 1, 0]]}

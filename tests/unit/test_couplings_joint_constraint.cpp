@@ -19,7 +19,7 @@ using couplings::JointConstraint;
 using couplings::MatrixRequest;
 
 // Two bodies with tilted axes, a node, and one joint of `type` between `a` and `b`.
-model::Model scene(const std::string& type, const std::string& b) {
+model::Model scene(const std::string& type, const std::string& b, bool driven = false) {
   const bool axis = type == "revolute" || type == "cylindrical" || type == "prismatic";
   const std::string text =
       "nodes:\n"
@@ -27,6 +27,7 @@ model::Model scene(const std::string& type, const std::string& b) {
       "  - {id: 2, position: [1, 0.5, -0.2]}\n"
       "  - {id: 3, position: [0.4, 0.3, 0.1]}\n"
       "elements: []\n"
+      "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n"
       "supports: [{node: 3, fix: pinned}, {node: 2, fix: pinned}]\n"
       "bodies:\n"
       "  - {name: arm, node: 1, mass: 2, inertia: [0.1, 0.2, 0.25],\n"
@@ -36,7 +37,8 @@ model::Model scene(const std::string& type, const std::string& b) {
       "joints:\n"
       "  - {type: " +
       type + ", between: [arm, " + b + "]" + (b == "3" ? "" : ", point: [0.4, 0.3, 0.1]") +
-      (axis ? ", axis: [0.2, -1, 0.3]" : "") + "}\n";
+      (axis ? ", axis: [0.2, -1, 0.3]" : "") +
+      (driven ? ", motion: {velocity: 0.7, amplitude: 0.2, frequency: 1.3}" : "") + "}\n";
   return model::parse_scene(text, "joint.yaml");
 }
 
@@ -59,16 +61,17 @@ std::vector<double> state(const model::Model& m, const JointConstraint& joint, d
 
 struct Case {
   std::string type, b;
+  bool driven = false;
 };
 class Joints : public testing::TestWithParam<Case> {};
 
 TEST_P(Joints, VanishInTheReferenceAndMatchFiniteDifferences) {
   const Case c = GetParam();
-  const model::Model m = scene(c.type, c.b);
+  const model::Model m = scene(c.type, c.b, c.driven);
   const int index = static_cast<int>(m.constraints.size()) - 1;  // the joint, last
   const JointConstraint joint(m, index);
   const auto n = static_cast<int>(joint.dofs().size());
-  const auto n_eq = static_cast<int>(joint.equations().size());
+  const int n_eq = joint.rows();
   ASSERT_EQ(n_eq, m.constraints.back().equations);
   couplings::Scratch scratch;
   std::vector<double> f(static_cast<size_t>(n));
@@ -99,35 +102,44 @@ TEST_P(Joints, VanishInTheReferenceAndMatchFiniteDifferences) {
     v[k] = (q_at(t + h)[k] - q_at(t - h)[k]) / (2 * h);
     a[k] = (q_at(t + h)[k] - 2 * q_at(t)[k] + q_at(t - h)[k]) / (h * h);
   }
+  // g(q(s), s): a prescribed motion's equation depends on the time too.
   auto g = [&](double s) {
     std::vector<double> out(static_cast<size_t>(n));
-    joint.evaluate({q_at(s), {}, {}, 0.0}, out.data(), {}, scratch);
+    joint.evaluate({q_at(s), {}, {}, s}, out.data(), {}, scratch);
     return out;
   };
   std::vector<double> G(static_cast<size_t>(n * n));
   const MatrixRequest only_g[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
-  joint.evaluate({q_at(t), {}, {}, 0.0}, nullptr, only_g, scratch);
-  std::vector<double> target(static_cast<size_t>(n_eq));
+  joint.evaluate({q_at(t), {}, {}, t}, nullptr, only_g, scratch);
+  std::vector<double> target(static_cast<size_t>(n_eq)), velocity(static_cast<size_t>(n_eq));
   joint.acceleration_target({q_at(t), v, {}, t}, target);
+  joint.velocity_target({q_at(t), v, {}, t}, velocity);
   const std::vector<double> gp = g(t + h), g0 = g(t), gm = g(t - h);
   for (int k = 0; k < n_eq; ++k) {
-    double Ga = 0.0;
-    for (int col = n_eq; col < n; ++col) Ga += G[k * n + col] * a[col];
+    double Ga = 0.0, Gv = 0.0;
+    for (int col = n_eq; col < n; ++col) {
+      Ga += G[k * n + col] * a[col];
+      Gv += G[k * n + col] * v[col];
+    }
     EXPECT_NEAR(target[k], Ga - (gp[k] - 2 * g0[k] + gm[k]) / (h * h), 2e-5) << k;
+    // β = G v − dg/dt: zero unless the joint is driven.
+    EXPECT_NEAR(velocity[k], Gv - (gp[k] - gm[k]) / (2 * h), 5e-6) << k;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTypeAndSide, Joints,
-                         testing::Values(Case{"spherical", "base"}, Case{"spherical", "ground"},
-                                         Case{"spherical", "3"}, Case{"revolute", "base"},
-                                         Case{"revolute", "ground"}, Case{"cylindrical", "base"},
-                                         Case{"cylindrical", "ground"}, Case{"prismatic", "base"},
-                                         Case{"prismatic", "ground"}, Case{"fixed", "base"},
-                                         Case{"fixed", "ground"}),
-                         [](const testing::TestParamInfo<Case>& param) {
-                           return param.param.type + "_" +
-                                  (param.param.b == "3" ? std::string("node") : param.param.b);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    EveryTypeAndSide, Joints,
+    testing::Values(Case{"spherical", "base"}, Case{"spherical", "ground"}, Case{"spherical", "3"},
+                    Case{"revolute", "base"}, Case{"revolute", "ground"},
+                    Case{"cylindrical", "base"}, Case{"cylindrical", "ground"},
+                    Case{"prismatic", "base"}, Case{"revolute", "ground", true},
+                    Case{"revolute", "base", true}, Case{"prismatic", "ground", true},
+                    Case{"prismatic", "base", true}, Case{"prismatic", "ground"},
+                    Case{"fixed", "base"}, Case{"fixed", "ground"}),
+    [](const testing::TestParamInfo<Case>& param) {
+      return param.param.type + "_" + (param.param.b == "3" ? std::string("node") : param.param.b) +
+             (param.param.driven ? "_driven" : "");
+    });
 
 // A revolute joint allows rotation about its axis and nothing else: rotate body A about the
 // axis through the point (g stays 0), then about a perpendicular axis (g does not).

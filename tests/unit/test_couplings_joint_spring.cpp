@@ -24,6 +24,7 @@ model::Model scene(const std::string& type, const std::string& b) {
       "  - {id: 1, position: [0.3, 0.1, 0]}\n"
       "  - {id: 2, position: [1, 0.5, -0.2]}\n"
       "supports: [{node: 2, fix: pinned}]\n"
+      "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n"
       "bodies:\n"
       "  - {name: arm, node: 1, mass: 2, inertia: [0.1, 0.2, 0.25],\n"
       "     axes: [[0.8, 0.6, 0], [-0.6, 0.8, 0.1]]}\n"

@@ -118,8 +118,9 @@ class SecondOrderSystem {
   // Collective. 1 in the multiplier slots, 0 in the nodal ones.
   void algebraic_mask(Vec mask) const;
   // Not collective (the same answer on every rank). False if some constraint's G depends
-  // on q (a rigid body's frame).
-  bool constraints_linear() const;
+  // on q or t (a rigid body's frame, a joint between bodies, a driven revolute joint): its
+  // ConstraintCoupling::linear().
+  bool constraints_linear() const { return constraints_linear_; }
   // Collective. γ(q, v, t) of the acceleration-level constraints G a = γ in the multiplier
   // slots, 0 in the others (couplings/constraint_coupling.hpp): a prescribed motion's
   // ∂²u/∂t², a quadratic constraint's −vᵀ H v. p.v null: at rest.
@@ -250,6 +251,7 @@ class SecondOrderSystem {
   // Scratch of the evaluation loop (mutable: output queries evaluate through a const system).
   mutable VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   bool has_damping_ = true;
+  bool constraints_linear_ = true;
   mutable Buffers work_;
   // Local patches (prepare_local_patches): per owned DOF, the kernel couplings touching it
   // (CSR) and whether a patch may change it; marks for local_patch's search (all zero

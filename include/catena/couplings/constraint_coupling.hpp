@@ -24,7 +24,8 @@ class ConstraintCoupling : public Coupling {
 
   // Index into model.constraints.
   int index() const { return index_; }
-  // False if G depends on q (integrators then re-evaluate Gᵀ with the tangent).
+  // False if G depends on q or t (SecondOrderSystem::constraints_linear() is then false on
+  // every rank, and the integrators re-evaluate Gᵀ with the tangent).
   virtual bool linear() const = 0;
   // γ at the state s (all of dofs(), multiplier slots first: their values are ignored), one
   // per multiplier into `out`.

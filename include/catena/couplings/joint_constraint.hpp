@@ -40,22 +40,43 @@ class JointConstraint final : public ConstraintCoupling {
                 Scratch& scratch) const override;
   bool linear() const override;
   void acceleration_target(const CouplingState& s, std::span<double> out) const override;
+  void velocity_target(const CouplingState& s, std::span<double> out) const override;
 
   // A point or direction as an affine function of the nodal blocks: Σ_j w[j] q_j + constant.
   struct Affine {
     std::vector<double> w;  // one weight per nodal block
     Vec3 constant = Vec3::Zero();
   };
+  // One term of multiplier `row`'s equation, times the weight `weight` names (0: one; 1, 2:
+  // the prescribed motion's c₁(t), c₂(t) below).
   struct Equation {
     bool dot = false;  // false: component `d` of x; true: x · y
     int d = 0;
     Affine x, y;
+    int row = 0;
+    int weight = 0;
   };
   const std::vector<Equation>& equations() const { return equations_; }
+  // Multipliers (equations).
+  int rows() const { return rows_; }
 
  private:
   std::vector<Equation> equations_;
+  int rows_ = 0;
   int blocks_ = 0;  // nodal 3-vector blocks (4 per body, 1 for a node)
+  // A prescribed motion of the coordinate, ξ_p(t) = v t + A sin(2πft), as the last equation:
+  //   revolute   g = cos ξ_p (n₁_A·n₂_B) − sin ξ_p (n₁_A·n₁_B) = sin(ξ − ξ_p)
+  //   prismatic  g = (p_A − p_B)·u_B − ξ_p
+  enum class Drive { none, angle, slide };
+  Drive drive_ = Drive::none;
+  double velocity_ = 0.0, amplitude_ = 0.0, frequency_ = 0.0;
+  // The weights (1, c₁, c₂) and the offset ξ_p of the driven row, with their first and second
+  // time derivatives.
+  struct Weights {
+    double c[3] = {1, 0, 0}, c_t[3] = {0, 0, 0}, c_tt[3] = {0, 0, 0};
+    double offset = 0.0, offset_t = 0.0, offset_tt = 0.0;
+  };
+  Weights weights(double t) const;
 
   // x at the state (nodal part of q, after the multipliers).
   Vec3 value(const Affine& a, std::span<const double> nodal) const;

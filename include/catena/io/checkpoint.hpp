@@ -8,7 +8,7 @@
 //   /q, /v, /a     n_nodes × 12 (model::kMaxBlockUnknowns): each node's unknowns in its
 //                  kind's layout (model/unknown_kinds.hpp; [r, r_x, r_y, r_z] for ANCF
 //                  nodes), fixed and absent components 0;
-//   /lambda        n_constraints × 3, the multipliers;
+//   /lambda        n_constraints × model::multiplier_width, the multipliers (rows padded);
 //   attributes     time, last_dt, samples, steps (the output file's row counts at the
 //                  checkpoint), integrator, ranks (of the run that wrote it), n_nodes,
 //                  n_elements, n_constraints, format, and which run it belongs to:
@@ -19,8 +19,8 @@
 //                  (solvers/resume_state.hpp: the next step size, the point at which the
 //                  reused tangent was evaluated, its age and freshness flags, the
 //                  predictor's history, the counters): /resume/vectors/<name>
-//                  (n_nodes × 12) and /resume/multipliers/<name> (n_constraints × 3) per
-//                  vector, numbers as attributes of /resume (double or int64).
+//                  (n_nodes × 12) and /resume/multipliers/<name> (n_constraints × multiplier_width)
+//                  per vector, numbers as attributes of /resume (double or int64).
 // Node-indexed rather than DOF-indexed, so it does not depend on the partition. Format 1
 // (no /resume, no ranks) is still read: such a restart starts its Newton iteration afresh.
 //
@@ -48,8 +48,8 @@ struct CheckpointFacts {
 };
 
 // The solvers' step-to-step state (solvers/resume_state.hpp) in checkpoint form: each
-// vector as node rows (12 per node) and multiplier rows (3 per constraint) — this rank's
-// share in CheckpointShare, every node's in Checkpoint — and numbers identical on every
+// vector as node rows (12 per node) and multiplier rows (model::multiplier_width per constraint) —
+// this rank's share in CheckpointShare, every node's in Checkpoint — and numbers identical on every
 // rank.
 struct ResumeRows {
   std::map<std::string, std::vector<double>> rows, multipliers;
@@ -77,7 +77,7 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const model::Model
 struct Checkpoint {
   CheckpointFacts facts;
   std::vector<double> q, v, a;  // 12 per node
-  std::vector<double> lambda;   // 3 per constraint
+  std::vector<double> lambda;   // model::multiplier_width per constraint
   ResumeRows resume;            // empty from a format-1 checkpoint
 };
 

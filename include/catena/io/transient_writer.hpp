@@ -4,7 +4,8 @@
 // nodes), /time, /samples/{positions, velocities, slopes} (n_samples × n_nodes × 3),
 // /samples/axial_force (n_samples × n_elements), with constraints /mesh/constraint_nodes
 // (n_constraints × 2 node indices, −1: none) and /samples/constraint_forces
-// (n_samples × n_constraints × 3: the force on node A), with supports /mesh/support_nodes
+// (n_samples × n_constraints × model::multiplier_width: −λ, for a node constraint the force
+// on node A), with supports /mesh/support_nodes
 // and /samples/reaction_force, /samples/reaction_moment (n_samples × n_supports × 3),
 // /steps/* (one row per accepted
 // step), with pantographs /samples/contact_force and /samples/contact_position

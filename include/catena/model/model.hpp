@@ -121,9 +121,16 @@ struct Joint {
   double neutral = 0.0;    // rad or m
   double actuator = 0.0;   // N·m or N, constant
   bool has_spring() const { return stiffness != 0.0 || damping != 0.0 || actuator != 0.0; }
+  // Revolute and prismatic joints: a prescribed motion of the coordinate instead,
+  //   ξ(t) = motion_velocity·t + motion_amplitude·sin(2π·motion_frequency·t)  (rad or m),
+  // one more equation whose multiplier is the driving torque or force.
+  bool driven = false;
+  double motion_velocity = 0.0;   // rad/s or m/s
+  double motion_amplitude = 0.0;  // rad or m
+  double motion_frequency = 0.0;  // Hz
 };
 
-// Equations (multipliers) of a joint of this type.
+// Equations (multipliers) of a joint of this type, without a prescribed motion.
 inline int joint_equations(JointType type) {
   switch (type) {
     case JointType::spherical:
@@ -138,6 +145,10 @@ inline int joint_equations(JointType type) {
       return 6;
   }
   return 0;
+}
+// Equations (multipliers) of a joint: its type's, and one for a prescribed motion.
+inline int joint_equations(const Joint& joint) {
+  return joint_equations(joint.type) + (joint.driven ? 1 : 0);
 }
 
 struct NodalLoad {

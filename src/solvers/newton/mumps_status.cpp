@@ -64,16 +64,10 @@ bool enlarge_mumps_workspace(KSP ksp, const DirectSolveStatus& status) {
   PetscInt margin = 0;
   CATENA_PETSC(MatMumpsGetIcntl(factor, 14, &margin));
   if (margin >= 1600) return false;
-  // MUMPS sizes its workspace in the analysis, so a larger margin needs a new factor: the
-  // option for the KSP's prefix (read when the PC makes the factor), the PC reset, the
-  // operators set again so that the next set-up analyses and factors anew.
-  const char* prefix = nullptr;
-  CATENA_PETSC(KSPGetOptionsPrefix(ksp, &prefix));
-  std::string option = "-";  // appended piecewise: GCC 12 warns falsely on "-" + string
-  if (prefix) option.append(prefix);
-  option.append("mat_mumps_icntl_14");
-  const std::string value = std::to_string(std::max<PetscInt>(2 * margin, margin + 100));
-  CATENA_PETSC(PetscOptionsSetValue(nullptr, option.c_str(), value.c_str()));
+  // MUMPS sizes its workspace in the analysis, so a larger margin needs a new factor: the PC
+  // reset (it keeps its type and solver), the operators set again, a new factor made now
+  // and given the margin, so that the next set-up analyses and factors with it. Not through
+  // the options database, which would outlive this solver (a study's next case).
   Mat A = nullptr, P = nullptr;
   CATENA_PETSC(KSPGetOperators(ksp, &A, &P));
   CATENA_PETSC(PetscObjectReference(reinterpret_cast<PetscObject>(A)));
@@ -82,6 +76,9 @@ bool enlarge_mumps_workspace(KSP ksp, const DirectSolveStatus& status) {
   CATENA_PETSC(KSPSetOperators(ksp, A, P));
   CATENA_PETSC(MatDestroy(&A));
   CATENA_PETSC(MatDestroy(&P));
+  CATENA_PETSC(PCFactorSetUpMatSolverType(pc));
+  CATENA_PETSC(PCFactorGetMatrix(pc, &factor));
+  CATENA_PETSC(MatMumpsSetIcntl(factor, 14, std::max<PetscInt>(2 * margin, margin + 100)));
   return true;
 }
 

@@ -214,9 +214,21 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   failure_.clear();
   const bool rebuild = !matrix_valid_ || full_newton;
   CATENA_PETSC(SNESSetLagJacobian(snes_.get(), full_newton ? 1 : (rebuild ? -2 : -1)));
-  const PetscErrorCode ierr = SNESSolve(snes_.get(), nullptr, x);
+  PetscErrorCode ierr = SNESSolve(snes_.get(), nullptr, x);
   guard_.rethrow_if_any();
   CATENA_PETSC(ierr);
+  // MUMPS out of workspace (delayed pivots of a saddle-point matrix): the matrix is factored
+  // again with a larger margin, and Newton goes on from the iterate it stopped at.
+  for (;;) {
+    SNESConvergedReason stopped;
+    CATENA_PETSC(SNESGetConvergedReason(snes_.get(), &stopped));
+    if (stopped != SNES_DIVERGED_LINEAR_SOLVE ||
+        !enlarge_mumps_workspace(ksp(), direct_solve_status(ksp())))
+      break;
+    ierr = SNESSolve(snes_.get(), nullptr, x);
+    guard_.rethrow_if_any();
+    CATENA_PETSC(ierr);
+  }
 
   NewtonResult result;
   SNESConvergedReason reason;

@@ -18,13 +18,13 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
       system.comm(), "mass_",
       algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
   // G constant: factored once here, at any state (the reference's zero vector will do).
-  if (system.constraints_linear()) factor(rhs_.get());
+  if (system.constraints_linear()) factor(rhs_.get(), 0.0);
 }
 
-void AccelerationSolver::factor(Vec q) {
+void AccelerationSolver::factor(Vec q, double t) {
   Mat A = mass_;
   if (algebraic_.active()) {
-    system_.jacobian({q, nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
+    system_.jacobian({q, nullptr, {}, t}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
     A = saddle_.get();
   }
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
@@ -44,7 +44,7 @@ void AccelerationSolver::factor(Vec q) {
 void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
   // f without the constraint forces (λ = 0): they are unknowns here.
   algebraic_.zero_algebraic(q);
-  if (!system_.constraints_linear()) factor(q);  // G at this state
+  if (!system_.constraints_linear()) factor(q, t);  // G at this state
   system_.force({q, v, {}, t}, rhs_.get());
   CATENA_PETSC(VecScale(rhs_.get(), -1.0));
   if (algebraic_.active()) {
@@ -61,7 +61,7 @@ void AccelerationSolver::solve(double t, Vec q, Vec v, Vec a) {
 double AccelerationSolver::project_velocity(double t, Vec q, Vec v) {
   if (!algebraic_.active()) return 0.0;
   algebraic_.zero_algebraic(q);
-  if (!system_.constraints_linear()) factor(q);
+  if (!system_.constraints_linear()) factor(q, t);
   CATENA_PETSC(MatMult(mass_, v, rhs_.get()));
   system_.constraint_velocity({q, nullptr, {}, t}, target_.get());
   algebraic_.take_algebraic(rhs_.get(), target_.get());
@@ -79,6 +79,16 @@ double AccelerationSolver::project_velocity(double t, Vec q, Vec v) {
 
 double project_initial_velocity(assembly::SecondOrderSystem& system, double t, Vec q, Vec v) {
   if (!system.has_constraints()) return 0.0;
+  // At rest with scleronomic constraints (every catenary start): nothing to project, and no
+  // factorisation spent on finding that out.
+  PetscReal speed = 0.0, target = 0.0;
+  CATENA_PETSC(VecNorm(v, NORM_INFINITY, &speed));
+  {
+    VecHandle beta = system.create_vector();
+    system.constraint_velocity({q, nullptr, {}, t}, beta.get());
+    CATENA_PETSC(VecNorm(beta.get(), NORM_INFINITY, &target));
+  }
+  if (speed == 0.0 && target == 0.0) return 0.0;
   MatHandle mass = system.create_matrix();
   system.jacobian({q, nullptr, {}}, {0.0, 0.0, 1.0}, mass.get());
   return AccelerationSolver(system, mass.get()).project_velocity(t, q, v);

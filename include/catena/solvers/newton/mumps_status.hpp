@@ -37,10 +37,9 @@ DirectSolveStatus direct_solve_status(KSP ksp);
 // −9, −14, −17 or −20: its estimate from the analysis fell short, as delayed pivots of a
 // saddle-point matrix make it, e.g. a small constrained system on three ranks), raises the
 // margin MUMPS adds to the estimate (ICNTL(14), 20 % by default) to twice its value, at
-// least +100 % (the option -<prefix>mat_mumps_icntl_14, kept for the solver's later
-// factorisations), and resets ksp's PC, so that the next KSPSetUp or KSPSolve analyses and
-// factors again. Returns whether it did (false: another failure, or the margin is at its
-// cap of 1600 %).
+// least +100 % (on a new factor of ksp's PC, which keeps it for its later factorisations),
+// so that the next KSPSetUp or KSPSolve analyses and factors again. Returns whether it did (false:
+// another failure, or the margin is at its cap of 1600 %).
 bool enlarge_mumps_workspace(KSP ksp, const DirectSolveStatus& status);
 
 // Not collective. Turns on MUMPS null-pivot detection (ICNTL(24) = 1) for the solver with

@@ -42,8 +42,8 @@ class AccelerationSolver {
   KspHandle ksp_;
   VecHandle rhs_, target_;
 
-  // Collective. Factors M, or the saddle-point matrix with G at q; throws if singular.
-  void factor(Vec q);
+  // Collective. Factors M, or the saddle-point matrix with G at (q, t); throws if singular.
+  void factor(Vec q, double t);
 };
 
 // Collective. One-off AccelerationSolver(system, M).project_velocity(t, q, v), M assembled

@@ -187,7 +187,7 @@ struct IrkIntegrator::Impl {
     tangent_t = p.t;
     system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, p.t}, K.get(), C.get());
     if (algebraic->active() && !system.constraints_linear())  // M + Gᵀ with G where K is
-      system.jacobian({tangent_q.get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
+      system.jacobian({tangent_q.get(), nullptr, {}, p.t}, {0.0, 0.0, 1.0, 1.0, 0.0},
                       mass_coupling.get());
     ++counters.jacobian_evaluations;
     ++tangent_serial;
@@ -225,8 +225,8 @@ struct IrkIntegrator::Impl {
       // Where G depends on q, the multiplier columns of every stage take G at the last
       // stage's state (a simplified part of the full Newton: it converges linearly there).
       if (algebraic->active() && !system.constraints_linear())
-        system.jacobian({U[s - 1].get(), nullptr, {}}, {0.0, 0.0, 1.0, 1.0, 0.0},
-                        mass_coupling.get());
+        system.jacobian({U[s - 1].get(), nullptr, {}, state.time() + T.c(s - 1) * h},
+                        {0.0, 0.0, 1.0, 1.0, 0.0}, mass_coupling.get());
       block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
     } else if (decoupled) {
       if (refresh) evaluate_iterate_tangent(xk);
