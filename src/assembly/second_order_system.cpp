@@ -135,9 +135,11 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   for (const auto& c : couplings_) damps = damps || c->has_damping();
   has_damping_ = any_rank(comm, damps);
   bool nonlinear = false;
-  for (const auto& c : couplings_)
-    if (const auto* k = dynamic_cast<const couplings::ConstraintCoupling*>(c.get()))
+  for (size_t i = 0; i < couplings_.size(); ++i)
+    if (const auto* k = dynamic_cast<const couplings::ConstraintCoupling*>(couplings_[i].get())) {
+      constraints_.push_back(i);
       nonlinear = nonlinear || !k->linear();
+    }
   constraints_linear_ = !any_rank(comm, nonlinear);
 
   q_work_ = create_vector();
@@ -377,6 +379,12 @@ void SecondOrderSystem::assemble_matrices(const EvalPoint& p,
 void SecondOrderSystem::jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J) {
   const Mat matrices[1] = {J};
   assemble_matrices(p, {&c, 1}, matrices, evaluated_);
+}
+
+void SecondOrderSystem::constraint_jacobian(const EvalPoint& p, const JacobianCoefficients& c,
+                                            Mat J) {
+  const Mat matrices[1] = {J};
+  assemble_matrices(p, {&c, 1}, matrices, constraints_);
 }
 
 void SecondOrderSystem::tangent_parts(const EvalPoint& p, Mat K_out, Mat C_out) {

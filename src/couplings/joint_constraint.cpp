@@ -52,13 +52,12 @@ Affine minus(Affine a, const Affine& b) {
   return a;
 }
 
-// A unit vector perpendicular to u.
-Vec3 perpendicular(const Vec3& u) {
+}  // namespace
+
+Vec3 JointConstraint::normal(const Vec3& u) {
   const Vec3 trial = std::abs(u.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   return (trial - trial.dot(u) * u).normalized();
 }
-
-}  // namespace
 
 JointConstraint::JointConstraint(const model::Model& model, int index) : ConstraintCoupling(index) {
   const model::Constraint& c = model.constraints[static_cast<size_t>(index)];
@@ -88,7 +87,7 @@ JointConstraint::JointConstraint(const model::Model& model, int index) : Constra
   blocks_ = 4 + b.blocks;
 
   const Vec3 u = joint.axis.normalized();
-  const Vec3 n1 = perpendicular(u), n2 = u.cross(n1);
+  const Vec3 n1 = normal(u), n2 = u.cross(n1);
   const Affine gap = minus(a.point(joint.point, blocks_), b.point(joint.point, blocks_));
   auto component = [&](int d) { equations_.push_back({false, d, gap, {}}); };
   auto dot = [&](const Affine& x, const Affine& y) { equations_.push_back({true, 0, x, y}); };

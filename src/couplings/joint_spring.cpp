@@ -4,6 +4,7 @@
 #include <array>
 
 #include "catena/core/error.hpp"
+#include "catena/couplings/joint_constraint.hpp"
 #include "catena/elements/dual.hpp"
 
 namespace catena::couplings {
@@ -24,12 +25,6 @@ Vec3 in_body(const model::Node& node, const Vec3& v) {
   return {node.tangent.dot(v), node.section_y.dot(v), node.section_z.dot(v)};
 }
 
-// A unit vector perpendicular to u (the joint constraint's choice: joint_constraint.cpp).
-Vec3 perpendicular(const Vec3& u) {
-  const Vec3 trial = std::abs(u.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  return (trial - trial.dot(u) * u).normalized();
-}
-
 }  // namespace
 
 JointSpring::JointSpring(const model::Model& model, int joint_index) {
@@ -42,7 +37,7 @@ JointSpring::JointSpring(const model::Model& model, int joint_index) {
   damping_ = joint.damping;
   neutral_ = joint.neutral;
   actuator_ = joint.actuator;
-  const Vec3 u = joint.axis.normalized(), n1 = perpendicular(u);
+  const Vec3 u = joint.axis.normalized(), n1 = JointConstraint::normal(u);
   const int node_a = model.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
   const model::Node& a = model.nodes[static_cast<size_t>(node_a)];
   point_a_ = in_body(a, joint.point - a.position);

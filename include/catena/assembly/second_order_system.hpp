@@ -83,11 +83,15 @@ class SecondOrderSystem {
   // assembled on return). Every entry of the pattern is inserted, zero or not, so all
   // matrices from this call share one nonzero pattern (MatAXPY SAME_NONZERO_PATTERN).
   void jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
+  // Collective. The same over the constraint couplings alone (c_λ Gᵀ + c_g G, and c_K Σλ H
+  // where they are nonlinear): what integrators re-assemble with each tangent where the
+  // constraints are not linear, without a pass over the elements.
+  void constraint_jacobian(const EvalPoint& p, const JacobianCoefficients& c, Mat J);
   // Collective. K = ∂f/∂q + G (G in the multiplier rows: ∂R/∂q of the whole residual)
   // and C = ∂f/∂v at p in one element pass (matrices from create_matrix(); either may be
   // null). For integrators that combine them with coefficients of their own; the
-  // multiplier columns Gᵀ come from jacobian() with c_λ = 1 (at the same point where the
-  // constraints are not linear). K holds the constraints' Σ λ_k H_k.
+  // multiplier columns Gᵀ come from jacobian() with c_λ = 1, or constraint_jacobian() (at
+  // the same point where the constraints are not linear). K holds the constraints' Σ λ_k H_k.
   void tangent_parts(const EvalPoint& p, Mat K, Mat C);
 
   // Local patches (local_patch.hpp; local_patch.cpp). Collective: finds which owned DOFs
@@ -240,6 +244,7 @@ class SecondOrderSystem {
   std::vector<size_t> timed_;        // the couplings with PatchRole::at_patch_time
   std::vector<size_t> at_supports_;  // the couplings acting on a supported node
   std::vector<size_t> evaluated_;    // the couplings evaluated one by one: all but linear_'s
+  std::vector<size_t> constraints_;  // the constraint couplings (ConstraintCoupling)
   std::unique_ptr<LinearBlock> linear_;
   std::vector<PetscInt> local_index_;   // ghosted local index or −1 (fixed)
   std::vector<PetscInt> global_index_;  // global index or −1 (fixed)

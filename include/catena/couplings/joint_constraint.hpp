@@ -57,6 +57,9 @@ class JointConstraint final : public ConstraintCoupling {
     int weight = 0;
   };
   const std::vector<Equation>& equations() const { return equations_; }
+  // n₁ of a joint with axis u (unit): the unit vector ⊥ u that both a joint's equations and
+  // its spring (joint_spring.hpp) measure from.
+  static Vec3 normal(const Vec3& u);
   // Multipliers (equations).
   int rows() const { return rows_; }
 

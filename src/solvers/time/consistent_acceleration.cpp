@@ -24,7 +24,9 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
 void AccelerationSolver::factor(Vec q, double t) {
   Mat A = mass_;
   if (algebraic_.active()) {
-    system_.jacobian({q, nullptr, {}, t}, {0.0, 0.0, 1.0, 1.0, 1.0}, saddle_.get());
+    // [M Gᵀ; G 0]: the constraints' rows and columns alone, the constant M added.
+    system_.constraint_jacobian({q, nullptr, {}, t}, {0.0, 0.0, 0.0, 1.0, 1.0}, saddle_.get());
+    CATENA_PETSC(MatAXPY(saddle_.get(), 1.0, mass_, SAME_NONZERO_PATTERN));
     A = saddle_.get();
   }
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));

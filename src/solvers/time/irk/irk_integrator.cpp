@@ -178,6 +178,13 @@ struct IrkIntegrator::Impl {
     return c;
   }
 
+  // M + Gᵀ with G at p, where the constraints are not linear: the constraints' columns
+  // assembled alone, the constant M added.
+  void refresh_mass_coupling(const assembly::EvalPoint& p) {
+    system.constraint_jacobian(p, {0.0, 0.0, 0.0, 1.0, 0.0}, mass_coupling.get());
+    CATENA_PETSC(MatAXPY(mass_coupling.get(), 1.0, mass.get(), SAME_NONZERO_PATTERN));
+  }
+
   // The one K, C of the simplified Newton (and the round-off floor's tangent) at p.
   void evaluate_tangent(const assembly::EvalPoint& p) {
     if (p.q != tangent_q.get()) {
@@ -187,8 +194,7 @@ struct IrkIntegrator::Impl {
     tangent_t = p.t;
     system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, p.t}, K.get(), C.get());
     if (algebraic->active() && !system.constraints_linear())  // M + Gᵀ with G where K is
-      system.jacobian({tangent_q.get(), nullptr, {}, p.t}, {0.0, 0.0, 1.0, 1.0, 0.0},
-                      mass_coupling.get());
+      refresh_mass_coupling({tangent_q.get(), nullptr, {}, p.t});
     ++counters.jacobian_evaluations;
     ++tangent_serial;
     round_off.set_tangent(K.get());
@@ -225,8 +231,7 @@ struct IrkIntegrator::Impl {
       // Where G depends on q, the multiplier columns of every stage take G at the last
       // stage's state (a simplified part of the full Newton: it converges linearly there).
       if (algebraic->active() && !system.constraints_linear())
-        system.jacobian({U[s - 1].get(), nullptr, {}, state.time() + T.c(s - 1) * h},
-                        {0.0, 0.0, 1.0, 1.0, 0.0}, mass_coupling.get());
+        refresh_mass_coupling({U[s - 1].get(), nullptr, {}, state.time() + T.c(s - 1) * h});
       block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
     } else if (decoupled) {
       if (refresh) evaluate_iterate_tangent(xk);
