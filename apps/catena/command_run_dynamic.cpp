@@ -141,8 +141,13 @@ class OutputObserver : public solvers::TransientObserver {
       assembly::BodyPoses poses = view_.body_poses(q, v);
       bodies = {std::move(poses.orientation), std::move(poses.angular_velocity)};
     }
+    io::SliderSample sliders;
+    if (!system_.model().sliders.empty()) {
+      assembly::SliderTravel travel = view_.slider_travel(q, v);
+      sliders = {std::move(travel.position), std::move(travel.speed)};
+    }
     writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
-                          {reactions.force, reactions.moment}, bodies);
+                          {reactions.force, reactions.moment}, bodies, sliders);
   }
 
   void step(const solvers::StepRecord& r) override {
@@ -417,8 +422,12 @@ OutputError output_failure(const OutputError& failure, bool failed_closing,
 // q (the reference state on entry), with its summary line.
 void solve_initial_statics(assembly::SecondOrderSystem& system, Vec q, const CommandLine& cl,
                            int rank) {
-  const solvers::StaticReport report = solve_statics(system, q, cl);
+  const bool sliders = !system.model().sliders.empty();
+  const solvers::StaticReport report =
+      sliders ? solve_statics_holding_sliders(system, q, cl) : solve_statics(system, q, cl);
   if (rank != 0) return;
+  if (sliders)
+    std::printf("initial static equilibrium: each slider held at its start, released at t = 0\n");
   std::printf("initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
               report.n_load_steps, report.n_newton_iterations, report.residual_norm);
   if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())

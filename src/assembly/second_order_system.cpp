@@ -88,6 +88,9 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   for (size_t n = 0; n < model.nodes.size(); ++n)
     reference_block(model.nodes[n], model::kind_info(dofs_.node_kind(static_cast<int>(n))),
                     &node_reference_[kBlock * n]);
+  // A slider's arc length along its path (the fourth slot of its node, model::Slider).
+  for (const model::Slider& slider : model.sliders)
+    node_reference_[kBlock * static_cast<size_t>(slider.node) + 3] = slider.start;
 
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   std::vector<char> supported(model.nodes.size(), 0);

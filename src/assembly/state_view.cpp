@@ -312,4 +312,33 @@ BodyPoses StateView::body_poses(Vec q, Vec v) const {
   return out;
 }
 
+SliderTravel StateView::slider_travel(Vec q, Vec v) const {
+  const SecondOrderSystem& sys = system_;
+  const std::vector<model::Slider>& sliders = sys.model_->sliders;
+  SliderTravel out;
+  out.position.assign(sliders.size(), 0.0);
+  out.speed.assign(sliders.size(), 0.0);
+  if (sliders.empty()) return out;
+  const PetscScalar *qa = nullptr, *va = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &qa));
+  CATENA_PETSC(VecGetArrayRead(v, &va));
+  const PetscInt first = sys.dofs_.first_owned();
+  for (size_t k = 0; k < sliders.size(); ++k) {
+    const int node = sliders[k].node;
+    if (sys.dofs_.node_owner(node) != mpi_rank(sys.comm_)) continue;
+    // s may be fixed (a support holding the slider): then it keeps its start, at rest.
+    const PetscInt g = sys.dofs_.global_dof(node, 3);
+    out.position[k] = g >= 0 ? qa[g - first] : sliders[k].start;
+    out.speed[k] = g >= 0 ? va[g - first] : 0.0;
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &qa));
+  CATENA_PETSC(VecRestoreArrayRead(v, &va));
+  // Each slider's values are nonzero on its owner only: a sum gathers them.
+  MPI_Allreduce(MPI_IN_PLACE, out.position.data(), static_cast<int>(out.position.size()),
+                MPI_DOUBLE, MPI_SUM, sys.comm_);
+  MPI_Allreduce(MPI_IN_PLACE, out.speed.data(), static_cast<int>(out.speed.size()), MPI_DOUBLE,
+                MPI_SUM, sys.comm_);
+  return out;
+}
+
 }  // namespace catena::assembly

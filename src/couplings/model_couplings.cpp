@@ -7,6 +7,7 @@
 #include "catena/couplings/moving_load.hpp"
 #include "catena/couplings/node_constraint.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
+#include "catena/couplings/slider_constraint.hpp"
 
 namespace catena::couplings {
 
@@ -44,6 +45,8 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
       list.push_back(std::make_unique<BodyFrameConstraint>(model, c));
     else if (constraint.type == model::ConstraintType::joint)
       list.push_back(std::make_unique<JointConstraint>(model, c));
+    else if (constraint.type == model::ConstraintType::slider)
+      list.push_back(std::make_unique<SliderConstraint>(model, c));
     else
       list.push_back(std::make_unique<NodeConstraint>(model, c));
   }

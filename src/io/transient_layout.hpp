@@ -95,6 +95,17 @@ inline constexpr Dataset body_nodes{"/mesh/body_nodes", nullptr};
 inline constexpr const char* bodies_group = "/bodies";
 inline constexpr const char* body_index_attribute = "index";
 
+// (n_samples, n_sliders) float64: each slider's arc length s along its path (m) and its rate
+// ṡ (m/s). Rows: /mesh/slider_nodes. Only with sliders.
+inline constexpr Dataset slider_position{"/samples/slider_position", "m"};
+inline constexpr Dataset slider_speed{"/samples/slider_speed", "m/s"};
+// (n_sliders,) int64: node index of each slider (its point is that node's row of
+// /samples/positions). Only with sliders.
+inline constexpr Dataset slider_nodes{"/mesh/slider_nodes", nullptr};
+// ---- Sliders: a group /sliders/<name> each, attribute `index` (its row in the slider
+// datasets). ----
+inline constexpr const char* sliders_group = "/sliders";
+
 // ---- Pantographs: a group /pantographs/<name> each (the scene's name). ----
 inline constexpr const char* pantographs_group = "/pantographs";
 namespace pantograph_attribute {

@@ -189,8 +189,10 @@ struct TransientWriter::Impl {
   hsize_t n_contacts = 0;
   hsize_t n_registration = 0;
   hsize_t n_bodies = 0;
+  hsize_t n_sliders = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
   Series body_orientation, body_angular_velocity;
+  Series slider_position, slider_speed;
   Series reaction_force, reaction_moment;
   Series contact_force, contact_position, step_contact_force, step_registration_height;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
@@ -206,6 +208,7 @@ struct TransientWriter::Impl {
     std::vector<double> time, positions, velocities, slopes, axial, constraint_forces;
     std::vector<double> reaction_force, reaction_moment, contact_force, contact_position;
     std::vector<double> body_orientation, body_angular_velocity;
+    std::vector<double> slider_position, slider_speed;
   } pending;
   void write_pending_samples();
   bool failed = false;  // a write failed (on every rank alike): the file is only closed
@@ -230,7 +233,8 @@ struct TransientWriter::Impl {
         has_supports(!supported.empty()),
         n_contacts(static_cast<hsize_t>(m.contacts.size())),
         n_registration(static_cast<hsize_t>(m.registration_nodes.size())),
-        n_bodies(static_cast<hsize_t>(m.rigid_bodies.size())) {
+        n_bodies(static_cast<hsize_t>(m.rigid_bodies.size())),
+        n_sliders(static_cast<hsize_t>(m.sliders.size())) {
     MPI_Comm_rank(c, &rank);
   }
 
@@ -314,6 +318,11 @@ struct TransientWriter::Impl {
       body_orientation = series(layout::body_orientation, {n_bodies, 4}, real, samples);
       body_angular_velocity = series(layout::body_angular_velocity, {n_bodies, 3}, real, samples);
     }
+    if (n_sliders > 0) {
+      require_on_resume(layout::slider_position, "the sliders' travel");
+      slider_position = series(layout::slider_position, {n_sliders}, real, samples);
+      slider_speed = series(layout::slider_speed, {n_sliders}, real, samples);
+    }
     time = series(layout::time, {}, real, samples);
     positions = series(layout::positions, {n_nodes, 3}, real, samples);
     velocities = series(layout::velocities, {n_nodes, 3}, real, samples);
@@ -327,11 +336,27 @@ struct TransientWriter::Impl {
   }
 
   std::vector<Series*> all_series() {
-    return {&time,          &positions,         &velocities,           &slopes,
-            &axial,         &constraint_forces, &reaction_force,       &reaction_moment,
-            &contact_force, &contact_position,  &step_contact_force,   &step_registration_height,
-            &step_time,     &step_dt,           &step_iterations,      &step_error,
-            &step_rejected, &body_orientation,  &body_angular_velocity};
+    return {&time,
+            &positions,
+            &velocities,
+            &slopes,
+            &axial,
+            &constraint_forces,
+            &reaction_force,
+            &reaction_moment,
+            &contact_force,
+            &contact_position,
+            &step_contact_force,
+            &step_registration_height,
+            &step_time,
+            &step_dt,
+            &step_iterations,
+            &step_error,
+            &step_rejected,
+            &body_orientation,
+            &body_angular_velocity,
+            &slider_position,
+            &slider_speed};
   }
 
   // Collective. Closes every dataset, then the file.
@@ -439,6 +464,22 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
       });
     }
   }
+  if (s.n_sliders > 0) {
+    const auto n_sliders = static_cast<std::int64_t>(s.n_sliders);
+    std::vector<std::int64_t> nodes;
+    if (s.rank == 0)
+      for (const model::Slider& slider : model.sliders) nodes.push_back(slider.node);
+    write_mesh(layout::slider_nodes, n_sliders, 1, RowBlock{0, s.rank == 0 ? n_sliders : 0}, nodes);
+    create_group(s.file, layout::sliders_group);
+    for (size_t i = 0; i < model.sliders.size(); ++i) {
+      const std::string name = std::string(layout::sliders_group) + "/" + model.sliders[i].name;
+      const GroupHandle group = create_group(s.file, name.c_str());
+      run_output_phase(s.comm, [&] {
+        write_int64_attribute({group.get(), p}, layout::body_index_attribute,
+                              static_cast<std::int64_t>(i));
+      });
+    }
+  }
   {
     const auto n_reg = static_cast<std::int64_t>(model.registration_nodes.size());
     std::vector<std::int64_t> reg;
@@ -503,7 +544,7 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
                                     const std::vector<double>& axial_force,
                                     const std::vector<double>& constraint_forces,
                                     const ContactSample& contacts, const SupportSample& supports,
-                                    const BodySample& bodies) {
+                                    const BodySample& bodies, const SliderSample& sliders) {
   Impl& s = *impl_;
   Impl::PendingSamples& b = s.pending;
   const auto add = [](std::vector<double>& to, const std::vector<double>& rows) {
@@ -531,6 +572,11 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
       CATENA_ASSERT(bodies.orientation.size() == 4 * s.n_bodies, "one quaternion per body");
       add(b.body_orientation, bodies.orientation);
       add(b.body_angular_velocity, bodies.angular_velocity);
+    }
+    if (s.n_sliders > 0 && s.rank == 0) {
+      CATENA_ASSERT(sliders.position.size() == s.n_sliders, "one arc length per slider");
+      add(b.slider_position, sliders.position);
+      add(b.slider_speed, sliders.speed);
     }
   });
   ++b.n;
@@ -563,6 +609,11 @@ void TransientWriter::Impl::write_pending_samples() {
       const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_bodies) : 0};
       body_orientation.append(x, n, all, pending.body_orientation.data());
       body_angular_velocity.append(x, n, all, pending.body_angular_velocity.data());
+    }
+    if (n_sliders > 0) {
+      const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_sliders) : 0};
+      slider_position.append(x, n, all, pending.slider_position.data());
+      slider_speed.append(x, n, all, pending.slider_speed.data());
     }
   });
   pending = PendingSamples{};

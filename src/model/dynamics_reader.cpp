@@ -270,15 +270,25 @@ void check_step_within_duration(const Field& dt, const Field& duration, const Dy
 void read_dynamics(const Field& scene, Model& model) {
   const Field analysis = scene.child("analysis");
   const Field output = scene.child("output");
-  // A rigid body's rotations have no stiffness until its frame's multipliers carry load, so
-  // the static solve's first Newton matrix is singular: bodies start from the scene's state.
+  // A rigid body's rotations have no stiffness until its frame's multipliers carry load, nor
+  // has a slider's travel along a straight path: the static solve's first Newton matrix is
+  // singular. Bodies start from the scene's state; a dynamic run's static start holds each
+  // slider at its start (apps/catena/static_phase.hpp).
+  const bool bodies = !model.rigid_bodies.empty();
+  const bool sliders = !model.sliders.empty();
   const std::string no_statics =
       "a static equilibrium with rigid bodies is not available (their rotations have no "
       "stiffness until the constraints carry load, and the first Newton matrix is singular)";
-  if (!model.rigid_bodies.empty() && model.analysis != AnalysisType::dynamic)
+  const bool nonlinear_constraints = bodies || sliders;
+  if (bodies && model.analysis != AnalysisType::dynamic)
     analysis.child("type").fail(no_statics +
                                 "; run analysis.type: dynamic from the scene's configuration "
                                 "(initial: {from: reference})");
+  if (sliders && model.analysis != AnalysisType::dynamic)
+    analysis.child("type").fail(
+        "a static analysis with sliders is not available (a slider's travel along a straight "
+        "path has no stiffness, and the first Newton matrix is singular); run analysis.type: "
+        "dynamic, whose static start holds each slider at its start and releases it at t = 0");
   if (model.analysis != AnalysisType::dynamic) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);
@@ -296,7 +306,7 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
-  if (!model.rigid_bodies.empty() && model.dynamic_options.initial.from_static) {
+  if (bodies && model.dynamic_options.initial.from_static) {
     const Field from = analysis.child("initial").child("from");
     (from.present() ? from : analysis)
         .fail(no_statics +
@@ -304,7 +314,12 @@ void read_dynamics(const Field& scene, Model& model) {
               "reference");
   }
   read_structure(analysis, model);
-  read_integrator(scene.child("integrator"), model.constraints.size(), !model.rigid_bodies.empty(),
+  if (sliders && model.dynamic_options.structure != StructureModel::nonlinear)
+    analysis.child("structure")
+        .fail("a " + analysis.child("structure").text() +
+              " structure with sliders is not available (a slider runs on the nonlinear "
+              "structure's path); use structure: nonlinear");
+  read_integrator(scene.child("integrator"), model.constraints.size(), nonlinear_constraints,
                   model.dynamic_options.integrator);
   check_step_within_duration(scene.child("integrator").child("dt"), duration,
                              model.dynamic_options);

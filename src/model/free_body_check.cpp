@@ -46,6 +46,13 @@ void check_no_free_body(const SceneBuild& build) {
   for (const Constraint& c : model.constraints)
     if (c.node_b >= 0)
       parts.unite(static_cast<std::size_t>(c.node_a), static_cast<std::size_t>(c.node_b));
+  // A slider is held by its path (as a node of it).
+  for (const Slider& slider : model.sliders) {
+    const int element = model.paths[static_cast<std::size_t>(slider.path)].elements.front();
+    parts.unite(
+        static_cast<std::size_t>(slider.node),
+        static_cast<std::size_t>(model.elements[static_cast<std::size_t>(element)].nodes[0]));
+  }
 
   std::vector<bool> held(n, false);  // per part representative
   for (const Support& s : model.supports) held[parts.find(static_cast<std::size_t>(s.node))] = true;
@@ -54,7 +61,7 @@ void check_no_free_body(const SceneBuild& build) {
   // A rigid body's frame constraints hold its axes to each other, not the body to ground.
   for (const Constraint& c : model.constraints)
     if (c.node_b < 0 && c.type != ConstraintType::frame_lengths &&
-        c.type != ConstraintType::frame_angles)
+        c.type != ConstraintType::frame_angles && c.type != ConstraintType::slider)
       held[parts.find(static_cast<std::size_t>(c.node_a))] = true;
 
   // Report the part of the first unsupported node, listing its nodes in scene order.

@@ -203,18 +203,19 @@ std::optional<IntegratorRefusal> refuse_integrator(const IntegratorOptions& opti
   if (nonlinear_constraints && !type->nonlinear_constraint_refusal.empty())
     return IntegratorRefusal{"type",
                              "integrator type '" + std::string(scene_name(*type)) +
-                                 "' takes no rigid bodies (their frame constraints and joints are "
-                                 "nonlinear): " +
+                                 "' takes no rigid bodies or sliders (their frame constraints, "
+                                 "joints and slider constraints are nonlinear): " +
                                  std::string(type->nonlinear_constraint_refusal) +
                                  "; use radau, lobatto_iiic, hht, bdf or park"};
   // Measured on meshes/heavy_top.yaml (dt = 1 ms): the multipliers grew until Newton failed
   // at α = 0, −0.01 and −0.02 (after 0.32, 0.48 and 0.72 s); −0.05 to −0.2 ran the 2 s.
   if (nonlinear_constraints && type->takes_alpha && type->method == M::hht && options.alpha > -0.05)
     return IntegratorRefusal{
-        "alpha", "HHT with alpha = " + std::to_string(options.alpha) +
-                     " takes no rigid bodies: with their nonlinear constraints the multipliers "
-                     "grew without bound at alpha = 0, -0.01 and -0.02 (meshes/heavy_top.yaml); "
-                     "use alpha <= -0.05 (the default -0.1), or radau"};
+        "alpha",
+        "HHT with alpha = " + std::to_string(options.alpha) +
+            " takes no rigid bodies or sliders: with their nonlinear constraints the multipliers "
+            "grew without bound at alpha = 0, -0.01 and -0.02 (meshes/heavy_top.yaml); "
+            "use alpha <= -0.05 (the default -0.1), or radau"};
   if (options.error_estimate == "embedded" &&
       !has_embedded_estimate(*type, options.stages, constraints > 0)) {
     if (constraints > 0 && has_embedded_estimate(*type, options.stages, false))

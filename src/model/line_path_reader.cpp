@@ -97,4 +97,36 @@ std::vector<int> read_path(const Field& line, const LineTable& lines, const Mode
   return elements;
 }
 
+namespace {
+
+int find_path(const Field& where, const Model& m) {
+  const std::string name = where.text();
+  std::vector<std::string> names;
+  for (size_t i = 0; i < m.paths.size(); ++i) {
+    if (m.paths[i].name == name) return static_cast<int>(i);
+    names.push_back(m.paths[i].name);
+  }
+  where.fail("no path named '" + name + "';" + did_you_mean(name, names) +
+             (names.empty() ? " this scene has no paths (a `catenary` makes 'contact_wire')"
+                            : " known paths: " + joined(names)));
+}
+
+}  // namespace
+
+int read_path_or_line(const Field& entry, SceneBuild& build, const std::string& own_name,
+                      const char* what) {
+  const Field path = entry.child("path"), line = entry.child("line");
+  if (path.present() == line.present())
+    entry.fail(
+        "give exactly one of path (a path the catenary builder made, e.g. "
+        "contact_wire) and line (a line name or a list of them in travel order)");
+  Model& m = build.model;
+  if (path.present()) return find_path(path, m);
+  ElementPath own;
+  own.name = own_name;
+  own.elements = read_path(line, named_lines(build), m, what);
+  m.paths.push_back(own);
+  return static_cast<int>(m.paths.size()) - 1;
+}
+
 }  // namespace catena::model::detail

@@ -25,4 +25,10 @@ LineTable named_lines(const SceneBuild& build);
 std::vector<int> read_path(const Field& line, const LineTable& lines, const Model& model,
                            const char* what);
 
+// The path an entry runs along: `path` (a path the catenary builder made, by name) or
+// `line` (read_path; appended to build.model.paths as `own_name`), exactly one of them.
+// Returns its index in build.model.paths.
+int read_path_or_line(const Field& entry, SceneBuild& build, const std::string& own_name,
+                      const char* what);
+
 }  // namespace catena::model::detail

@@ -10,6 +10,7 @@
 
 #include "catena/model/element_kinds.hpp"
 #include "catena/model/node_kinds.hpp"
+#include "catena/model/path_stations.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
 
@@ -151,7 +152,7 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
   if (!model.constraints.empty()) {
-    int by_type[6] = {0, 0, 0, 0, 0, 0};
+    int by_type[7] = {0, 0, 0, 0, 0, 0, 0};
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
     const int frames = by_type[static_cast<int>(ConstraintType::frame_lengths)] +
                        by_type[static_cast<int>(ConstraintType::frame_angles)];
@@ -161,6 +162,7 @@ std::string describe(const Model& model, int n_ranks_running) {
               std::to_string(by_type[2]) +
               (frames > 0 ? ", rigid-body frames " + std::to_string(frames) : "") +
               (model.joints.empty() ? "" : ", joints " + std::to_string(model.joints.size())) +
+              (model.sliders.empty() ? "" : ", sliders " + std::to_string(model.sliders.size())) +
               "): " + std::to_string(total_multipliers(model)) + " Lagrange multipliers");
   }
   for (const RigidBody& b : model.rigid_bodies) {
@@ -189,6 +191,15 @@ std::string describe(const Model& model, int n_ranks_running) {
               model.rigid_bodies[static_cast<size_t>(j.body_a)].name + "' and " + other + " at " +
               format_vector(j.point) + " m" + (has_axis ? ", axis " + format_vector(j.axis) : "") +
               ": " + std::to_string(joint_equations(j)) + " multipliers");
+  }
+  for (const Slider& slider : model.sliders) {
+    const ElementPath& path = model.paths[static_cast<size_t>(slider.path)];
+    t.row("slider '" + slider.name + "'",
+          "node " + std::to_string(model.nodes[static_cast<size_t>(slider.node)].id) + " along '" +
+              path.name + "' (" + std::to_string(path.elements.size()) + " elements, " +
+              format_number(path_stations(model, path.elements).length()) + " m), from " +
+              format_number(slider.start) + " m, damping " + format_number(slider.damping) +
+              " N*s/m; unknowns x, y, z, s: 3 multipliers");
   }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");

@@ -55,6 +55,15 @@ std::vector<UnknownKind> node_kinds(const Model& model) {
                   "to the body through a constraint at another node");
     kinds[node] = UnknownKind::rigid_body;
   }
+  for (const Slider& slider : model.sliders) {
+    const int node = slider.node;
+    if (!kind_holding_both(kinds[node], UnknownKind::slider))
+      throw Error("node " + std::to_string(model.nodes[node].id) + " carries slider '" +
+                  slider.name + "' and is " + std::string(kind_info(kinds[node]).name) +
+                  "; a slider's node takes bars, springs, masses and spherical joints only: "
+                  "give the slider a node of its own");
+    kinds[node] = UnknownKind::slider;
+  }
   return kinds;
 }
 

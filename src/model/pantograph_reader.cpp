@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "did_you_mean.hpp"
 #include "line_path_reader.hpp"
 #include "speed_reader.hpp"
 
@@ -47,20 +46,6 @@ std::vector<Stage> read_stages(const Field& list) {
             "the last stage is joined to the ground by this stiffness; it must be > 0, else "
             "the pantograph is a free body");
   return stages;
-}
-
-int find_path(const Field& where, const Model& m) {
-  const std::string name = where.text();
-  std::vector<std::string> names;
-  for (size_t i = 0; i < m.paths.size(); ++i) {
-    if (m.paths[i].name == name) return static_cast<int>(i);
-    names.push_back(m.paths[i].name);
-  }
-  std::string known;
-  for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
-  where.fail("no path named '" + name + "';" + did_you_mean(name, names) +
-             (names.empty() ? " this scene has no paths (a `catenary` makes 'contact_wire')"
-                            : " known paths: " + known));
 }
 
 // Reference position of the path at arc length s (linear between the element's end nodes).
@@ -105,20 +90,7 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
     c.name = entry.child("name").text();
     if (!names.insert(c.name).second)
       entry.child("name").fail("pantograph name '" + c.name + "' is used twice");
-    const Field path = entry.child("path"), line = entry.child("line");
-    if (path.present() == line.present())
-      entry.fail(
-          "give exactly one of path (a path the catenary builder made, e.g. "
-          "contact_wire) and line (a line name or a list of them in travel order)");
-    if (path.present()) {
-      c.path = find_path(path, m);
-    } else {
-      ElementPath own;
-      own.name = "pantograph " + c.name;
-      own.elements = read_path(line, named_lines(build), m, "pantographs");
-      m.paths.push_back(own);
-      c.path = static_cast<int>(m.paths.size()) - 1;
-    }
+    c.path = read_path_or_line(entry, build, "pantograph " + c.name, "pantographs");
     c.speed = read_path_velocity(entry);
     double path_length = 0.0;
     path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, path_length);

@@ -24,19 +24,23 @@ PathStations path_stations(const Model& model, const std::vector<int>& elements)
   return p;
 }
 
+bool element_reversed(const Model& model, const std::vector<int>& elements, std::size_t i) {
+  const std::vector<int>& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
+  const auto shares = [&](std::size_t j, int node) {
+    const std::vector<int>& other = model.elements[static_cast<std::size_t>(elements[j])].nodes;
+    return node == other.front() || node == other.back();
+  };
+  return (i > 0 && shares(i - 1, nodes.back())) ||
+         (i == 0 && elements.size() > 1 && shares(1, nodes.front()));
+}
+
 Vec3 path_point(const Model& model, const std::vector<int>& elements, const PathStations& stations,
                 double s) {
   s = std::clamp(s, 0.0, stations.length());
   const std::size_t i = stations.element_at(s);
   const std::vector<int>& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
   int from = nodes.front(), to = nodes.back();
-  // Walk from the node shared with the previous element (the first: not shared with the next).
-  const auto shares = [&](std::size_t j, int node) {
-    const std::vector<int>& other = model.elements[static_cast<std::size_t>(elements[j])].nodes;
-    return node == other.front() || node == other.back();
-  };
-  if ((i > 0 && shares(i - 1, to)) || (i == 0 && elements.size() > 1 && shares(1, from)))
-    std::swap(from, to);
+  if (element_reversed(model, elements, i)) std::swap(from, to);
   const double length = stations.element_length(i);
   const double xi = length > 0.0 ? (s - stations.start[i]) / length : 0.0;
   const Vec3& a = model.nodes[static_cast<std::size_t>(from)].position;

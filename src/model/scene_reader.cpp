@@ -31,6 +31,7 @@
 #include "pantograph_reader.hpp"
 #include "scene_build.hpp"
 #include "section_reader.hpp"
+#include "slider_reader.hpp"
 
 namespace catena::model {
 namespace {
@@ -39,10 +40,10 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",        "gravity",      "sections",         "nodes",      "lines",
-      "elements",    "supports",     "elastic_supports", "loads",      "masses",
-      "constraints", "moving_loads", "bodies",           "joints",     "analysis",
-      "integrator",  "output",       "catenary",         "pantographs"};
+      "name",        "gravity",      "sections",         "nodes",    "lines",
+      "elements",    "supports",     "elastic_supports", "loads",    "masses",
+      "constraints", "moving_loads", "bodies",           "sliders",  "joints",
+      "analysis",    "integrator",   "output",           "catenary", "pantographs"};
   return keys;
 }
 
@@ -96,10 +97,12 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::check_element_lengths(build);
   detail::assign_nodal_frames(build);
   detail::read_bodies(scene.child("bodies"), build);
+  detail::read_sliders(scene.child("sliders"), build);
   detail::read_supports(scene.child("supports"), node_kinds(model), build);
   detail::read_elastic_supports(scene.child("elastic_supports"), build);
   detail::read_constraints(scene.child("constraints"), build);
   detail::add_body_frame_constraints(scene.child("bodies"), build);
+  detail::add_slider_constraints(build);
   detail::read_joints(scene.child("joints"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);

@@ -11,7 +11,7 @@ struct Row {
   UnknownKindInfo info;
 };
 
-constexpr std::array<Row, 5> kTable{{
+constexpr std::array<Row, 6> kTable{{
     {UnknownKind::point,
      {"a point node",
       "point",
@@ -50,6 +50,16 @@ constexpr std::array<Row, 5> kTable{{
       {"x", "y", "z", "e1_x", "e1_y", "e1_z", "e2_x", "e2_y", "e2_z", "e3_x", "e3_y", "e3_z"},
       0,
       3,
+      UpdateRule::additive,
+      true}},
+    {UnknownKind::slider,
+     {"a slider node",
+      "slider",
+      "a slider runs there (its point and its arc length s along its path)",
+      4,
+      {"x", "y", "z", "s"},
+      0,
+      -1,
       UpdateRule::additive,
       true}},
     {UnknownKind::multiplier,

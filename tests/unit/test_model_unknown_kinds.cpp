@@ -56,7 +56,7 @@ TEST(UnknownKinds, EveryRowIsWellFormed) {
           << info.components[info.gradients];
     }
   }
-  EXPECT_EQ(all_unknown_kinds().size(), 5u);
+  EXPECT_EQ(all_unknown_kinds().size(), 6u);
 }
 
 TEST(UnknownKinds, ARigidBodyNodeHoldsAPointButNoCableOrBeam) {
@@ -66,6 +66,16 @@ TEST(UnknownKinds, ARigidBodyNodeHoldsAPointButNoCableOrBeam) {
   EXPECT_FALSE(kind_holding_both(UnknownKind::ancf_beam, UnknownKind::rigid_body).has_value());
   EXPECT_EQ(kind_info(UnknownKind::rigid_body).size, 12);
   EXPECT_EQ(kind_info(UnknownKind::rigid_body).gradients, 3);
+}
+
+TEST(UnknownKinds, ASliderNodeHoldsAPointButNoCableBeamOrBody) {
+  EXPECT_EQ(kind_holding_both(UnknownKind::point, UnknownKind::slider), UnknownKind::slider);
+  EXPECT_EQ(kind_holding_both(UnknownKind::slider, UnknownKind::point), UnknownKind::slider);
+  EXPECT_FALSE(kind_holding_both(UnknownKind::ancf_cable, UnknownKind::slider).has_value());
+  EXPECT_FALSE(kind_holding_both(UnknownKind::rigid_body, UnknownKind::slider).has_value());
+  EXPECT_EQ(kind_info(UnknownKind::slider).size, 4);
+  EXPECT_EQ(kind_info(UnknownKind::slider).components[3], "s");
+  EXPECT_EQ(kind_info(UnknownKind::slider).gradients, -1);
 }
 
 TEST(UnknownKinds, TheWidestNodeFillsACheckpointRow) {

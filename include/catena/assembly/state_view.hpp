@@ -39,6 +39,13 @@ struct BodyPoses {
   std::vector<double> angular_velocity;  // rad/s, 3 per body: ω = ½ Σ e_k × ė_k
 };
 
+// Every slider's arc length along its path and its rate (model::Slider order; identical on
+// every rank).
+struct SliderTravel {
+  std::vector<double> position;  // m
+  std::vector<double> speed;     // m/s
+};
+
 class StateView {
  public:
   explicit StateView(const SecondOrderSystem& system);
@@ -59,6 +66,8 @@ class StateView {
   Reactions reactions(const EvalPoint& p) const;
   // Collective. Every rigid body's orientation and angular velocity at (q, v).
   BodyPoses body_poses(Vec q, Vec v) const;
+  // Collective. Every slider's s and ṡ at (q, v).
+  SliderTravel slider_travel(Vec q, Vec v) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
   // to its node A, −λ (model::multiplier_width values per constraint, padded with 0; N for a
   // node constraint), from the multiplier slots of q.

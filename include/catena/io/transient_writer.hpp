@@ -13,6 +13,8 @@
 // /pantographs/<name> each (attributes index, speed), with rigid bodies /mesh/body_nodes,
 // /samples/body_orientation (n_samples × n_bodies × 4, quaternions) and
 // /samples/body_angular_velocity (× 3) and a group /bodies/<name> each (attribute index),
+// with sliders /samples/slider_position and /samples/slider_speed (n_samples × n_sliders)
+// and a group /sliders/<name> each (attribute index), /mesh/slider_nodes,
 // /mesh/registration_nodes and root
 // attributes evaluation_start/end, and root attributes (`format` = "catena-transient-1",
 // `scene_text`, run facts, `status`). Every name is defined once, in
@@ -71,6 +73,12 @@ struct BodySample {
   std::vector<double> angular_velocity;  // rad/s, 3 per body
 };
 
+// Every slider's travel at a sample (identical on every rank; assembly::SliderTravel).
+struct SliderSample {
+  std::vector<double> position;  // m along its path, 1 per slider
+  std::vector<double> speed;     // m/s, 1 per slider
+};
+
 // Where a restarted run continues an existing output file: the rows it had when the
 // checkpoint was taken (later rows, written before the run stopped, are cut off).
 struct ResumePoint {
@@ -109,7 +117,7 @@ class TransientWriter {
                      const std::vector<double>& axial_force,
                      const std::vector<double>& constraint_forces = {},
                      const ContactSample& contacts = {}, const SupportSample& supports = {},
-                     const BodySample& bodies = {});
+                     const BodySample& bodies = {}, const SliderSample& sliders = {});
   // Not collective (identical on every rank): buffered until flush().
   void append_step(const StepRecord& record);
   // Collective. Writes buffered rows and flushes the file.

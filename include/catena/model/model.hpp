@@ -77,7 +77,18 @@ struct ElasticSupport {
 //
 // A joint (`joints` in the scene, model::Joint) is one constraint of type `joint` whose
 // multipliers are its equations (3 to 6: couplings/joint_constraint.hpp).
-enum class ConstraintType { coincident, pinned, prescribed, frame_lengths, frame_angles, joint };
+//
+// A slider (`sliders` in the scene, model::Slider) is one constraint of type `slider` on its
+// node: g = r_A − r_path(s), s the node's fourth unknown (couplings/slider_constraint.hpp).
+enum class ConstraintType {
+  coincident,
+  pinned,
+  prescribed,
+  frame_lengths,
+  frame_angles,
+  joint,
+  slider
+};
 
 struct Constraint {
   ConstraintType type = ConstraintType::pinned;
@@ -87,6 +98,7 @@ struct Constraint {
   Vec3 amplitude = Vec3::Zero();  // m, prescribed only
   double frequency = 0.0;         // Hz, prescribed only
   int joint = -1;                 // joint only: index into Model::joints
+  int slider = -1;                // slider only: index into Model::sliders
   int equations = 3;              // its multipliers (a joint's: 3 to 6)
 };
 
@@ -252,6 +264,25 @@ struct InitialConditions {
   Vec3 velocity = Vec3::Zero();  // m/s, uniform initial velocity of every free position DOF
 };
 
+// A node that runs along a chain of cable or beam elements (`sliders` in the scene; MBDyn's
+// beam slider, HOTINT's sliding joint): its unknowns are its point r and its arc length s
+// along `path` (UnknownKind::slider), held together by one constraint (type `slider`)
+//   g = r − r_path(s) = 0,   r_path(s) = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x
+// on the path element holding s (arc length on the reference geometry, as a pantograph's).
+// The ANCF slopes are shared at the nodes, so r_path and its tangent are continuous across
+// element boundaries. The tangential part of the multipliers is the friction:
+//   (∂r_path/∂s)·λ = −damping·ṡ    (viscous; zero: frictionless)
+// The node carries no mass of its own along s; masses, springs and bars at it, or a body
+// joined to it (a spherical joint), carry the trolley.
+struct Slider {
+  std::string name;
+  int node = 0;          // its node (kind slider)
+  int path = 0;          // index into Model::paths
+  double start = 0.0;    // m: s in the reference configuration (where the node lies)
+  double damping = 0.0;  // N·s/m along the path
+  int constraint = -1;   // index of its constraint (type slider)
+};
+
 // A constant force moving at constant speed along a chain of cable/beam elements
 // (a pantograph's uplift as a dead load): at time t it acts at arc length
 // s(t) = start + speed·(t − start_time) along `elements` (in path order, measured on the
@@ -344,6 +375,7 @@ struct Model {
   std::vector<PointMass> point_masses;
   std::vector<RigidBody> rigid_bodies;
   std::vector<Joint> joints;
+  std::vector<Slider> sliders;
   std::vector<Constraint> constraints;
 
   std::vector<MovingLoad> moving_loads;

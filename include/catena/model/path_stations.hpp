@@ -35,6 +35,11 @@ PathStations path_stations(const Model& model, const std::vector<int>& elements)
 Vec3 path_point(const Model& model, const std::vector<int>& elements, const PathStations& stations,
                 double s);
 
+// Not collective. Whether path element i (index into `elements`) is walked from its last
+// node to its first: consecutive elements share a node, and each is walked from the node it
+// shares with the one before (the first: away from the node it shares with the next).
+bool element_reversed(const Model& model, const std::vector<int>& elements, std::size_t i);
+
 // Not collective. The path elements (indices into `elements`, ascending) a pantograph's
 // contact point can reach within the analysis: from its start to where its velocity takes
 // it by analysis.duration (its start alone in a static analysis), widened by one metre on

@@ -36,6 +36,9 @@ enum class UnknownKind : std::uint8_t {
   // [r, e1, e2, e3]: a rigid body's point and axes (natural coordinates, model::RigidBody);
   // bars, springs and masses at its node act on r
   rigid_body,
+  // [x, y, z, s]: a slider's point and its arc length s along the cable or beam path it runs
+  // on (model::Slider); bars, springs, masses and spherical joints at its node act on x, y, z
+  slider,
   // [λ1 … λn]: the Lagrange multipliers of one constraint, n = Constraint::equations (a
   // position constraint's three are along x, y, z); the row is as wide as the widest
   multiplier,

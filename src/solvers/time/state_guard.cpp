@@ -8,6 +8,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/model/path_stations.hpp"
 #include "catena/model/unknown_kinds.hpp"
 
 namespace catena::solvers {
@@ -55,6 +56,56 @@ StateGuard::StateGuard(const assembly::SecondOrderSystem& system, double t_end, 
           position ? position_bound_ : kReachFactor;
     }
   }
+  for (std::size_t k = 0; k < m.sliders.size(); ++k) {
+    const model::Slider& slider = m.sliders[k];
+    const PetscInt g = dofs.global_dof(slider.node, 3);
+    if (g < 0 || g < dofs.first_owned() || g >= dofs.first_owned() + dofs.n_owned()) continue;
+    const auto entry = static_cast<std::size_t>(g - dofs.first_owned());
+    bound_[entry] = 0.0;
+    const auto& path = m.paths[static_cast<std::size_t>(slider.path)].elements;
+    sliders_.push_back({entry, static_cast<int>(k), model::path_stations(m, path).length()});
+  }
+}
+
+void StateGuard::check_sliders(double t, Vec q) const {
+  if (system_.model().sliders.empty()) return;
+  const PetscScalar* x = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &x));
+  std::vector<double> slides;
+  for (const SliderEntry& e : sliders_) slides.push_back(x[e.entry]);
+  CATENA_PETSC(VecRestoreArrayRead(q, &x));
+  check_sliders(t, slides);
+}
+
+void StateGuard::check_sliders(double t, const std::vector<double>& slides) const {
+  // The first slider (in scene order) off its path, and where it is.
+  struct {
+    double s;
+    int slider;
+  } off{0.0, static_cast<int>(system_.model().sliders.size())};
+  for (std::size_t k = 0; k < sliders_.size(); ++k) {
+    const SliderEntry& e = sliders_[k];
+    const double s = slides[k];
+    const double slack = 1e-9 * std::max(1.0, e.length);
+    if ((s < -slack || s > e.length + slack) && e.slider < off.slider) off = {s, e.slider};
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &off.slider, 1, MPI_INT, MPI_MIN, system_.comm());
+  if (off.slider == static_cast<int>(system_.model().sliders.size())) return;
+  // The owner of that slider sends its arc length.
+  double s = 0.0;
+  for (std::size_t k = 0; k < sliders_.size(); ++k)
+    if (sliders_[k].slider == off.slider) s = slides[k];
+  MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_SUM, system_.comm());
+  const model::Slider& slider = system_.model().sliders[static_cast<std::size_t>(off.slider)];
+  const model::ElementPath& path = system_.model().paths[static_cast<std::size_t>(slider.path)];
+  std::ostringstream os;
+  os.precision(6);
+  os << "slider '" << slider.name << "' left its path '" << path.name << "' at t = " << t
+     << " s (s = " << s << " m; the path runs from 0 to "
+     << model::path_stations(system_.model(), path.elements).length()
+     << " m): a slider runs between its path's ends; hold it before an end (a spring or a "
+        "support at its node) or extend the path";
+  throw NumericalError(os.str());
 }
 
 std::string StateGuard::unstable_step() const {
@@ -88,6 +139,8 @@ void StateGuard::check(const std::string& who, double t, Vec q, Vec v) const {
     const double ratio = std::abs(x[i] - r[i]) / bound_[i];
     if (ratio > worst.ratio) worst = {ratio, static_cast<int>(g)};
   }
+  std::vector<double> slides;  // the owned sliders' arc lengths, as sliders_
+  for (const SliderEntry& e : sliders_) slides.push_back(x[e.entry]);
   CATENA_PETSC(VecRestoreArrayRead(reference_.get(), &r));
   CATENA_PETSC(VecRestoreArrayRead(v, &u));
   CATENA_PETSC(VecRestoreArrayRead(q, &x));
@@ -100,7 +153,10 @@ void StateGuard::check(const std::string& who, double t, Vec q, Vec v) const {
        << system_.describe_dof(static_cast<PetscInt>(not_finite)) << ")" << unstable_step();
     throw NumericalError(os.str());
   }
-  if (worst.ratio <= 1.0) return;
+  if (worst.ratio <= 1.0) {
+    check_sliders(t, slides);
+    return;
+  }
   const assembly::DofMap& dofs = system_.dof_map();
   const model::UnknownKindInfo& kind =
       model::kind_info(dofs.node_kind(dofs.node_of_global(worst.index)));

@@ -265,6 +265,7 @@ class Driver {
     report_.smallest_dt = report_.steps_accepted == 1 ? step : std::min(report_.smallest_dt, step);
     report_.largest_dt = std::max(report_.largest_dt, step);
     report_.t_reached = in_.time();
+    guard_.check_sliders(in_.time(), in_.q());
     observer_.step({in_.time(),
                     step,
                     a.newton_iterations,

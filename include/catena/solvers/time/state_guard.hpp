@@ -15,6 +15,9 @@
 // business of the accuracy checks (the contact-force resolution warning, the error
 // estimate), not of this guard.
 //
+// A slider that runs past either end of its path (model::Slider) has left it: a NumericalError that
+// names the slider and the time, whatever the step.
+//
 // Most integrators already fail a step whose residual is not finite (the step is then
 // cut); the guard also covers those that do not iterate (the modal model, the linearly
 // implicit step) and the states the dense output interpolates.
@@ -44,6 +47,11 @@ class StateGuard {
   // v at time t holds a value that is not finite or beyond the bounds above.
   void check(const std::string& who, double t, Vec q, Vec v) const;
 
+  // Collective (a no-op without sliders). Throws NumericalError if a slider at q has left its path:
+  // for every accepted step, so that a slider is stopped where it leaves, not a sample
+  // later.
+  void check_sliders(double t, Vec q) const;
+
   // Not collective. The end of every such message: which step failed, what to do (also
   // for the checks of step records outside the guard).
   std::string unstable_step() const;
@@ -53,8 +61,19 @@ class StateGuard {
   double dt_ = 0.0, size_ = 0.0, position_bound_ = 0.0;
   VecHandle reference_;
   // Per owned entry: the largest change from the reference allowed (0: not checked, the
-  // Lagrange multipliers, which are forces).
+  // Lagrange multipliers, which are forces, and sliders' arc lengths, checked below).
   std::vector<double> bound_;
+  // The owned sliders' arc lengths: entry (owned index), slider (index into model.sliders)
+  // and the path's length, m. A slider past either end of its path has left it.
+  struct SliderEntry {
+    std::size_t entry;
+    int slider;
+    double length;
+  };
+  std::vector<SliderEntry> sliders_;
+  // Collective. Throws NumericalError if a slider has left its path (`slides`: the arc lengths of
+  // sliders_, in its order).
+  void check_sliders(double t, const std::vector<double>& slides) const;
 };
 
 }  // namespace catena::solvers

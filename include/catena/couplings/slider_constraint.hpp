@@ -1,0 +1,66 @@
+#pragma once
+// A slider (model::Slider) as a constraint: its node's point r and its arc length s along a
+// path of cable or beam elements, held together by
+//   g(q) = r − r_path(s) = 0,   r_path(s) = Σ_b S_b(x(s)) q_b                 (3 equations)
+// over the DOFs [λ (3), r (3), s, then every path node's r and r_x (6 each, ascending)].
+// On the path element holding s, q_b are its blocks r_A, r_A,x, r_B, r_B,x and S_b the ANCF
+// Hermite functions (elements/hermite.hpp) at x = s − start (L − (s − start) on an element
+// walked backwards, model::element_reversed); σ = dx/ds = ±1. With t = ∂r_path/∂s = σ Σ S_b' q_b
+// and κ = ∂²r_path/∂s² = Σ S_b'' q_b:
+//   nodal rows (Gᵀλ):  r: λ     s: −t·λ + c ṡ     q_b: −S_b λ
+//   G:                 [I, −t, −S_b I]
+//   c_K block (∂(Gᵀλ)/∂q):  (s, s) −κ·λ,  (s, q_b) and (q_b, s) −σ S_b' λ
+//   c_C block:              (s, s) c                (c: the slider's damping)
+//   γ = 2 ṡ ṫ + ṡ² κ,  ṫ = σ Σ S_b' q̇_b      (G a = γ: the acceleration-level constraint)
+// The s row says the multipliers' tangential part is the friction force; with c = 0 the path
+// pushes on the node only across itself. The slopes are shared at the nodes, so r_path and t
+// are continuous as s crosses an element boundary (κ jumps). Beyond the path's ends the
+// path goes on along its end tangent (so that a Newton iterate may overshoot); a step that
+// ends there stops the run (solvers/time/state_guard.hpp: the slider left its path).
+//
+// The coupling acts on the whole path at every time (s is an unknown, not a function of
+// time), so its matrix holds a row of the path's DOFs: for a trolley on a span, not for a
+// pantograph on kilometres of line (which uses a moving contact).
+#include <vector>
+
+#include "catena/couplings/constraint_coupling.hpp"
+#include "catena/model/model.hpp"
+#include "catena/model/path_stations.hpp"
+
+namespace catena::couplings {
+
+class SliderConstraint final : public ConstraintCoupling {
+ public:
+  // `index`: into model.constraints, of type slider.
+  SliderConstraint(const model::Model& model, int index);
+
+  void pattern(std::vector<std::pair<int, int>>& entries) const override;
+  void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
+                Scratch& scratch) const override;
+  bool has_damping() const override { return damping_ != 0.0; }
+  bool linear() const override { return false; }
+  void acceleration_target(const CouplingState& s, std::span<double> out) const override;
+
+  // Positions in dofs() of the multipliers, r and s; then the path's nodes.
+  static constexpr int kLambda = 0, kPoint = 3, kSlide = 6, kPath = 7;
+  // The path's length, m (s ∈ [0, length] is on it).
+  double path_length() const { return stations_.length(); }
+
+ private:
+  // Where s lies: the path element, its σ, and the shape functions at x(s).
+  struct Place {
+    std::size_t element = 0;
+    double sigma = 1.0;
+    double S[4], dS[4], ddS[4];
+    int first[4];  // positions in dofs() of the blocks r_A, r_A,x, r_B, r_B,x
+  };
+  Place place(double s) const;
+
+  model::PathStations stations_;
+  std::vector<char> reversed_;              // per path element
+  std::vector<int> element_a_, element_b_;  // per path element: position of its first/last
+                                            // node's DOFs in dofs()
+  double damping_ = 0.0;
+};
+
+}  // namespace catena::couplings

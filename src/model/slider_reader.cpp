@@ -1,0 +1,120 @@
+#include "slider_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "catena/model/path_stations.hpp"
+#include "line_path_reader.hpp"
+#include "number_format.hpp"
+
+namespace catena::model::detail {
+namespace {
+
+// m: how far a slider's node may lie from its path (the constraint holds it there from the
+// first step: a gap would be a jump).
+constexpr double kOnPathTolerance = 1e-6;
+
+// The arc length of the path point nearest to x. A path is straight in the reference
+// configuration (cables and beams meeting at a node are collinear, model/nodal_frames), so
+// its ANCF curve there is its chords.
+double nearest_arc_length(const Model& model, const std::vector<int>& elements,
+                          const PathStations& stations, const Vec3& x) {
+  double best = 0.0, best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const double a = stations.start[i], b = stations.start[i + 1];
+    const Vec3 pa = path_point(model, elements, stations, a);
+    const Vec3 chord = path_point(model, elements, stations, b) - pa;
+    const double u = chord.squaredNorm() > 0.0
+                         ? std::clamp((x - pa).dot(chord) / chord.squaredNorm(), 0.0, 1.0)
+                         : 0.0;
+    const double distance = (pa + u * chord - x).norm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = a + u * (b - a);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void read_sliders(const Field& sliders, SceneBuild& build) {
+  static const std::vector<std::string> keys{"name", "node", "path", "line", "damping"};
+  Model& model = build.model;
+  for (const Field& entry : sliders.items()) {
+    entry.expect_map("a slider {node, path or line, damping}");
+    entry.check_keys(keys);
+    Slider slider;
+    const Field name = entry.child("name");
+    slider.name = name.text_or("slider " + std::to_string(model.sliders.size() + 1));
+    // The name is an HDF5 group's in the output (/sliders/<name>).
+    if (slider.name.find('/') != std::string::npos || slider.name == "." || slider.name == "..")
+      name.fail("a slider's name names its output group; got '" + slider.name +
+                "', expected a name without '/' (and not '.' or '..')");
+    for (const Slider& other : model.sliders)
+      if (other.name == slider.name)
+        name.fail("two sliders are named '" + slider.name + "'; expected distinct names");
+    const Field node_field = entry.child("node");
+    if (!node_field.present())
+      node_field.fail("missing required key; expected the id of the node that slides");
+    slider.node = build.resolve_node(node_field);
+    const Node& node = model.nodes[static_cast<size_t>(slider.node)];
+    const std::string id = std::to_string(node.id);
+    for (const Slider& other : model.sliders)
+      if (other.node == slider.node)
+        node_field.fail("node " + id + " already carries slider '" + other.name +
+                        "'; a node carries one slider");
+    for (const RigidBody& body : model.rigid_bodies)
+      if (body.node == slider.node)
+        node_field.fail("node " + id + " is rigid body '" + body.name +
+                        "''s point; give the slider a node of its own and join the body to it "
+                        "with a spherical joint");
+    if (node.tangent != Vec3::Zero())
+      node_field.fail("node " + id +
+                      " is a node of a cable or beam; a slider needs a node of its own (bars, "
+                      "springs, masses and spherical joints may attach to it)");
+    // Its own path (from `line`) is named after the line, as in `catena check`.
+    const Field line = entry.child("line");
+    slider.path = read_path_or_line(
+        entry, build, line.present() && line.is_scalar() ? line.text() : "slider " + slider.name,
+        "sliders");
+    const std::vector<int>& path = model.paths[static_cast<size_t>(slider.path)].elements;
+    for (int e : path)
+      for (int n : model.elements[static_cast<size_t>(e)].nodes)
+        if (n == slider.node)
+          node_field.fail("node " + id +
+                          " is a node of the slider's own path; a slider needs "
+                          "a node of its own, placed on the path");
+    const PathStations stations = path_stations(model, path);
+    slider.start = nearest_arc_length(model, path, stations, node.position);
+    const Vec3 nearest = path_point(model, path, stations, slider.start);
+    const double gap = (nearest - node.position).norm();
+    if (!(gap <= kOnPathTolerance))
+      node_field.fail("node " + id + " at " + format_vector(node.position) + " m is " +
+                      format_number(gap) + " m from its path (nearest point " +
+                      format_vector(nearest) + " m, " + format_number(slider.start) +
+                      " m along it); a slider's node must lie on the path within " +
+                      format_number(kOnPathTolerance) + " m: move it there");
+    slider.damping = entry.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+    model.sliders.push_back(slider);
+  }
+}
+
+void add_slider_constraints(SceneBuild& build) {
+  Model& model = build.model;
+  for (size_t k = 0; k < model.sliders.size(); ++k) {
+    Slider& slider = model.sliders[k];
+    Constraint c;
+    c.type = ConstraintType::slider;
+    c.node_a = slider.node;
+    c.slider = static_cast<int>(k);
+    c.equations = 3;
+    slider.constraint = static_cast<int>(model.constraints.size());
+    model.constraints.push_back(c);
+  }
+}
+
+}  // namespace catena::model::detail

@@ -1,0 +1,170 @@
+// The slider constraint (couplings/slider_constraint.hpp) on a path of cable elements bent
+// out of its straight reference: g vanishes where the node lies on the path, the whole
+// matrix (K with its s terms, C, Gᵀ, G) matches central differences wherever s lies
+// (inside an element, on either side of a boundary), the acceleration target γ equals
+// G a − d²g/dt² along a trajectory that crosses a boundary, and r_path and its tangent are
+// continuous across the boundary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "catena/couplings/slider_constraint.hpp"
+#include "catena/model/scene_reader.hpp"
+#include "fd_jacobian.hpp"
+
+namespace catena {
+namespace {
+
+using couplings::MatrixRequest;
+using couplings::SliderConstraint;
+
+// A 3-element cable path from (0,0,0) to (3,0,0) (nodes 1, 2 and interior 4, 5), slider
+// node 3 at x = 1.3, damping 2.5.
+model::Model scene() {
+  const std::string text =
+      "sections: {wire: {type: cable, EA: 1.0e7, EI: 100, mass_per_length: 1}}\n"
+      "nodes:\n"
+      "  - {id: 1, position: [0, 0, 0]}\n"
+      "  - {id: 2, position: [3, 0, 0]}\n"
+      "  - {id: 3, position: [1.3, 0, 0]}\n"
+      "lines: [{name: wire, from: 1, to: 2, elements: 3, section: wire}]\n"
+      "sliders: [{name: bead, node: 3, line: wire, damping: 2.5}]\n"
+      "masses: [{node: 3, mass: 1}]\n"
+      "supports: [{node: 1, fix: pinned}, {node: 2, fix: pinned}]\n"
+      "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n";
+  return model::parse_scene(text, "slider.yaml");
+}
+
+// [λ, r, s, path nodes' r and r_x]: reference values (s = `slide`), the path and the node
+// distorted, multipliers and rates made up.
+std::vector<double> state(const model::Model& m, const SliderConstraint& slider, double slide,
+                          double distortion) {
+  std::vector<double> q;
+  int k = 0;
+  for (const couplings::DofKey& key : slider.dofs()) {
+    double value = 0.3 * std::sin(1.0 + k);  // multipliers
+    if (key.kind == couplings::DofKey::Kind::node) {
+      const model::Node& node = m.nodes[static_cast<size_t>(key.index)];
+      if (key.component == 3 && key.index == m.sliders[0].node)
+        value = slide;
+      else
+        value = (key.component < 3 ? node.position : node.tangent)[key.component % 3] +
+                distortion * std::cos(2.0 + 1.7 * k);
+    }
+    q.push_back(value);
+    ++k;
+  }
+  return q;
+}
+
+TEST(SliderConstraint, VanishesOnThePathAndMatchesFiniteDifferences) {
+  const model::Model m = scene();
+  ASSERT_EQ(m.sliders.size(), 1u);
+  EXPECT_NEAR(m.sliders[0].start, 1.3, 1e-12);
+  const SliderConstraint slider(m, m.sliders[0].constraint);
+  const auto n = static_cast<int>(slider.dofs().size());
+  EXPECT_EQ(n, 7 + 4 * 6);
+  couplings::Scratch scratch;
+  std::vector<double> f(static_cast<size_t>(n));
+  slider.evaluate({state(m, slider, 1.3, 0.0), {}, {}, 0.0}, f.data(), {}, scratch);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(f[k], 0.0, 1e-14) << k;
+
+  // Inside the first element, inside the second, and just either side of their boundary.
+  for (const double slide : {0.4, 1.3, 1.0 - 1e-3, 1.0 + 1e-3}) {
+    SCOPED_TRACE("s = " + std::to_string(slide));
+    const std::vector<double> q = state(m, slider, slide, 0.05);
+    std::vector<double> v(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = 0.2 * std::cos(0.3 + k);
+    auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
+      out.assign(static_cast<size_t>(n), 0.0);
+      slider.evaluate({x, v, {}, 0.0}, out.data(), {}, scratch);
+    };
+    const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
+    std::vector<double> J(static_cast<size_t>(n * n));
+    const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
+    slider.evaluate({q, v, {}, 0.0}, nullptr, request, scratch);
+    EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
+    // ∂f/∂v: the damping on s alone.
+    auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
+      out.assign(static_cast<size_t>(n), 0.0);
+      slider.evaluate({q, u, {}, 0.0}, out.data(), {}, scratch);
+    };
+    const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n);
+    std::vector<double> C(static_cast<size_t>(n * n));
+    const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
+    slider.evaluate({q, v, {}, 0.0}, nullptr, only_c, scratch);
+    EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-8);
+    EXPECT_DOUBLE_EQ(C[static_cast<size_t>(SliderConstraint::kSlide * (n + 1))], 2.5);
+  }
+}
+
+TEST(SliderConstraint, AccelerationTargetAlongATrajectoryAcrossABoundary) {
+  const model::Model m = scene();
+  const SliderConstraint slider(m, m.sliders[0].constraint);
+  const auto n = static_cast<int>(slider.dofs().size());
+  couplings::Scratch scratch;
+  const std::vector<double> q0 = state(m, slider, 0.0, 0.05);
+  // s(t) = 0.97 + 0.2 t crosses the boundary at 1 m at t = 0.15; the rest moves as sines.
+  auto q_at = [&](double t) {
+    std::vector<double> x = q0;
+    for (int k = 3; k < n; ++k) x[static_cast<size_t>(k)] += 0.03 * std::sin((1.0 + 0.37 * k) * t);
+    x[SliderConstraint::kSlide] = 0.97 + 0.2 * t + 0.05 * t * t;
+    return x;
+  };
+  const double h = 1e-4;
+  for (const double t : {0.05, 0.3}) {  // before and after the crossing
+    std::vector<double> v(static_cast<size_t>(n), 0.0), a(static_cast<size_t>(n), 0.0);
+    for (int k = 3; k < n; ++k) {
+      v[k] = (q_at(t + h)[k] - q_at(t - h)[k]) / (2 * h);
+      a[k] = (q_at(t + h)[k] - 2 * q_at(t)[k] + q_at(t - h)[k]) / (h * h);
+    }
+    auto g = [&](double s) {
+      std::vector<double> out(static_cast<size_t>(n));
+      slider.evaluate({q_at(s), {}, {}, s}, out.data(), {}, scratch);
+      return out;
+    };
+    std::vector<double> G(static_cast<size_t>(n * n));
+    const MatrixRequest only_g[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
+    slider.evaluate({q_at(t), {}, {}, t}, nullptr, only_g, scratch);
+    std::vector<double> target(3), velocity(3);
+    slider.acceleration_target({q_at(t), v, {}, t}, target);
+    slider.velocity_target({q_at(t), v, {}, t}, velocity);
+    const std::vector<double> gp = g(t + h), g0 = g(t), gm = g(t - h);
+    for (int k = 0; k < 3; ++k) {
+      double Ga = 0.0;
+      for (int col = 3; col < n; ++col) Ga += G[k * n + col] * a[col];
+      EXPECT_NEAR(target[k], Ga - (gp[k] - 2 * g0[k] + gm[k]) / (h * h), 2e-5) << k;
+      EXPECT_EQ(velocity[k], 0.0);
+    }
+  }
+}
+
+TEST(SliderConstraint, PathPointAndTangentAreContinuousAcrossAnElementBoundary) {
+  const model::Model m = scene();
+  const SliderConstraint slider(m, m.sliders[0].constraint);
+  const auto n = static_cast<int>(slider.dofs().size());
+  couplings::Scratch scratch;
+  // g = r − r_path(s) with r fixed: its jump across s = 1 is r_path's, its s-derivative
+  // (the G column of s) is −t.
+  auto at = [&](double slide, std::vector<double>& g, std::vector<double>& G) {
+    const std::vector<double> q = state(m, slider, slide, 0.05);
+    g.assign(static_cast<size_t>(n), 0.0);
+    G.assign(static_cast<size_t>(n * n), 0.0);
+    const MatrixRequest only_g[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
+    slider.evaluate({q, {}, {}, 0.0}, g.data(), only_g, scratch);
+  };
+  std::vector<double> g_below, G_below, g_above, G_above;
+  const double e = 1e-9;
+  at(1.0 - e, g_below, G_below);
+  at(1.0 + e, g_above, G_above);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(g_below[k], g_above[k], 1e-8) << k;
+    const size_t column = static_cast<size_t>(k * n + SliderConstraint::kSlide);
+    EXPECT_NEAR(G_below[column], G_above[column], 1e-7) << k;
+  }
+}
+
+}  // namespace
+}  // namespace catena
