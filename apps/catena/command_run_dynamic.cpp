@@ -558,8 +558,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         change > 1e-9 * speed + 1e-12 && rank == 0)
       std::printf(
           "initial velocity: projected onto the constraints (largest change %g of %g): the "
-          "scene's velocities moved joined parts apart; they start with the least change in "
-          "kinetic energy that lets them move together (docs/scene.md, 'bodies')\n",
+          "scene's velocities broke them (joined parts moving apart, or a bilateral contact's "
+          "head not following the wire's slope); they start with the least change in kinetic "
+          "energy that keeps them (docs/scene.md, 'bodies')\n",
           change, speed);
     integrator->set_state(0.0, q.get(), v.get(), nullptr);
   }

@@ -9,8 +9,10 @@
 #include "catena/assembly/state_view.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
+#include "catena/couplings/bilateral_contact.hpp"
 #include "catena/couplings/element_coupling.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
+#include "catena/couplings/slider_constraint.hpp"
 #include "catena/model/supported_nodes.hpp"
 #include "local_array.hpp"
 #include "visit_forces.hpp"
@@ -30,6 +32,8 @@ StateView::StateView(const SecondOrderSystem& system) : system_(system) {
   for (size_t i = 0; i < system.couplings_.size(); ++i)
     if (dynamic_cast<const couplings::PantographContact*>(system.couplings_[i].get()))
       contact_couplings_.push_back(i);
+    else if (dynamic_cast<const couplings::BilateralContact*>(system.couplings_[i].get()))
+      bilateral_couplings_.push_back(i);
 }
 
 void StateView::section_results(const EvalPoint& p, std::vector<int>& element_indices,
@@ -114,22 +118,26 @@ Reactions StateView::reactions(const EvalPoint& p) const {
 
   // Partial sums of the support force on each nodal DOF, completed by an allreduce. The
   // element couplings carry it: R = f_int − f_ext at a fixed DOF, and an elastic support
-  // pulls its node back.
+  // pulls its node back. So does a slider's constraint, the one constraint that acts on
+  // fixed DOFs (the supported nodes of its path): the wheel load a trolley next to a mast
+  // puts on it.
   std::vector<double> partial(kBlock * supported.size(), 0.0), total(partial.size(), 0.0);
   sys.visit_forces(
       p,
       [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
-        const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
-        if (!e) return;
-        const std::vector<couplings::DofKey>& keys = e->dofs();
+        const couplings::Coupling* c = sys.couplings_[i].get();
+        const auto* e = dynamic_cast<const ElementCoupling*>(c);
+        if (!e && !dynamic_cast<const couplings::SliderConstraint*>(c)) return;
+        const std::vector<couplings::DofKey>& keys = c->dofs();  // both act on all of them
         for (size_t k = 0; k < f_el.size(); ++k) {
+          if (keys[k].kind == couplings::DofKey::Kind::multiplier) continue;
           const int node = keys[k].index, comp = keys[k].component;
           const std::ptrdiff_t row = slot(node);
           if (row < 0) continue;
           double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];
           // A linked slope's force is a reaction too: its part along the tangent, the
           // stretch's equation, sums to zero over the node's couplings.
-          if (e->origin() == ElementOrigin::elastic_support)
+          if (e && e->origin() == ElementOrigin::elastic_support)
             entry -= f_el[k];
           else if (dofs.global[k] < 0 || sys.dofs_.linked(node, comp))
             entry += f_el[k];
@@ -190,6 +198,17 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
       local[4 * k + 1] = c->position(p.t);
       local[4 * k + 2] = delta;
       local[4 * k + 3] = on ? 1.0 : 0.0;
+    }
+    // A bilateral contact's force is its multiplier (the first of its DOFs); the head is on
+    // the wire (penetration 0, to the Newton tolerance).
+    for (const size_t i : bilateral_couplings_) {
+      const auto* c = static_cast<const couplings::BilateralContact*>(sys.couplings_[i].get());
+      const auto k = static_cast<size_t>(c->contact());
+      const couplings::CouplingState state = sys.gather(
+          sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr, p.path, p.t, sys.work_);
+      local[4 * k] = state.q[0];
+      local[4 * k + 1] = c->position(p.t);
+      local[4 * k + 3] = 1.0;
     }
   }
   MPI_Allreduce(local.data(), global.data(), static_cast<int>(global.size()), MPI_DOUBLE, MPI_SUM,

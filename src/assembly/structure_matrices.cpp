@@ -3,6 +3,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
+#include "catena/couplings/bilateral_contact.hpp"
 #include "catena/couplings/moving_load.hpp"
 #include "catena/couplings/pantograph_contact.hpp"
 
@@ -14,6 +15,7 @@ SecondOrderSystem::StructureMatrices SecondOrderSystem::structure_matrices(Vec q
   for (size_t i = 0; i < couplings_.size(); ++i) {
     const couplings::Coupling* c = couplings_[i].get();
     if (dynamic_cast<const couplings::PantographContact*>(c) == nullptr &&
+        dynamic_cast<const couplings::BilateralContact*>(c) == nullptr &&
         dynamic_cast<const couplings::MovingLoad*>(c) == nullptr)
       structure.push_back(i);
   }

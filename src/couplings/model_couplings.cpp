@@ -1,5 +1,6 @@
 #include "catena/couplings/model_couplings.hpp"
 
+#include "catena/couplings/bilateral_contact.hpp"
 #include "catena/couplings/body_frame_constraint.hpp"
 #include "catena/couplings/element_factory.hpp"
 #include "catena/couplings/joint_constraint.hpp"
@@ -47,6 +48,8 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
       list.push_back(std::make_unique<JointConstraint>(model, c));
     else if (constraint.type == model::ConstraintType::slider)
       list.push_back(std::make_unique<SliderConstraint>(model, c));
+    else if (constraint.type == model::ConstraintType::contact)
+      list.push_back(std::make_unique<BilateralContact>(model, c));
     else
       list.push_back(std::make_unique<NodeConstraint>(model, c));
   }
@@ -56,9 +59,11 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
     if (joint.has_spring() && node_owner[static_cast<size_t>(node)] == rank)
       list.push_back(std::make_unique<JointSpring>(model, j));
   }
-  for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c)
-    if (node_owner[static_cast<size_t>(model.contacts[static_cast<size_t>(c)].head_node)] == rank)
+  for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c) {
+    const model::MovingContact& contact = model.contacts[static_cast<size_t>(c)];
+    if (!contact.bilateral && node_owner[static_cast<size_t>(contact.head_node)] == rank)
       list.push_back(std::make_unique<PantographContact>(model, c));
+  }
   return list;
 }
 

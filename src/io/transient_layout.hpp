@@ -102,9 +102,10 @@ inline constexpr Dataset slider_speed{"/samples/slider_speed", "m/s"};
 // (n_sliders,) int64: node index of each slider (its point is that node's row of
 // /samples/positions). Only with sliders.
 inline constexpr Dataset slider_nodes{"/mesh/slider_nodes", nullptr};
-// ---- Sliders: a group /sliders/<name> each, attribute `index` (its row in the slider
-// datasets). ----
+// ---- Sliders: a group /sliders/<name> each, attributes `index` (its row in the slider
+// datasets) and `constraint` (its row of /samples/constraint_forces). ----
 inline constexpr const char* sliders_group = "/sliders";
+inline constexpr const char* slider_constraint_attribute = "constraint";
 
 // ---- Pantographs: a group /pantographs/<name> each (the scene's name). ----
 inline constexpr const char* pantographs_group = "/pantographs";

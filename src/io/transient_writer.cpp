@@ -477,6 +477,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
       run_output_phase(s.comm, [&] {
         write_int64_attribute({group.get(), p}, layout::body_index_attribute,
                               static_cast<std::int64_t>(i));
+        write_int64_attribute({group.get(), p}, layout::slider_constraint_attribute,
+                              static_cast<std::int64_t>(model.sliders[i].constraint));
       });
     }
   }

@@ -183,6 +183,16 @@ void read_displacement(const Field& item, const Model& model,
     line.fail("no line named '" + name + "';" + did_you_mean(name, names) +
               " lines: " + (list.empty() ? "(none)" : list));
   }
+  // A slider's node is not on its path's lines: displacing the path alone would start the
+  // slider off it (the constraint then pulls it back in the first step, an impulse).
+  for (const Slider& slider : model.sliders)
+    for (int e : model.paths[static_cast<size_t>(slider.path)].elements)
+      for (int node : model.elements[static_cast<size_t>(e)].nodes)
+        if (std::find(nodes.begin(), nodes.end(), node) != nodes.end())
+          line.fail("line '" + name + "' carries slider '" + slider.name +
+                    "'; an initial displacement would move it from under the slider, whose "
+                    "node it does not move: start the line at its static equilibrium or "
+                    "reference instead");
   const Field shape = item.child("shape");
   const std::string shape_name = shape.text_or("sine");
   if (shape_name != "sine") shape.fail("unknown shape '" + shape_name + "'; accepted: sine");

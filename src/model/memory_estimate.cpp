@@ -67,6 +67,11 @@ ProblemSize problem_size(const Model& model) {
     if (!reach.empty)
       size.matrix_nonzeros += 2 * 3 * 6 * static_cast<std::int64_t>(reach.last - reach.first + 2);
   }
+  // A slider's multipliers and s are coupled to every node of its path (r, r_x: 6 each).
+  for (const Slider& slider : model.sliders) {
+    const std::vector<int>& path = model.paths[static_cast<std::size_t>(slider.path)].elements;
+    size.matrix_nonzeros += 2 * 4 * 6 * static_cast<std::int64_t>(path.size() + 1);
+  }
   size.factor_multiple = integrator_factor_multiple(model);
   return size;
 }

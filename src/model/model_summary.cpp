@@ -152,7 +152,7 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
   if (!model.constraints.empty()) {
-    int by_type[7] = {0, 0, 0, 0, 0, 0, 0};
+    int by_type[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];
     const int frames = by_type[static_cast<int>(ConstraintType::frame_lengths)] +
                        by_type[static_cast<int>(ConstraintType::frame_angles)];
@@ -163,6 +163,7 @@ std::string describe(const Model& model, int n_ranks_running) {
               (frames > 0 ? ", rigid-body frames " + std::to_string(frames) : "") +
               (model.joints.empty() ? "" : ", joints " + std::to_string(model.joints.size())) +
               (model.sliders.empty() ? "" : ", sliders " + std::to_string(model.sliders.size())) +
+              (by_type[7] == 0 ? "" : ", bilateral contacts " + std::to_string(by_type[7])) +
               "): " + std::to_string(total_multipliers(model)) + " Lagrange multipliers");
   }
   for (const RigidBody& b : model.rigid_bodies) {

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "catena/model/integrator_catalogue.hpp"
 #include "line_path_reader.hpp"
+#include "number_format.hpp"
 #include "speed_reader.hpp"
 
 namespace catena::model::detail {
@@ -67,6 +69,26 @@ Vec3 path_point(const Model& m, const ElementPath& path, double s, double& lengt
   return at;
 }
 
+// A bilateral contact holds the head on the wire at every step: its contact point must stay
+// on the path from start to where the speed takes it by the end, and the modal model (which
+// takes contacts as forces) cannot hold it.
+void check_bilateral_contact(const Field& type, const Model& m, const MovingContact& c) {
+  double length = 0.0;
+  path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, length);
+  const double t_end = m.analysis == AnalysisType::dynamic ? m.dynamic_options.duration : 0.0;
+  const double from = c.start, to = c.start + c.speed * t_end;
+  if (std::min(from, to) < 0.0 || std::max(from, to) > length)
+    type.fail(
+        "a bilateral contact holds the head on the wire for the whole run, so its contact "
+        "point must stay on the path: it runs from " +
+        format_number(from) + " to " + format_number(to) + " m, the path from 0 to " +
+        format_number(length) + " m; move `start` or shorten analysis.duration");
+  if (m.analysis == AnalysisType::dynamic && m.dynamic_options.structure == StructureModel::modal)
+    type.fail(
+        "a bilateral contact is not available with structure: modal (the modal model "
+        "takes contacts as forces); use structure: nonlinear or linear");
+}
+
 }  // namespace
 
 void read_pantographs(const Field& pantographs, SceneBuild& build) {
@@ -123,15 +145,30 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
       stages = read_stages(stages_field);
     }
     if (contact.present()) {
-      contact.expect_map("contact settings {stiffness, damping}");
-      contact.check_keys({"stiffness", "damping"});
-      contact_stiffness =
-          contact.child("stiffness").real_or(contact_stiffness, RealRange::positive("N/m"));
-      c.damping = contact.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+      contact.expect_map("contact settings {type, stiffness, damping}");
+      contact.check_keys({"type", "stiffness", "damping"});
+      const Field type = contact.child("type");
+      const std::string kind = type.text_or("penalty");
+      if (kind != "penalty" && kind != "bilateral")
+        type.fail("unknown contact type '" + kind +
+                  "'; expected penalty (a spring that lets go: the default) or bilateral (a "
+                  "multiplier that holds the head on the wire)");
+      c.bilateral = kind == "bilateral";
+      if (c.bilateral) {
+        for (const char* key : {"stiffness", "damping"})
+          if (const Field f = contact.child(key); f.present())
+            f.fail(std::string("a bilateral contact has no ") + key +
+                   " (the head is held on the wire); remove it, or use type: penalty");
+        check_bilateral_contact(type, m, c);
+      } else {
+        contact_stiffness =
+            contact.child("stiffness").real_or(contact_stiffness, RealRange::positive("N/m"));
+        c.damping = contact.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+      }
     }
-    if (contact_stiffness <= 0.0)
+    if (contact_stiffness <= 0.0 && !c.bilateral)
       entry.fail("missing contact: {stiffness: k_c} (N/m); `model: en50318` sets 50000");
-    c.stiffness = contact_stiffness;
+    c.stiffness = c.bilateral ? 0.0 : contact_stiffness;
     c.up = up;
     for (const Stage& s : stages) c.stages.push_back({s.mass, s.stiffness, s.damping});
     c.static_force = static_force;
@@ -163,7 +200,22 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
         {stage_nodes.back(), up * stages.back().stiffness, up * stages.back().damping});
     m.nodal_loads.push_back({stage_nodes.back(), up * (static_force + aero * c.speed * c.speed)});
     c.head_node = stage_nodes.front();
+    if (c.bilateral) {
+      Constraint k;
+      k.type = ConstraintType::contact;
+      k.node_a = c.head_node;
+      k.contact = static_cast<int>(m.contacts.size());
+      k.equations = 1;
+      c.constraint = static_cast<int>(m.constraints.size());
+      m.constraints.push_back(k);
+    }
     m.contacts.push_back(c);
+    // The integrator was checked before the pantographs were read: once more, now that a
+    // bilateral contact may have added a constraint.
+    if (c.bilateral && m.analysis == AnalysisType::dynamic)
+      if (const auto refusal = refuse_integrator(m.dynamic_options.integrator, m.constraints.size(),
+                                                 !m.rigid_bodies.empty() || !m.sliders.empty()))
+        contact.child("type").fail(refusal->why);
   }
 }
 

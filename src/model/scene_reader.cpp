@@ -106,6 +106,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::read_joints(scene.child("joints"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
+  detail::check_sliders_carried(scene.child("sliders"), build);
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);
   detail::read_output(scene.child("output"), model.output);
   detail::read_dynamics(scene, model);

@@ -13,6 +13,12 @@
 namespace catena::model::detail {
 namespace {
 
+// The longest path a slider takes, in elements. Its constraint acts on every node of its
+// path at every time (couplings/slider_constraint.hpp), and its matrix block is dense over
+// them: at 250 elements, (6·251 + 7)² entries, 18 MB per block. A trolley runs along a span
+// or a few; a pantograph along kilometres uses a moving contact instead.
+constexpr std::size_t kMaxPathElements = 250;
+
 // m: how far a slider's node may lie from its path (the constraint holds it there from the
 // first step: a gap would be a jump).
 constexpr double kOnPathTolerance = 1e-6;
@@ -82,6 +88,12 @@ void read_sliders(const Field& sliders, SceneBuild& build) {
         entry, build, line.present() && line.is_scalar() ? line.text() : "slider " + slider.name,
         "sliders");
     const std::vector<int>& path = model.paths[static_cast<size_t>(slider.path)].elements;
+    if (path.size() > kMaxPathElements)
+      (line.present() ? line : entry.child("path"))
+          .fail("the path has " + std::to_string(path.size()) +
+                " elements; a slider takes at most " + std::to_string(kMaxPathElements) +
+                " (its constraint couples it to every node of its path at every step): give "
+                "the lines it runs along (line: [a, b]), not the whole line");
     for (int e : path)
       for (int n : model.elements[static_cast<size_t>(e)].nodes)
         if (n == slider.node)
@@ -98,8 +110,33 @@ void read_sliders(const Field& sliders, SceneBuild& build) {
                       format_vector(nearest) + " m, " + format_number(slider.start) +
                       " m along it); a slider's node must lie on the path within " +
                       format_number(kOnPathTolerance) + " m: move it there");
+    // At an end any outward motion leaves the path (solvers/time/state_guard.hpp).
+    if (!(slider.start > kOnPathTolerance && slider.start < stations.length() - kOnPathTolerance))
+      node_field.fail("node " + id + " is at the end of its path (" + format_number(slider.start) +
+                      " m along it, of " + format_number(stations.length()) +
+                      " m); a slider starts inside its path");
     slider.damping = entry.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
     model.sliders.push_back(slider);
+  }
+}
+
+void check_sliders_carried(const Field& sliders, const SceneBuild& build) {
+  const Model& model = build.model;
+  const std::vector<Field> entries = sliders.items();
+  for (size_t k = 0; k < model.sliders.size(); ++k) {
+    const int node = model.sliders[k].node;
+    bool carried = false;
+    for (const PointMass& m : model.point_masses) carried = carried || m.node == node;
+    for (const ElementDesc& e : model.elements)
+      for (int n : e.nodes) carried = carried || n == node;
+    for (const ElasticSupport& s : model.elastic_supports) carried = carried || s.node == node;
+    for (const Joint& j : model.joints) carried = carried || j.node_b == node;
+    if (!carried)
+      entries[k].child("node").fail(
+          "slider '" + model.sliders[k].name + "''s node " +
+          std::to_string(model.nodes[static_cast<size_t>(node)].id) +
+          " carries nothing: a slider has no mass of its own; put a mass on it (masses), "
+          "join a body to it (a spherical joint) or attach a spring or bar");
   }
 }
 

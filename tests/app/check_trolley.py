@@ -35,10 +35,11 @@ def read(path):
     with h5py.File(path, "r") as f:
         assert f.attrs["status"] == "complete", f.attrs["status"]
         row = int(f["sliders/trolley"].attrs["index"])
+        constraint = int(f["sliders/trolley"].attrs["constraint"])
         node = int(f["mesh/slider_nodes"][row])
         return (f["time"][:], f["samples/slider_position"][:, row],
                 f["samples/slider_speed"][:, row], f["samples/positions"][:],
-                f["samples/slopes"][:], f["samples/constraint_forces"][:, 0, :3], node)  # force on the trolley
+                f["samples/slopes"][:], f["samples/constraint_forces"][:, constraint, :3], node)  # on the trolley
 
 
 t, s, rate, x, slopes, force, node = read(sys.argv[1])

@@ -23,9 +23,9 @@ struct Reactions {
 
 // A moving contact (model::MovingContact, a pantograph head on a wire) at a state.
 struct ContactState {
-  double force = 0.0;        // N, ≥ 0 (0: no contact)
+  double force = 0.0;        // N, ≥ 0 (0: no contact); a bilateral contact may be < 0
   double position = 0.0;     // m along the path (the pantograph's position)
-  double penetration = 0.0;  // m, (r_head − r_wire)·up; > 0 in contact
+  double penetration = 0.0;  // m, (r_head − r_wire)·up; > 0 in contact (bilateral: 0)
   bool on_path = false;      // the contact point is on its path
 };
 
@@ -104,7 +104,8 @@ class StateView {
   const SecondOrderSystem& system_;
   // The couplings that are pantograph contacts, found once: contact_states runs every step,
   // and a type test of every coupling there cost more than the contacts themselves.
-  std::vector<size_t> contact_couplings_;
+  std::vector<size_t> contact_couplings_;    // penalty contacts (PantographContact)
+  std::vector<size_t> bilateral_couplings_;  // bilateral ones (BilateralContact)
 };
 
 }  // namespace catena::assembly

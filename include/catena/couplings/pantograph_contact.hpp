@@ -1,11 +1,10 @@
 #pragma once
 // The penalty contact between a pantograph head and the wire it runs under
 // (model::MovingContact; docs/formulation.md, "Moving contact"). The contact point moves
-// along the wire's path at the pantograph's speed, s(t) = start + speed·t, and lies on the
-// path element holding s, whose position there is r_w = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x.
-// Over the 15 DOFs x = [r_head, r_A, r_A,x, r_B, r_B,x]:
+// along the wire's path (couplings/contact_path.hpp: N, D over the 15 DOFs
+// x = [r_head, r_A, r_A,x, r_B, r_B,x]):
 //   penetration  δ = (r_head − r_w)·up = N·x,
-//   its rate     δ̇ = N·ẋ + D·x,  D = −speed (dS/ds)·up  (the point slides along the wire),
+//   its rate     δ̇ = N·ẋ + D·x,
 //   force        F = max(0, k δ + c δ̇) if δ > 0, else 0   (compression only),
 //   f = F N,  K = N (k N + c D)ᵀ,  C = c N Nᵀ              (while F > 0; else 0).
 // The head pushes the wire up and the wire pushes the head down, both through N.
@@ -16,9 +15,9 @@
 // therefore must be cable or beam elements).
 #include <vector>
 
+#include "catena/couplings/contact_path.hpp"
 #include "catena/couplings/coupling.hpp"
 #include "catena/model/model.hpp"
-#include "catena/model/path_stations.hpp"
 
 namespace catena::couplings {
 
@@ -40,24 +39,15 @@ class PantographContact final : public Coupling {
 
   int index() const { return index_; }
   // Contact point's arc length along its path at t, m.
-  double position(double t) const { return contact_.start + contact_.speed * t; }
-  bool on_path(double t) const { return stations_.contains(position(t)); }
+  double position(double t) const { return path_.position(t); }
+  bool on_path(double t) const { return path_.on_path(t); }
   // Force (N, ≥ 0) and penetration δ (m) at s (its active DOFs; on the path).
   double force(const CouplingState& s, double* penetration = nullptr) const;
 
  private:
-  // N and D over the 15 active DOFs at time t (on the path).
-  void directions(double t, double* N, double* D) const;
-  // The path element holding the contact point at t (on the path); an Error if it lies
-  // beyond the reach the pattern was made for (a time past analysis.duration).
-  std::size_t element_in_reach(double t) const;
-
   int index_;
   model::MovingContact contact_;
-  model::PathStations stations_;
-  model::PathReach reach_;                  // the path elements the pattern holds
-  std::vector<int> element_a_, element_b_;  // per path element: position of node A/B's DOFs
-                                            // (−1 outside the reach)
+  ContactPath path_;
 };
 
 }  // namespace catena::couplings

@@ -80,6 +80,10 @@ struct ElasticSupport {
 //
 // A slider (`sliders` in the scene, model::Slider) is one constraint of type `slider` on its
 // node: g = r_A − r_path(s), s the node's fourth unknown (couplings/slider_constraint.hpp).
+//
+// A pantograph with a bilateral contact (model::MovingContact::bilateral) is one constraint
+// of type `contact` on its head: g = (r_head − r_wire(s(t)))·up, its multiplier the contact
+// force (couplings/bilateral_contact.hpp).
 enum class ConstraintType {
   coincident,
   pinned,
@@ -87,7 +91,8 @@ enum class ConstraintType {
   frame_lengths,
   frame_angles,
   joint,
-  slider
+  slider,
+  contact
 };
 
 struct Constraint {
@@ -99,6 +104,7 @@ struct Constraint {
   double frequency = 0.0;         // Hz, prescribed only
   int joint = -1;                 // joint only: index into Model::joints
   int slider = -1;                // slider only: index into Model::sliders
+  int contact = -1;               // contact only: index into Model::contacts
   int equations = 3;              // its multipliers (a joint's: 3 to 6)
 };
 
@@ -320,6 +326,11 @@ struct MovingContact {
   double stiffness = 0.0;   // N/m, k_c > 0
   double damping = 0.0;     // N·s/m (acts only in contact)
   Vec3 up = Vec3::UnitZ();  // unit contact direction (opposite to gravity)
+  // `contact: {type: bilateral}`: the head held on the wire by a multiplier (the contact
+  // force, which may turn negative) instead of the penalty spring; stiffness and damping
+  // unused. Its constraint (type contact) is `constraint`.
+  bool bilateral = false;
+  int constraint = -1;
   // What the pantograph reader built, for `catena check` (the stages themselves are nodes,
   // point masses, springs, an elastic support and loads in the model's vectors).
   struct Stage {

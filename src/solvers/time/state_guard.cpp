@@ -103,8 +103,8 @@ void StateGuard::check_sliders(double t, const std::vector<double>& slides) cons
   os << "slider '" << slider.name << "' left its path '" << path.name << "' at t = " << t
      << " s (s = " << s << " m; the path runs from 0 to "
      << model::path_stations(system_.model(), path.elements).length()
-     << " m): a slider runs between its path's ends; hold it before an end (a spring or a "
-        "support at its node) or extend the path";
+     << " m): a slider runs between its path's ends; hold it before an end (an elastic "
+        "support on its node: a buffer spring) or extend the path";
   throw NumericalError(os.str());
 }
 
