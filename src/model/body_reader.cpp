@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "output_name.hpp"
+
 namespace catena::model::detail {
 namespace {
 
@@ -79,11 +81,8 @@ void read_bodies(const Field& bodies, SceneBuild& build) {
     entry.check_keys(keys);
     RigidBody body;
     const Field name = entry.child("name");
-    body.name = name.text_or("body " + std::to_string(model.rigid_bodies.size() + 1));
-    // The name is an HDF5 group's in the output (/bodies/<name>).
-    if (body.name.find('/') != std::string::npos || body.name == "." || body.name == "..")
-      name.fail("a body's name names its output group; got '" + body.name +
-                "', expected a name without '/' (and not '.' or '..')");
+    body.name =
+        read_output_name(name, "body " + std::to_string(model.rigid_bodies.size() + 1), "a body");
     // Joints name their sides by body name, node id or `ground` (joint_reader.cpp).
     if (body.name == "ground" || parse_integer(body.name))
       name.fail(

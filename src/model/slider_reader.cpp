@@ -9,6 +9,7 @@
 #include "catena/model/path_stations.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
+#include "output_name.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -55,11 +56,8 @@ void read_sliders(const Field& sliders, SceneBuild& build) {
     entry.check_keys(keys);
     Slider slider;
     const Field name = entry.child("name");
-    slider.name = name.text_or("slider " + std::to_string(model.sliders.size() + 1));
-    // The name is an HDF5 group's in the output (/sliders/<name>).
-    if (slider.name.find('/') != std::string::npos || slider.name == "." || slider.name == "..")
-      name.fail("a slider's name names its output group; got '" + slider.name +
-                "', expected a name without '/' (and not '.' or '..')");
+    slider.name =
+        read_output_name(name, "slider " + std::to_string(model.sliders.size() + 1), "a slider");
     for (const Slider& other : model.sliders)
       if (other.name == slider.name)
         name.fail("two sliders are named '" + slider.name + "'; expected distinct names");

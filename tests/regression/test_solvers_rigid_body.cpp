@@ -27,8 +27,6 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/time/consistent_acceleration.hpp"
-#include "catena/solvers/time/hht_integrator.hpp"
-#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 
@@ -132,23 +130,10 @@ Invariants invariants(const Top& top, const BodyState& s) {
   return out;
 }
 
+// HHT at α = −0.05 or an IRK family, Newton to round-off.
 std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSystem& system,
                                               const std::string& type) {
-  if (type == "hht") {
-    solvers::HhtOptions o;
-    o.alpha = -0.05;
-    o.atol = 1e-12;
-    o.rtol = 1e-13;
-    o.max_newton_iterations = 30;
-    return std::make_unique<solvers::HhtIntegrator>(system, o);
-  }
-  solvers::IrkOptions o;
-  o.family = solvers::parse_tableau_family(type);
-  o.stages = 3;
-  o.atol = 1e-12;
-  o.rtol = 1e-13;
-  o.max_newton_iterations = 30;
-  return std::make_unique<solvers::IrkIntegrator>(system, o);
+  return catena::test::tight_integrator(system, type, -0.05);
 }
 
 TEST(RigidBody, LagrangeTopInSteadyPrecessionKeepsItsNutationAndPrecessionRate) {

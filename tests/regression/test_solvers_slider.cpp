@@ -19,8 +19,6 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/model/scene_reader.hpp"
-#include "catena/solvers/time/hht_integrator.hpp"
-#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "petsc_test_session.hpp"
 
@@ -64,24 +62,18 @@ std::string rail_scene(double angle, double length, int elements, double mass, d
   return text;
 }
 
-std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSystem& system,
-                                              const std::string& type) {
-  if (type == "hht") {
-    solvers::HhtOptions o;
-    o.alpha = -0.1;
-    o.atol = 1e-12;
-    o.rtol = 1e-13;
-    o.max_newton_iterations = 30;
-    return std::make_unique<solvers::HhtIntegrator>(system, o);
+// A run of a model from its reference state at rest: HHT (α = −0.1) or an IRK family.
+struct RestStart {
+  catena::assembly::SecondOrderSystem system;
+  std::unique_ptr<solvers::TimeIntegrator> integrator;
+  RestStart(const model::Model& m, const std::string& type) : system(PETSC_COMM_WORLD, m) {
+    catena::VecHandle q = system.create_vector(), v = system.create_vector();
+    system.reference_state(q.get());
+    CATENA_PETSC(VecSet(v.get(), 0.0));
+    integrator = catena::test::tight_integrator(system, type, -0.1);
+    integrator->set_state(0.0, q.get(), v.get(), nullptr);
   }
-  solvers::IrkOptions o;
-  o.family = solvers::parse_tableau_family(type);
-  o.stages = 3;
-  o.atol = 1e-12;
-  o.rtol = 1e-13;
-  o.max_newton_iterations = 30;
-  return std::make_unique<solvers::IrkIntegrator>(system, o);
-}
+};
 
 // The value of node `node`'s component k (gathered: one rank owns it).
 double node_value(const catena::assembly::SecondOrderSystem& system, Vec x, int node, int k) {
@@ -102,12 +94,9 @@ TEST_P(RigidRail, FrictionlessTrolleyFallsAlongItAsTheClosedForm) {
       model::parse_scene(rail_scene(angle, length, 10, mass, start, 0.0), "rail.yaml");
   ASSERT_EQ(m.sliders.size(), 1u);
   EXPECT_NEAR(m.sliders[0].start, start, 1e-12);
-  catena::assembly::SecondOrderSystem system(PETSC_COMM_WORLD, m);
-  catena::VecHandle q = system.create_vector(), v = system.create_vector();
-  system.reference_state(q.get());
-  CATENA_PETSC(VecSet(v.get(), 0.0));
-  auto integrator = make(system, GetParam());
-  integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  RestStart run(m, GetParam());
+  const catena::assembly::SecondOrderSystem& system = run.system;
+  solvers::TimeIntegrator* integrator = run.integrator.get();
   const int node = m.sliders[0].node, constraint = m.sliders[0].constraint;
   const double dt = 0.01, a = kG * std::sin(angle);
   double worst_s = 0.0, worst_energy = 0.0, worst_tangential = 0.0, worst_normal = 0.0;
@@ -146,12 +135,9 @@ TEST_P(RigidRail, ViscousFrictionGivesTheTerminalSpeedClosedForm) {
   const double angle = 20.0 * M_PI / 180.0, mass = 2.0, damping = 4.0, start = 0.5;
   const model::Model m =
       model::parse_scene(rail_scene(angle, 10.0, 8, mass, start, damping), "rail.yaml");
-  catena::assembly::SecondOrderSystem system(PETSC_COMM_WORLD, m);
-  catena::VecHandle q = system.create_vector(), v = system.create_vector();
-  system.reference_state(q.get());
-  CATENA_PETSC(VecSet(v.get(), 0.0));
-  auto integrator = make(system, GetParam());
-  integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  RestStart run(m, GetParam());
+  const catena::assembly::SecondOrderSystem& system = run.system;
+  solvers::TimeIntegrator* integrator = run.integrator.get();
   const int node = m.sliders[0].node;
   const double terminal = mass * kG * std::sin(angle) / damping, tau = mass / damping;
   const double dt = 0.005;
@@ -209,12 +195,9 @@ TEST_P(RigidRail, GantryCranePendulumSwingsAtTheCoupledFrequency) {
                 "analysis: {type: dynamic, duration: 8, initial: {from: reference}}\n",
                 -kG, M, m, I, I, I, -l, std::cos(theta0), -std::sin(theta0), supports.c_str());
   const model::Model model_ = model::parse_scene(text, "gantry.yaml");
-  catena::assembly::SecondOrderSystem system(PETSC_COMM_WORLD, model_);
-  catena::VecHandle q = system.create_vector(), v = system.create_vector();
-  system.reference_state(q.get());
-  CATENA_PETSC(VecSet(v.get(), 0.0));
-  auto integrator = make(system, GetParam());
-  integrator->set_state(0.0, q.get(), v.get(), nullptr);
+  RestStart run(model_, GetParam());
+  const catena::assembly::SecondOrderSystem& system = run.system;
+  solvers::TimeIntegrator* integrator = run.integrator.get();
   const int body = model_.rigid_bodies[0].node, cart = model_.sliders[0].node;
   // θ from the body's e3 (its axis from the pivot away from the centre of mass).
   auto angle = [&] {

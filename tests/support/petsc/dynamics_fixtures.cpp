@@ -5,6 +5,8 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/time/hht_integrator.hpp"
+#include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "model_builders.hpp"
 
 namespace catena::test {
@@ -100,6 +102,25 @@ std::vector<double> owned_values(Vec x) {
   std::vector<double> out(a, a + n);
   CATENA_PETSC(VecRestoreArrayRead(x, &a));
   return out;
+}
+
+std::unique_ptr<solvers::TimeIntegrator> tight_integrator(assembly::SecondOrderSystem& system,
+                                                          const std::string& type, double alpha) {
+  if (type == "hht") {
+    solvers::HhtOptions o;
+    o.alpha = alpha;
+    o.atol = 1e-12;
+    o.rtol = 1e-13;
+    o.max_newton_iterations = 30;
+    return std::make_unique<solvers::HhtIntegrator>(system, o);
+  }
+  solvers::IrkOptions o;
+  o.family = solvers::parse_tableau_family(type);
+  o.stages = 3;
+  o.atol = 1e-12;
+  o.rtol = 1e-13;
+  o.max_newton_iterations = 30;
+  return std::make_unique<solvers::IrkIntegrator>(system, o);
 }
 
 }  // namespace catena::test

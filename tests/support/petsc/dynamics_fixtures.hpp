@@ -2,6 +2,8 @@
 // Models and helpers shared by the time-integration tests.
 #include <petscvec.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "catena/assembly/second_order_system.hpp"
@@ -31,6 +33,12 @@ std::vector<double> owned_values(Vec x);
 
 // Collective. n fixed steps of size dt; throws NumericalError if Newton fails.
 void advance_fixed(solvers::TimeIntegrator& integrator, double dt, int n);
+
+// Collective. An integrator for closed-form checks of constrained mechanisms: `type` "hht"
+// (with `alpha`) or an IRK family name ("radau_iia", 3 stages), Newton to 1e-12 / 1e-13
+// and at most 30 iterations.
+std::unique_ptr<solvers::TimeIntegrator> tight_integrator(assembly::SecondOrderSystem& system,
+                                                          const std::string& type, double alpha);
 
 // A pinned–pinned pre-tensioned wire of n cable elements along x (no gravity), with its
 // first mode z = A sin(πx/L) (and slopes) set into q.
