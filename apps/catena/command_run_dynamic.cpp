@@ -285,6 +285,18 @@ void warn_unresolved_contact(const model::Model& m,
                              const std::vector<post::ContactResolution>& resolution) {
   for (std::size_t c = 0; c < resolution.size() && c < m.contacts.size(); ++c) {
     if (!resolution[c].unresolved()) continue;
+    if (m.contacts[c].bilateral) {
+      std::fprintf(stderr,
+                   "catena: warning: pantograph '%s': the steps do not resolve its contact "
+                   "force (roughness %.2f > %.1f: the force changes from step to step by more "
+                   "than a sine with 9 steps per period does); a bilateral contact's force "
+                   "follows every wave of the wire under the head, and the statistics are then "
+                   "the step's, not the line's: halve integrator.dt until this warning goes "
+                   "(docs/accuracy.md, \"Where each method stops working\")\n",
+                   m.contacts[c].name.c_str(), resolution[c].roughness(),
+                   post::ContactResolution::kUnresolved);
+      continue;
+    }
     std::fprintf(stderr,
                  "catena: warning: pantograph '%s': the steps do not resolve its contact force "
                  "(roughness %.2f > %.1f: the force changes from step to step by more than a "

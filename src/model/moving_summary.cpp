@@ -129,8 +129,14 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   const double t_end = dynamic ? m.dynamic_options.duration : 0.0;
   if (!m.moving_loads.empty()) describe_moving_loads(m, t_end, t, notes);
   if (m.contacts.empty()) return;
+  const auto bilateral = std::count_if(m.contacts.begin(), m.contacts.end(),
+                                       [](const MovingContact& c) { return c.bilateral; });
+  const char* contact = bilateral == 0 ? "penalty contact"
+                        : bilateral == static_cast<std::ptrdiff_t>(m.contacts.size())
+                            ? "bilateral contact"
+                            : "penalty and bilateral contacts";
   t.row("pantographs", cat(std::to_string(m.contacts.size()),
-                           " (lumped-mass stages moving vertically, penalty contact)"));
+                           " (lumped-mass stages moving vertically, ", contact, ")"));
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
     const ElementPath& path = m.paths[static_cast<std::size_t>(c.path)];
@@ -151,8 +157,10 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
               format_number(uplift), " N"),
           4);
     t.row("",
-          cat("contact stiffness ", format_number(c.stiffness), " N/m, damping ",
-              format_number(c.damping), " N*s/m"),
+          c.bilateral ? std::string("contact bilateral: a multiplier holds the head on the "
+                                    "wire (its force may turn negative)")
+                      : cat("contact stiffness ", format_number(c.stiffness), " N/m, damping ",
+                            format_number(c.damping), " N*s/m"),
           4);
     if (!dynamic) {
       t.row("", cat("standing at ", format_number(c.start), " m (static analysis)"), 4);
@@ -171,7 +179,7 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
       warn_evaluation(m, c, t_end, notes);
     if (c.aerodynamic_coefficient == 0.0)
       notes.left_out.push_back(cat(who, ": aerodynamic uplift (aerodynamic_coefficient 0)"));
-    if (c.damping == 0.0)
+    if (c.damping == 0.0 && !c.bilateral)
       notes.left_out.push_back(cat(who, ": contact damping (contact.damping 0)"));
   }
   notes.left_out.push_back(

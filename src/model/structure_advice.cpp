@@ -163,6 +163,10 @@ void advise_structure(const Model& m, SummaryTable& t) {
 
   const double dt = m.dynamic_options.integrator.dt;
   for (const MovingContact& c : m.contacts) {
+    if (c.bilateral) {
+      t.row("contact mode", cat("'", c.name, "': none (bilateral: no contact spring)"));
+      continue;
+    }
     const double omega = contact_mode(c, wave);
     const double dt_omega = omega * dt;
     t.row("contact mode",
