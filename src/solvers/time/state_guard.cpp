@@ -78,6 +78,7 @@ void StateGuard::check_sliders(double t, Vec q) const {
 }
 
 void StateGuard::check_sliders(double t, const std::vector<double>& slides) const {
+  if (system_.model().sliders.empty()) return;  // the same on every rank: no reduction
   // The first slider (in scene order) off its path, and where it is.
   struct {
     double s;
