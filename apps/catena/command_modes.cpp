@@ -57,6 +57,7 @@ void command_modes(MPI_Comm comm, const CommandLine& cl) {
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
+  solvers::refuse_constraints_for_modes(system);  // before a static solve it would waste
   const solvers::StaticReport equilibrium = solve_statics(system, q.get(), cl);
   if (rank == 0) {
     std::printf("static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",

@@ -280,20 +280,13 @@ void check_step_within_duration(const Field& dt, const Field& duration, const Dy
 void read_dynamics(const Field& scene, Model& model) {
   const Field analysis = scene.child("analysis");
   const Field output = scene.child("output");
-  // A rigid body's rotations have no stiffness until its frame's multipliers carry load, nor
-  // has a slider's travel along a straight path: the static solve's first Newton matrix is
-  // singular. Bodies start from the scene's state; a dynamic run's static start holds each
-  // slider at its start (apps/catena/static_phase.hpp).
+  // A slider's travel along a straight path has no stiffness: the static solve's Newton
+  // matrix is singular. A dynamic run's static start holds each slider at its start
+  // (apps/catena/static_phase.hpp). Rigid bodies' rotations get theirs from the frame
+  // multipliers, which the static solver reaches by a regularised Newton (static_solver.cpp).
   const bool bodies = !model.rigid_bodies.empty();
   const bool sliders = !model.sliders.empty();
-  const std::string no_statics =
-      "a static equilibrium with rigid bodies is not available (their rotations have no "
-      "stiffness until the constraints carry load, and the first Newton matrix is singular)";
   const bool nonlinear_constraints = bodies || sliders;
-  if (bodies && model.analysis != AnalysisType::dynamic)
-    analysis.child("type").fail(no_statics +
-                                "; run analysis.type: dynamic from the scene's configuration "
-                                "(initial: {from: reference})");
   if (sliders && model.analysis != AnalysisType::dynamic)
     analysis.child("type").fail(
         "a static analysis with sliders is not available (a slider's travel along a straight "
@@ -316,14 +309,13 @@ void read_dynamics(const Field& scene, Model& model) {
   const Field duration = analysis.child("duration");
   model.dynamic_options.duration = duration.real(RealRange::positive("s"));
   read_initial(analysis.child("initial"), model);
-  if (bodies && model.dynamic_options.initial.from_static) {
-    const Field from = analysis.child("initial").child("from");
-    (from.present() ? from : analysis)
-        .fail(no_statics +
-              "; start from the scene's configuration: analysis.initial.from: "
-              "reference");
-  }
   read_structure(analysis, model);
+  if (bodies && model.dynamic_options.structure != StructureModel::nonlinear)
+    analysis.child("structure")
+        .fail("a " + analysis.child("structure").text() +
+              " structure with rigid bodies is not available (it linearises the cables and "
+              "beams about the static equilibrium; a body's frame and joints stay nonlinear "
+              "constraints, which it does not take); use structure: nonlinear");
   if (sliders && model.dynamic_options.structure != StructureModel::nonlinear)
     analysis.child("structure")
         .fail("a " + analysis.child("structure").text() +

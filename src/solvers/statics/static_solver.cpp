@@ -33,8 +33,27 @@ struct StaticSolver::Impl {
   // solver the user chose for Newton, for its inertia (stability) and null pivots.
   KspHandle stability_ksp;
   int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
+  // Rigid bodies: a body's rotations have no stiffness of their own (natural coordinates:
+  // constant mass, loads linear in q), only what its frame multipliers give once they carry
+  // load, so the first Newton matrix of a load step is singular (a pendulum's swing). Newton
+  // then iterates with ∂f/∂q + μ M, a Levenberg–Marquardt term in the kinetic-energy metric
+  // (pseudo-transient continuation, Kelley & Keyes 1998) whose μ falls with the residual:
+  // μ = μ₀ |f| / |f₀| within each load step. The equilibrium is f = 0 whatever μ was; near it
+  // the iteration is Newton's. μ₀ makes every mass a 1 Hz oscillator: for a pendulum of
+  // length ℓ the true stiffness is g/ℓ per unit mass, comparable for ℓ of a few decimetres.
+  bool regularise = false;
+  static constexpr double kRegularisation = 4.0 * M_PI * M_PI;  // μ₀, 1/s²
+  double first_norm = 0.0, last_norm = 0.0;
+  bool first_evaluation = true;  // of the current attempt
 
-  Impl(assembly::SecondOrderSystem& s, const model::StaticOptions& o) : system(s), options(o) {}
+  Impl(assembly::SecondOrderSystem& s, const model::StaticOptions& o)
+      : system(s), options(o), regularise(!s.model().rigid_bodies.empty()) {}
+
+  // The μ of the next Newton matrix (0 without bodies, and once f vanishes).
+  double regularisation() const {
+    if (!regularise || !(first_norm > 0.0)) return 0.0;
+    return kRegularisation * std::min(1.0, last_norm / first_norm);
+  }
 
   // Collective. Factors the tangent at q (current path point); MUMPS's status gives the
   // number of negative eigenvalues (INFOG(12), exact in parallel with ICNTL(13) = 1) and
@@ -57,13 +76,23 @@ struct StaticSolver::Impl {
 
   static PetscErrorCode form_function(SNES, Vec q, Vec f, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
-    return self->guard.run([&] { self->system.force({q, nullptr, self->path}, f); });
+    return self->guard.run([&] {
+      self->system.force({q, nullptr, self->path}, f);
+      if (!self->regularise) return;
+      PetscReal norm = 0.0;
+      CATENA_PETSC(VecNorm(f, NORM_2, &norm));
+      self->last_norm = norm;
+      if (self->first_evaluation) self->first_norm = norm;
+      self->first_evaluation = false;
+    });
   }
   static PetscErrorCode form_jacobian(SNES, Vec q, Mat J, Mat, void* ctx) {
     auto* self = static_cast<Impl*>(ctx);
     ++self->n_jacobians;
     return self->guard.run([&] {
-      self->system.jacobian({q, nullptr, self->path}, assembly::kStaticJacobian, J);
+      assembly::JacobianCoefficients c = assembly::kStaticJacobian;
+      c.c_M = self->regularisation();
+      self->system.jacobian({q, nullptr, self->path}, c, J);
     });
   }
 };
@@ -157,6 +186,7 @@ StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec s
                                  s.base_stol, s.base_max_it, s.base_max_f));
   CATENA_PETSC(VecCopy(start, trial));
   s.n_jacobians = 0;
+  s.first_evaluation = true;
   const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, trial);
   s.guard.rethrow_if_any();
   CATENA_PETSC(ierr);
