@@ -128,14 +128,17 @@ void add_body_frame_constraints(const Field& bodies, SceneBuild& build) {
             " carries rigid body '" + body.name +
             "' and a support that fixes some of its axes (e1_x ... e3_z); a body's "
             "orientation is held by its constraints: fix its position only ([x, y, z])");
-    body.first_constraint = static_cast<int>(model.constraints.size());
-    for (const ConstraintType type :
-         {ConstraintType::frame_lengths, ConstraintType::frame_angles}) {
-      Constraint c;
-      c.type = type;
-      c.node_a = body.node;
-      model.constraints.push_back(c);
-    }
+    append_frame_constraints(model, body);
+  }
+}
+
+void append_frame_constraints(Model& model, RigidBody& body) {
+  body.first_constraint = static_cast<int>(model.constraints.size());
+  for (const ConstraintType type : {ConstraintType::frame_lengths, ConstraintType::frame_angles}) {
+    Constraint c;
+    c.type = type;
+    c.node_a = body.node;
+    model.constraints.push_back(c);
   }
 }
 

@@ -18,4 +18,7 @@ void read_bodies(const Field& bodies, SceneBuild& build);
 // supports and constraints are read.
 void add_body_frame_constraints(const Field& bodies, SceneBuild& build);
 
+// Not collective. Appends `body`'s two frame constraints and records the first's index.
+void append_frame_constraints(Model& model, RigidBody& body);
+
 }  // namespace catena::model::detail

@@ -175,15 +175,20 @@ void read_joints(const Field& joints, SceneBuild& build) {
           read_sine_frequency(motion.child("frequency"), joint.motion_amplitude == 0.0, unit);
     }
 
-    Constraint c;
-    c.type = ConstraintType::joint;
-    c.node_a = model.rigid_bodies[static_cast<size_t>(a.body)].node;
-    c.node_b = b.body >= 0 ? model.rigid_bodies[static_cast<size_t>(b.body)].node : b.node;
-    c.joint = static_cast<int>(model.joints.size());
-    c.equations = joint_equations(joint);
-    model.joints.push_back(joint);
-    model.constraints.push_back(c);
+    append_joint(model, joint);
   }
+}
+
+void append_joint(Model& model, const Joint& joint) {
+  Constraint c;
+  c.type = ConstraintType::joint;
+  c.node_a = model.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
+  c.node_b =
+      joint.body_b >= 0 ? model.rigid_bodies[static_cast<size_t>(joint.body_b)].node : joint.node_b;
+  c.joint = static_cast<int>(model.joints.size());
+  c.equations = joint_equations(joint);
+  model.joints.push_back(joint);
+  model.constraints.push_back(c);
 }
 
 }  // namespace catena::model::detail

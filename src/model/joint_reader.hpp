@@ -10,4 +10,8 @@ namespace catena::model::detail {
 // constraint comes after them, so that the scene's constraints keep their numbers).
 void read_joints(const Field& joints, SceneBuild& build);
 
+// Not collective. Appends `joint` (its sides, point, axis and coordinate set) and its
+// constraint of type `joint`; a ground side has body_b = node_b = −1.
+void append_joint(Model& model, const Joint& joint);
+
 }  // namespace catena::model::detail

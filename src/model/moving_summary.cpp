@@ -135,8 +135,13 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
                         : bilateral == static_cast<std::ptrdiff_t>(m.contacts.size())
                             ? "bilateral contact"
                             : "penalty and bilateral contacts";
-  t.row("pantographs", cat(std::to_string(m.contacts.size()),
-                           " (lumped-mass stages moving vertically, ", contact, ")"));
+  const auto mechanisms = std::count_if(m.contacts.begin(), m.contacts.end(),
+                                        [](const MovingContact& c) { return c.mechanism; });
+  const char* kind = mechanisms == 0 ? "lumped-mass stages moving vertically"
+                     : mechanisms == static_cast<std::ptrdiff_t>(m.contacts.size())
+                         ? "single-arm mechanisms of rigid bodies"
+                         : "lumped stages and single-arm mechanisms";
+  t.row("pantographs", cat(std::to_string(m.contacts.size()), " (", kind, ", ", contact, ")"));
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
     const ElementPath& path = m.paths[static_cast<std::size_t>(c.path)];
@@ -150,7 +155,16 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
           cat(path_text, " (", format_number(length), " m), ", speed_text(c.speed), ", start ",
               format_number(c.start), " m"),
           4);
-    t.row("", cat("stages (head first): ", stages_text(c)), 4);
+    if (c.mechanism) {
+      t.row("",
+            cat("arm_en50318: an arm on a revolute joint at ", format_number(c.arm_angle),
+                " degrees, the head on a prismatic suspension; bodies '", c.name, " arm' and '",
+                c.name, " head'"),
+            4);
+      t.row("", cat("equivalent stages there (head first): ", stages_text(c)), 4);
+    } else {
+      t.row("", cat("stages (head first): ", stages_text(c)), 4);
+    }
     t.row("",
           cat("static force ", format_number(c.static_force), " N, aerodynamic coefficient ",
               format_number(c.aerodynamic_coefficient), " N*s^2/m^2: uplift ",
@@ -182,9 +196,14 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
     if (c.damping == 0.0 && !c.bilateral)
       notes.left_out.push_back(cat(who, ": contact damping (contact.damping 0)"));
   }
-  notes.left_out.push_back(
-      "pantograph stages' weight (cancelled: the static force is the net uplift), their "
-      "horizontal motion and the head's rotation");
+  if (mechanisms < static_cast<std::ptrdiff_t>(m.contacts.size()))
+    notes.left_out.push_back(
+        "pantograph stages' weight (cancelled: the static force is the net uplift), their "
+        "horizontal motion and the head's rotation");
+  if (mechanisms > 0)
+    notes.left_out.push_back(
+        "arm_en50318 pantographs: the head's motion along the wire relative to the contact "
+        "point (the contact acts at the head's point, at the wire's moving contact point)");
 }
 
 bool structure_is_damped(const Model& m) {

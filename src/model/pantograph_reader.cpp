@@ -9,6 +9,7 @@
 #include "catena/model/integrator_catalogue.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
+#include "pantograph_mechanism.hpp"
 #include "speed_reader.hpp"
 
 namespace catena::model::detail {
@@ -69,6 +70,15 @@ Vec3 path_point(const Model& m, const ElementPath& path, double s, double& lengt
   return at;
 }
 
+// The horizontal direction of travel along the path at s (toward increasing s).
+Vec3 travel_direction(const Model& m, const ElementPath& path, double s, double length) {
+  double unused = 0.0;
+  const double a = std::clamp(s - 0.5, 0.0, length), b = std::clamp(s + 0.5, 0.0, length);
+  Vec3 d = path_point(m, path, b, unused) - path_point(m, path, a, unused);
+  d.z() = 0.0;
+  return d.normalized();
+}
+
 // A bilateral contact holds the head on the wire at every step: its contact point must stay
 // on the path from start to where the speed takes it by the end, and the modal model (which
 // takes contacts as forces) cannot hold it.
@@ -89,6 +99,52 @@ void check_bilateral_contact(const Field& type, const Model& m, const MovingCont
         "takes contacts as forces); use structure: nonlinear or linear");
 }
 
+// The lumped stages: the head at the wire's reference point, the other stages below (the
+// springs act on displacements, so the spacing is only for pictures).
+void add_stages(SceneBuild& build, int origin, const std::vector<Stage>& stages, MovingContact& c,
+                const Vec3& contact_point, double uplift, std::int64_t& next_node_id,
+                std::int64_t& next_element_id) {
+  Model& m = build.model;
+  const Vec3 up = c.up;
+  std::vector<int> stage_nodes;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    Node node;
+    node.id = next_node_id++;
+    node.position = contact_point - up * (0.5 * static_cast<double>(i));
+    build.add_node(node, origin);
+    stage_nodes.push_back(static_cast<int>(m.nodes.size()) - 1);
+    m.supports.push_back({stage_nodes.back(), 0b011u});  // x and y held
+    m.point_masses.push_back({stage_nodes.back(), stages[i].mass});
+    m.nodal_loads.push_back({stage_nodes.back(), -stages[i].mass * m.gravity});
+  }
+  for (size_t i = 0; i + 1 < stages.size(); ++i) {
+    ElementDesc spring;
+    spring.id = next_element_id++;
+    spring.nodes = {stage_nodes[i], stage_nodes[i + 1]};
+    spring.props = SpringProps{up * stages[i].stiffness, up * stages[i].damping};
+    spring.set = "pantograph " + c.name;
+    build.add_element(spring, origin);
+  }
+  m.elastic_supports.push_back(
+      {stage_nodes.back(), up * stages.back().stiffness, up * stages.back().damping});
+  m.nodal_loads.push_back({stage_nodes.back(), up * uplift});
+  c.head_node = stage_nodes.front();
+}
+
+// The mechanism's bodies need the nonlinear structure and an integrator that keeps their
+// nonlinear constraints (checked before the pantographs were read, without them).
+void check_mechanism_analysis(const Field& model_field, const Model& m) {
+  if (m.analysis != AnalysisType::dynamic) return;
+  if (m.dynamic_options.structure != StructureModel::nonlinear)
+    model_field.fail(
+        "a pantograph of model arm_en50318 is a mechanism of rigid bodies, which the " +
+        std::string(m.dynamic_options.structure == StructureModel::modal ? "modal" : "linear") +
+        " structure does not take; use structure: nonlinear, or model: en50318");
+  if (const auto refusal =
+          refuse_integrator(m.dynamic_options.integrator, m.constraints.size(), true))
+    model_field.fail(refusal->why + " (the arm_en50318 pantograph is made of rigid bodies)");
+}
+
 }  // namespace
 
 void read_pantographs(const Field& pantographs, SceneBuild& build) {
@@ -107,7 +163,8 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
   for (const Field& entry : pantographs.items()) {
     entry.expect_map("a pantograph {name, path, speed or speed_kmh, start, static_force, ...}");
     entry.check_keys({"name", "path", "line", "speed", "speed_kmh", "direction", "start",
-                      "static_force", "aerodynamic_coefficient", "model", "stages", "contact"});
+                      "static_force", "aerodynamic_coefficient", "model", "stages", "contact",
+                      "arm_angle"});
     MovingContact c;
     c.name = entry.child("name").text();
     if (!names.insert(c.name).second)
@@ -129,12 +186,22 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
     const Field model_field = entry.child("model"), stages_field = entry.child("stages");
     const Field contact = entry.child("contact");
     double contact_stiffness = 0.0;
+    const Field arm_angle = entry.child("arm_angle");
+    const bool mechanism = model_field.present() && model_field.text() == "arm_en50318";
+    if (arm_angle.present() && !mechanism)
+      arm_angle.fail(
+          "arm_angle places the arm of `model: arm_en50318`; this pantograph has " +
+          std::string(model_field.present() ? "model: " + model_field.text() : "stages") +
+          ", no arm");
     if (model_field.present()) {
-      if (model_field.text() != "en50318")
+      if (model_field.text() != "en50318" && !mechanism)
         model_field.fail("unknown pantograph model '" + model_field.text() +
-                         "'; accepted: en50318 (or give `stages` instead)");
+                         "'; accepted: en50318 (the reference two-stage model), arm_en50318 "
+                         "(a single-arm mechanism of rigid bodies equivalent to it at its "
+                         "design height), or give `stages` instead");
       if (stages_field.present())
-        stages_field.fail("`model: en50318` defines the stages; give either model or stages");
+        stages_field.fail("`model: " + model_field.text() +
+                          "` defines the stages; give either model or stages");
       stages = en50318_stages();
       contact_stiffness = kEn50318ContactStiffness;
     } else {
@@ -174,32 +241,24 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
     c.static_force = static_force;
     c.aerodynamic_coefficient = aero;
 
-    // Nodes: the head at the wire's reference point, the other stages below (the springs
-    // act on displacements, so the spacing is only for pictures).
     const int origin = build.add_origin(entry);
-    std::vector<int> stage_nodes;
-    for (size_t i = 0; i < stages.size(); ++i) {
-      Node node;
-      node.id = next_node_id++;
-      node.position = contact_point - up * (0.5 * static_cast<double>(i));
-      build.add_node(node, origin);
-      stage_nodes.push_back(static_cast<int>(m.nodes.size()) - 1);
-      m.supports.push_back({stage_nodes.back(), 0b011u});  // x and y held
-      m.point_masses.push_back({stage_nodes.back(), stages[i].mass});
-      m.nodal_loads.push_back({stage_nodes.back(), -stages[i].mass * m.gravity});
+    if (mechanism) {
+      // The head touches the wire where the scene draws it: off the path, the air spring
+      // would throw the arm up with nothing to hold it.
+      if (c.start < 0.0 || c.start > path_length)
+        entry.child("start").fail(
+            "a pantograph of model arm_en50318 must start under its wire (its head touches "
+            "the wire in the scene's configuration): start " +
+            format_number(c.start) + " m, the path from 0 to " + format_number(path_length) + " m");
+      const Vec3 travel =
+          travel_direction(m, m.paths[static_cast<size_t>(c.path)], c.start, path_length);
+      build_arm_pantograph(build, origin, arm_angle, c, contact_point, travel,
+                           static_force + aero * c.speed * c.speed, next_node_id);
+      check_mechanism_analysis(model_field, m);
+    } else {
+      add_stages(build, origin, stages, c, contact_point, static_force + aero * c.speed * c.speed,
+                 next_node_id, next_element_id);
     }
-    for (size_t i = 0; i + 1 < stages.size(); ++i) {
-      ElementDesc spring;
-      spring.id = next_element_id++;
-      spring.nodes = {stage_nodes[i], stage_nodes[i + 1]};
-      spring.props = SpringProps{up * stages[i].stiffness, up * stages[i].damping};
-      spring.set = "pantograph " + c.name;
-      build.add_element(spring, origin);
-    }
-    m.elastic_supports.push_back(
-        {stage_nodes.back(), up * stages.back().stiffness, up * stages.back().damping});
-    m.nodal_loads.push_back({stage_nodes.back(), up * (static_force + aero * c.speed * c.speed)});
-    c.head_node = stage_nodes.front();
     if (c.bilateral) {
       Constraint k;
       k.type = ConstraintType::contact;

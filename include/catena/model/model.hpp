@@ -338,7 +338,11 @@ struct MovingContact {
     double stiffness = 0.0;  // N/m, to the next stage (the last: to ground)
     double damping = 0.0;    // N·s/m, likewise
   };
-  std::vector<Stage> stages;             // head first
+  std::vector<Stage> stages;  // head first
+  // `model: arm_en50318`: the head is a rigid body on an arm (model/pantograph_mechanism.hpp);
+  // `stages` are then its equivalent stages at arm_angle (degrees above horizontal).
+  bool mechanism = false;
+  double arm_angle = 0.0;
   double static_force = 0.0;             // N, F0 on the last stage
   double aerodynamic_coefficient = 0.0;  // N·s²/m²: the uplift is F0 + c·speed²
 };
