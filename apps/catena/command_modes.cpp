@@ -50,6 +50,7 @@ void command_modes(MPI_Comm comm, const CommandLine& cl) {
     std::fflush(stdout);
   }
   check_output_path(comm, m, cl.output.has_value());
+  solvers::refuse_constraints_for_modes(m);  // before the shape finding and statics it would waste
   shape_catenary(
       comm, m, stdout,
       cl.progress_seconds);  // a `catenary` scene: dropper lengths first, as `catena run`
@@ -57,7 +58,6 @@ void command_modes(MPI_Comm comm, const CommandLine& cl) {
   assembly::SecondOrderSystem system(comm, m);
   VecHandle q = system.create_vector();
   system.reference_state(q.get());
-  solvers::refuse_constraints_for_modes(system);  // before a static solve it would waste
   const solvers::StaticReport equilibrium = solve_statics(system, q.get(), cl);
   if (rank == 0) {
     std::printf("static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",

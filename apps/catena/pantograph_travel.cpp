@@ -10,11 +10,8 @@ PantographTravel::PantographTravel(const model::Model& model, const std::vector<
   for (std::size_t r = 0; r < owned_nodes.size(); ++r) row_of[owned_nodes[r]] = static_cast<int>(r);
   for (const model::MovingContact& c : model.contacts) {
     Pantograph p;
-    // The pantograph reader adds a pantograph's stage nodes one after the other, the head
-    // first (model/pantograph_reader.cpp).
-    for (std::size_t i = 0; i < c.stages.size(); ++i)
-      if (const auto it = row_of.find(c.head_node + static_cast<int>(i)); it != row_of.end())
-        p.rows.push_back(it->second);
+    for (const int node : model::pantograph_nodes(c))
+      if (const auto it = row_of.find(node); it != row_of.end()) p.rows.push_back(it->second);
     p.elements = &model.paths[static_cast<std::size_t>(c.path)].elements;
     p.stations = model::path_stations(model, *p.elements);
     p.start_point = model::path_point(model, *p.elements, p.stations, c.start);

@@ -335,8 +335,14 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
   // The design shape is the catenary's own, without the pantographs pressing on it (a head
   // standing in a span would lift the wire there, and shape finding would shorten that
   // span's droppers to pull it back down) and without moving loads. The pantographs'
-  // stages stay in the copy, held by their ground springs, touching nothing.
+  // stages stay in the copy, held by their ground springs, touching nothing; a mechanism
+  // pantograph's arm is held where the scene draws it (its air spring, with nothing
+  // to push against, would throw the arm up): the height of the arm's centre of mass fixes
+  // its angle (holding more would repeat the joints' conditions), and the head stays on its
+  // suspension.
   model::Model bare = model;
+  for (const model::MovingContact& c : bare.contacts)
+    if (c.mechanism) bare.supports.push_back({c.mechanism_nodes.back(), 0b100u, false, 0u});
   bare.contacts.clear();
   bare.moving_loads.clear();
   Unknowns found;

@@ -209,8 +209,8 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
 bool structure_is_damped(const Model& m) {
   std::vector<bool> pantograph_node(m.nodes.size(), false);
   for (const MovingContact& c : m.contacts)
-    for (std::size_t k = 0; k < std::max<std::size_t>(c.stages.size(), 1); ++k)
-      pantograph_node[static_cast<std::size_t>(c.head_node) + k] = true;
+    for (const int node : pantograph_nodes(c))
+      pantograph_node[static_cast<std::size_t>(node)] = true;
   for (const ElementDesc& e : m.elements) {
     if (pantograph_node[static_cast<std::size_t>(e.nodes.front())]) continue;
     if (const auto* cable = std::get_if<CableProps>(&e.props);

@@ -45,11 +45,12 @@ std::vector<MovingContact::Stage> equivalent_stages(const ArmPantograph& p, doub
            p.torsion_stiffness() / l2, p.torsion_damping() / l2}};
 }
 
-void build_arm_pantograph(SceneBuild& build, int origin, const Field& angle, MovingContact& c,
+void build_arm_pantograph(SceneBuild& build, int origin, const Field& entry, MovingContact& c,
                           const Vec3& contact_point, const Vec3& travel, double uplift,
                           std::int64_t& next_node_id) {
   Model& m = build.model;
   const ArmPantograph p;
+  const Field angle = entry.child("arm_angle"), name = entry.child("name");
   const double alpha = angle.real_or(
       p.design_angle_deg, RealRange::between(10.0, true, 60.0, true, "degrees above horizontal"));
   // (+ 0 turns the −0 components of products into 0 for the summary's printing.)
@@ -88,8 +89,8 @@ void build_arm_pantograph(SceneBuild& build, int origin, const Field& angle, Mov
   for (RigidBody* body : {&head, &arm}) {
     for (const RigidBody& other : m.rigid_bodies)
       if (other.name == body->name)
-        angle.fail("the pantograph's body '" + body->name +
-                   "' has the name of a body of the scene; rename one of them");
+        name.fail("the pantograph's body '" + body->name +
+                  "' has the name of a body of the scene; rename one of them");
     m.rigid_bodies.push_back(*body);
     append_frame_constraints(m, m.rigid_bodies.back());
   }
@@ -120,6 +121,7 @@ void build_arm_pantograph(SceneBuild& build, int origin, const Field& angle, Mov
   m.nodal_loads.push_back({arm.node, up * (2.0 * (uplift + p.head_mass * g) + arm_mass * g)});
 
   c.head_node = head.node;
+  c.mechanism_nodes = {head.node, arm.node};
   c.stages = equivalent_stages(p, alpha);
   c.mechanism = true;
   c.arm_angle = alpha;

@@ -53,8 +53,9 @@ std::vector<MovingContact::Stage> equivalent_stages(const ArmPantograph& p, doub
 // horizontal `travel` direction; appends nodes (the head's, then the arm's) from
 // `next_node_id`, the bodies, their frame constraints, the two joints and the air spring's
 // load; sets c.head_node, c.stages (the equivalent stages at the arm's angle) and
-// c.mechanism. `angle` names the arm_angle key for messages.
-void build_arm_pantograph(SceneBuild& build, int origin, const Field& angle, MovingContact& c,
+// c.mechanism and c.mechanism_nodes. `entry` is the pantograph's (its arm_angle; its name
+// for messages).
+void build_arm_pantograph(SceneBuild& build, int origin, const Field& entry, MovingContact& c,
                           const Vec3& contact_point, const Vec3& travel, double uplift,
                           std::int64_t& next_node_id);
 

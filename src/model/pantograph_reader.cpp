@@ -252,7 +252,7 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
             format_number(c.start) + " m, the path from 0 to " + format_number(path_length) + " m");
       const Vec3 travel =
           travel_direction(m, m.paths[static_cast<size_t>(c.path)], c.start, path_length);
-      build_arm_pantograph(build, origin, arm_angle, c, contact_point, travel,
+      build_arm_pantograph(build, origin, entry, c, contact_point, travel,
                            static_force + aero * c.speed * c.speed, next_node_id);
       check_mechanism_analysis(model_field, m);
     } else {

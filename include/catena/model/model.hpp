@@ -338,14 +338,26 @@ struct MovingContact {
     double stiffness = 0.0;  // N/m, to the next stage (the last: to ground)
     double damping = 0.0;    // N·s/m, likewise
   };
+
   std::vector<Stage> stages;  // head first
   // `model: arm_en50318`: the head is a rigid body on an arm (model/pantograph_mechanism.hpp);
   // `stages` are then its equivalent stages at arm_angle (degrees above horizontal).
   bool mechanism = false;
   double arm_angle = 0.0;
+  std::vector<int> mechanism_nodes;      // its bodies' nodes (head, arm)
   double static_force = 0.0;             // N, F0 on the last stage
   double aerodynamic_coefficient = 0.0;  // N·s²/m²: the uplift is F0 + c·speed²
 };
+
+// The nodes a pantograph added: its lumped stages (consecutive from the head) or its
+// mechanism's bodies.
+inline std::vector<int> pantograph_nodes(const MovingContact& c) {
+  if (c.mechanism) return c.mechanism_nodes;
+  std::vector<int> nodes;
+  for (std::size_t k = 0; k < c.stages.size(); ++k)
+    nodes.push_back(c.head_node + static_cast<int>(k));
+  return nodes;
+}
 
 // analysis.structure: what of the structure's nonlinearity a dynamic run keeps.
 enum class StructureModel {

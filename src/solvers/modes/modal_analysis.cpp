@@ -151,9 +151,9 @@ Modes collect(EPS eps, Mat K, Mat M, PetscInt converged, PetscInt count,
 
 }  // namespace
 
-void refuse_constraints_for_modes(const assembly::SecondOrderSystem& system) {
-  if (system.has_constraints())
-    throw InputError({system.model().source_file, 0, "constraints"},
+void refuse_constraints_for_modes(const model::Model& model) {
+  if (!model.constraints.empty())
+    throw InputError({model.source_file, 0, "constraints"},
                      "modes of a scene with constraints (Lagrange multipliers: constraints, "
                      "rigid bodies' frames, joints, sliders, bilateral contacts) are not "
                      "computed: their mass matrix is singular in the multipliers. Hold the "
@@ -161,7 +161,7 @@ void refuse_constraints_for_modes(const assembly::SecondOrderSystem& system) {
 }
 
 Modes compute_modes(assembly::SecondOrderSystem& system, Vec q, const ModalOptions& options) {
-  refuse_constraints_for_modes(system);
+  refuse_constraints_for_modes(system.model());
   MatHandle K = system.create_matrix(), M = system.create_matrix();
   const assembly::EvalPoint at{q, nullptr, {}, 0.0};
   system.jacobian(at, {1.0, 0.0, 0.0, 0.0, 0.0}, K.get());

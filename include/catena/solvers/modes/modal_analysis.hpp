@@ -30,9 +30,9 @@ struct Modes {
   int n_iterations = 0;          // Krylov–Schur restarts
 };
 
-// Throws InputError when the system has Lagrange multipliers (modes are of K and M alone):
-// callers check before the static solve that precedes the modes.
-void refuse_constraints_for_modes(const assembly::SecondOrderSystem& system);
+// Throws InputError when the model has Lagrange multipliers (modes are of K and M alone):
+// callers check before the shape finding and static solve that precede the modes.
+void refuse_constraints_for_modes(const model::Model& model);
 
 // Collective. The `options.count` lowest modes about q (no multipliers: a model with
 // constraints is refused with a message). Throws NumericalError when K cannot be factored
