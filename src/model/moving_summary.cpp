@@ -129,18 +129,22 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   const double t_end = dynamic ? m.dynamic_options.duration : 0.0;
   if (!m.moving_loads.empty()) describe_moving_loads(m, t_end, t, notes);
   if (m.contacts.empty()) return;
-  const auto bilateral = std::count_if(m.contacts.begin(), m.contacts.end(),
-                                       [](const MovingContact& c) { return c.bilateral; });
-  const char* contact = bilateral == 0 ? "penalty contact"
-                        : bilateral == static_cast<std::ptrdiff_t>(m.contacts.size())
-                            ? "bilateral contact"
-                            : "penalty and bilateral contacts";
-  const auto mechanisms = std::count_if(m.contacts.begin(), m.contacts.end(),
-                                        [](const MovingContact& c) { return c.mechanism; });
-  const char* kind = mechanisms == 0 ? "lumped-mass stages moving vertically"
-                     : mechanisms == static_cast<std::ptrdiff_t>(m.contacts.size())
-                         ? "single-arm mechanisms of rigid bodies"
-                         : "lumped stages and single-arm mechanisms";
+  // How many pantographs have a property: none, all or some of them, in words.
+  const auto share = [&m](bool MovingContact::*property, const char* none, const char* all,
+                          const char* some) {
+    const auto n = std::count_if(m.contacts.begin(), m.contacts.end(),
+                                 [&](const MovingContact& c) { return c.*property; });
+    return n == 0 ? none : n == static_cast<std::ptrdiff_t>(m.contacts.size()) ? all : some;
+  };
+  const char* contact = share(&MovingContact::bilateral, "penalty contact", "bilateral contact",
+                              "penalty and bilateral contacts");
+  const char* kind =
+      share(&MovingContact::mechanism, "lumped-mass stages moving vertically",
+            "single-arm mechanisms of rigid bodies", "lumped stages and single-arm mechanisms");
+  const bool any_lumped = std::any_of(m.contacts.begin(), m.contacts.end(),
+                                      [](const MovingContact& c) { return !c.mechanism; });
+  const bool any_mechanism = std::any_of(m.contacts.begin(), m.contacts.end(),
+                                         [](const MovingContact& c) { return c.mechanism; });
   t.row("pantographs", cat(std::to_string(m.contacts.size()), " (", kind, ", ", contact, ")"));
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
@@ -196,11 +200,11 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
     if (c.damping == 0.0 && !c.bilateral)
       notes.left_out.push_back(cat(who, ": contact damping (contact.damping 0)"));
   }
-  if (mechanisms < static_cast<std::ptrdiff_t>(m.contacts.size()))
+  if (any_lumped)
     notes.left_out.push_back(
         "pantograph stages' weight (cancelled: the static force is the net uplift), their "
         "horizontal motion and the head's rotation");
-  if (mechanisms > 0)
+  if (any_mechanism)
     notes.left_out.push_back(
         "arm_en50318 pantographs: the head's motion along the wire relative to the contact "
         "point (the contact acts at the head's point, at the wire's moving contact point)");
