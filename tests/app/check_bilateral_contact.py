@@ -48,9 +48,13 @@ print("bilateral: mean %.4f N (penalty %.4f N), std %.3f N (penalty %.3f), min %
 assert gap < 1e-8, gap
 assert abs(force.mean() - penalty.mean()) < 0.005 * penalty.mean()
 assert np.count_nonzero(force == 0.0) == 0, "a bilateral contact never lets go"
+# Another rank count agrees to the Newton tolerance, whose floor on this wire is the
+# round-off of its axial forces: one step converging in one iteration fewer on one rank
+# count moved the contact force by up to 7e-4 N (measured; 8e-4 N with a tolerance 1000
+# times tighter, which itself moved it by 3e-3 N from the default's), 5e-6 of its mean.
 for other in sys.argv[3:]:
     f2 = read(other)[0]
     n = min(len(force), len(f2))
     d = np.abs(force[:n] - f2[:n]).max()
     print("against %s: contact force %.3g N" % (other, d))
-    assert d < 1e-5, d
+    assert d < 2e-5 * force.mean(), d

@@ -75,6 +75,11 @@ PetscErrorCode ReusableNewton::converged(SNES snes, PetscInt it, PetscReal xnorm
   const NewtonSettings& s = self->settings_;
   *reason = SNES_CONVERGED_ITERATING;
   std::ostringstream why;
+  if (std::isfinite(fnorm) && self->measure_) {
+    Vec F = nullptr;
+    if (SNESGetFunction(snes, &F, nullptr, nullptr) != 0) return PETSC_ERR_LIB;
+    if (self->guard_.run([&] { fnorm = self->measure_(F); }) != 0) return PETSC_ERR_USER;
+  }
   if (!std::isfinite(fnorm)) {
     why << "the residual is not finite at iteration " << it;
     *reason = SNES_DIVERGED_FNORM_NAN;
@@ -155,7 +160,8 @@ void ReusableNewton::restore_resume_state(const ResumeState& in) {
   counters_.linear_solves = in.integer("newton.linear_solves");
 }
 
-NewtonResult ReusableNewton::solve(Vec x, double atol) {
+NewtonResult ReusableNewton::solve(Vec x, double atol, ResidualMeasure measure) {
+  measure_ = std::move(measure);
   // A solve that fails after starting from the tangent of an earlier solve is tried once
   // more from the same guess by full Newton (RADAU5 retries with a fresh Jacobian): the
   // failure may be the old tangent's (a step across many kinks, e.g. droppers changing
@@ -237,6 +243,11 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   CATENA_PETSC(SNESGetIterationNumber(snes_.get(), &its));
   PetscReal norm = 0.0;
   CATENA_PETSC(SNESGetFunctionNorm(snes_.get(), &norm));
+  if (measure_ && std::isfinite(norm)) {
+    Vec F = nullptr;
+    CATENA_PETSC(SNESGetFunction(snes_.get(), &F, nullptr, nullptr));
+    norm = measure_(F);
+  }
   if (local_norm_ >= 0.0) norm = local_norm_;  // SNES keeps the norm before the correction
   counters_.iterations += its;
   counters_.linear_solves += its;

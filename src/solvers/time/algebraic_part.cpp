@@ -61,6 +61,31 @@ double AlgebraicPart::residual_floor(double coefficient, Vec q) const {
   return mass_scale_ / coefficient * 8.0 * eps * std::max(global, 1.0) * std::sqrt(rows);
 }
 
+std::function<double(Vec)> AlgebraicPart::residual_measure(double atol, double floor,
+                                                           int blocks) const {
+  if (!active_ || !(floor > 0.0)) return {};
+  const double weight = atol / (atol + floor);
+  return [this, weight, blocks](Vec r) {
+    PetscInt n = 0;
+    const PetscScalar *x = nullptr, *m = nullptr;
+    CATENA_PETSC(VecGetLocalSize(mask_.get(), &n));
+    CATENA_PETSC(VecGetArrayRead(r, &x));
+    CATENA_PETSC(VecGetArrayRead(mask_.get(), &m));
+    double local[2] = {0.0, 0.0}, global[2] = {0.0, 0.0};  // nodal, constraint rows
+    for (PetscInt i = 0; i < n; ++i)
+      for (int b = 0; b < blocks; ++b) {
+        const double e = x[blocks * i + b];
+        local[m[i] != 0.0 ? 1 : 0] += e * e;
+      }
+    CATENA_PETSC(VecRestoreArrayRead(mask_.get(), &m));
+    CATENA_PETSC(VecRestoreArrayRead(r, &x));
+    MPI_Comm comm = PETSC_COMM_SELF;
+    CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(r), &comm));
+    MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm);
+    return std::sqrt(global[0] + weight * weight * global[1]);
+  };
+}
+
 void AlgebraicPart::take_algebraic(Vec target, Vec source) const {
   if (!active_) return;
   PetscScalar* t = nullptr;

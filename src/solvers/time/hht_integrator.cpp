@@ -256,10 +256,11 @@ StepOutcome HhtIntegrator::attempt(double h, const ErrorTolerance* tol) {
   s.algebraic->take_algebraic(s.state.pending_a(), s.state.q());  // and constant λ
   if (!s.round_off.known())  // first attempt: the floor from a tangent at the start
     s.evaluate_tangent(s.state.q(), s.state.v(), s.state.time());
-  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.state.q()) +
-                       (1.0 + s.options.alpha) * s.round_off.at(s.state.q());
+  const double atol = s.options.atol + s.options.rtol * s.scale0 +
+                      (1.0 + s.options.alpha) * s.round_off.at(s.state.q());
+  const double floor = s.algebraic->residual_floor(s.beta * h * h, s.state.q());
   const NewtonResult result =
-      s.newton->solve(s.state.pending_a(), s.options.atol + s.options.rtol * s.scale0 + floor);
+      s.newton->solve(s.state.pending_a(), atol, s.algebraic->residual_measure(atol, floor));
   return s.finish_attempt(result, tol);
 }
 

@@ -19,8 +19,12 @@
 // on with it converged linearly, often beyond the iteration limit (docs/validation.md,
 // "Dropper slack and re-tension"). `full_newton` re-evaluates the tangent at every iterate.
 //
-// Convergence: ‖F‖₂ ≤ atol (set per solve), or a Newton update below kNewtonStepTolerance
-// relative to the iterate (round-off). Failures are reported, not thrown.
+// Convergence: ‖F‖ ≤ atol (set per solve), or a Newton update below kNewtonStepTolerance
+// relative to the iterate (round-off). ‖F‖ is the 2-norm, or the owner's measure of the
+// solve (`ResidualMeasure`: e.g. constraint rows weighted down to their own round-off
+// floor, so that the force rows still meet atol); the contraction rates use the same
+// measure (a local correction tests the plain 2-norm: stricter). Failures are reported,
+// not thrown.
 #include <petscsnes.h>
 
 #include <functional>
@@ -82,10 +86,12 @@ class ReusableNewton {
     matrix_valid_ = false;
   }
 
-  // Collective. Solves F(x) = 0 from the initial guess in x. A solve that started from
-  // the tangent of an earlier solve and fails is retried once from the same guess with a
-  // fresh tangent; `iterations` counts both attempts.
-  NewtonResult solve(Vec x, double atol);
+  // Collective. The measure ‖F‖ that convergence is tested on; empty: the 2-norm.
+  using ResidualMeasure = std::function<double(Vec F)>;
+  // Collective. Solves F(x) = 0 from the initial guess in x, to ‖F‖ ≤ atol in `measure`.
+  // A solve that started from the tangent of an earlier solve and fails is retried once
+  // from the same guess with a fresh tangent; `iterations` counts both attempts.
+  NewtonResult solve(Vec x, double atol, ResidualMeasure measure = {});
 
   // Collective. One Newton step from x with the current matrix, built (and factored) first
   // only if it is out of date: x ← x − J⁻¹ F(x). No convergence test, no line search, no
@@ -152,6 +158,7 @@ class ReusableNewton {
   bool full_newton_now_ = false;  // this solve re-evaluates the tangent at every iterate
   double local_norm_ = -1.0;  // ‖F‖ after a local correction that ended the solve, else −1
   double atol_ = 0.0, previous_norm_ = 0.0, previous_theta_ = 0.0, max_contraction_ = 0.0;
+  ResidualMeasure measure_;  // of the current solve
   std::string failure_;
 };
 

@@ -420,11 +420,12 @@ StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
   }
   m.predict();
   if (!m.round_off.known()) m.evaluate_start_tangent();  // the floor needs a tangent
+  const double root_s = std::sqrt(static_cast<double>(m.s));
   const double atol =
-      m.options.atol + m.options.rtol * m.scale0 * std::sqrt(static_cast<double>(m.s)) +
-      m.round_off.at(m.state.q()) * std::sqrt(static_cast<double>(m.s)) +
-      m.algebraic->residual_floor(h * h, m.state.q()) * std::sqrt(static_cast<double>(m.s));
-  const NewtonResult result = m.newton->solve(m.x.get(), atol);
+      m.options.atol + m.options.rtol * m.scale0 * root_s + m.round_off.at(m.state.q()) * root_s;
+  const double floor = m.algebraic->residual_floor(h * h, m.state.q()) * root_s;
+  const NewtonResult result =
+      m.newton->solve(m.x.get(), atol, m.algebraic->residual_measure(atol, floor, m.s));
   // The stage vector interleaves s rows per DOF (worst_dof).
   StepOutcome out = newton_outcome(result, m.r.get(), m.counters, m.s);
   if (!out.converged) {

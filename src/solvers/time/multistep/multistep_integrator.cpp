@@ -276,10 +276,10 @@ StepOutcome MultistepIntegrator::attempt(double h, const ErrorTolerance* tol) {
   s.predict();
   CATENA_PETSC(VecSet(s.delta.get(), 0.0));
   if (!s.round_off.known()) s.evaluate_tangent(s.state.q(), s.state.v(), s.state.time());
-  const double floor = s.algebraic->residual_floor(1.0 / (s.w0_newton * s.w0_newton), s.state.q()) +
-                       s.round_off.at(s.state.q());
+  const double atol = s.options.atol + s.options.rtol * s.scale0 + s.round_off.at(s.state.q());
+  const double floor = s.algebraic->residual_floor(1.0 / (s.w0_newton * s.w0_newton), s.state.q());
   const NewtonResult result =
-      s.newton->solve(s.delta.get(), s.options.atol + s.options.rtol * s.scale0 + floor);
+      s.newton->solve(s.delta.get(), atol, s.algebraic->residual_measure(atol, floor));
   return s.finish_attempt(result, tol);
 }
 
