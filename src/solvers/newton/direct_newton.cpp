@@ -1,6 +1,9 @@
 #include "catena/solvers/newton/direct_newton.hpp"
 
+#include <string>
+
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
 #include "catena/solvers/newton/interface_schur.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
 
@@ -22,6 +25,18 @@ void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry
   CATENA_PETSC(PCFactorSetMatSolverType(
       pc, pivoting == Pivoting::not_needed && size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
   enable_mumps_null_pivot_detection(prefix);  // in case the options choose MUMPS
+  if (pivoting != Pivoting::required) return;
+  const std::string option = "-" + prefix + "pc_factor_mat_solver_type";
+  char package[64] = "";
+  PetscBool set = PETSC_FALSE;
+  CATENA_PETSC(
+      PetscOptionsGetString(nullptr, nullptr, option.c_str(), package, sizeof package, &set));
+  if (set && std::string(package) == MATSOLVERPETSC)
+    throw InputError({"", 0, option},
+                     std::string("'") + package +
+                         "': PETSc's LU does not pivot, and this Newton matrix has the zero "
+                         "diagonal rows of Lagrange multipliers (joints, rigid bodies, "
+                         "constraints); accepted: a pivoting package, e.g. mumps (the default)");
 }
 
 }  // namespace
@@ -55,7 +70,7 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting) {
   int size = 1;
   MPI_Comm_size(comm, &size);
-  if (size == 1 || pivoting == Pivoting::needed) return false;
+  if (size == 1 || pivoting != Pivoting::not_needed) return false;
   for (const char* option : {"pc_type", "pc_factor_mat_solver_type"}) {
     PetscBool set = PETSC_FALSE;
     CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, ("-" + prefix + option).c_str(), &set));

@@ -26,7 +26,11 @@ enum class JacobianSymmetry { symmetric, general };
 // interface instead (interface_schur.hpp: each rank's interior with PETSc's LU, the few
 // interface rows' Schur complement redundantly), not by MUMPS. The options database still
 // decides last (-<prefix>pc_type lu or -<prefix>pc_factor_mat_solver_type mumps: MUMPS).
-enum class Pivoting { needed, not_needed };
+// `required`: the matrix has zero diagonal rows (Lagrange multipliers), which only a
+// pivoting factorisation gets past; the options may not choose PETSc's own LU for it
+// (an input error naming the option: every step's factorisation would fail at its zero
+// pivot, and the step be halved down to dt_min).
+enum class Pivoting { needed, not_needed, required };
 
 // Logically collective on the SNES.
 void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry,

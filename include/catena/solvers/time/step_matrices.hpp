@@ -44,7 +44,7 @@ struct StepMatrices {
   // Whether J needs a pivoting factorisation: only multipliers add zero diagonal rows (the
   // other rows keep mass, or stiffness at a massless node).
   Pivoting pivoting() const {
-    return algebraic->active() ? Pivoting::needed : Pivoting::not_needed;
+    return algebraic->active() ? Pivoting::required : Pivoting::not_needed;
   }
 
   // Restarts. Not collective. The tangent's point as entries "<prefix>.tangent_q",

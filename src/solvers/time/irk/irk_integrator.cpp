@@ -375,6 +375,7 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
   NewtonSettings settings;
   settings.max_iterations = options.max_newton_iterations;
   settings.full_newton = options.full_newton;
+  settings.pivoting = m.algebraic->active() ? Pivoting::required : Pivoting::needed;
   m.newton = std::make_unique<ReusableNewton>(
       system.comm(), m.decoupled ? m.decoupled->operator_matrix() : m.block->matrix(), m.r.get(),
       "irk_", JacobianSymmetry::general, settings, [&m](Vec xk, Vec rk) { m.residual(xk, rk); },
