@@ -26,17 +26,21 @@ void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry
       pc, pivoting == Pivoting::not_needed && size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
   enable_mumps_null_pivot_detection(prefix);  // in case the options choose MUMPS
   if (pivoting != Pivoting::required) return;
-  const std::string option = "-" + prefix + "pc_factor_mat_solver_type";
-  char package[64] = "";
-  PetscBool set = PETSC_FALSE;
-  CATENA_PETSC(
-      PetscOptionsGetString(nullptr, nullptr, option.c_str(), package, sizeof package, &set));
-  if (set && std::string(package) == MATSOLVERPETSC)
-    throw InputError({"", 0, option},
-                     std::string("'") + package +
-                         "': PETSc's LU does not pivot, and this Newton matrix has the zero "
-                         "diagonal rows of Lagrange multipliers (joints, rigid bodies, "
-                         "constraints); accepted: a pivoting package, e.g. mumps (the default)");
+  // The option under both of PETSc's names, its value in any case (PETSc ignores it).
+  for (const char* name : {"pc_factor_mat_solver_type", "pc_factor_mat_solver_package"}) {
+    const std::string option = "-" + prefix + name;
+    char package[64] = "";
+    PetscBool set = PETSC_FALSE, petsc = PETSC_FALSE;
+    CATENA_PETSC(
+        PetscOptionsGetString(nullptr, nullptr, option.c_str(), package, sizeof package, &set));
+    if (set) CATENA_PETSC(PetscStrcasecmp(package, MATSOLVERPETSC, &petsc));
+    if (petsc)
+      throw InputError({"", 0, option},
+                       std::string("'") + package +
+                           "': PETSc's LU does not pivot, and this Newton matrix has the zero "
+                           "diagonal rows of Lagrange multipliers (joints, rigid bodies, "
+                           "constraints); accepted: a pivoting package, e.g. mumps (the default)");
+  }
 }
 
 }  // namespace

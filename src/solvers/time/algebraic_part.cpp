@@ -68,7 +68,10 @@ std::function<double(Vec)> AlgebraicPart::residual_measure(double atol, double f
   return [this, weight, blocks](Vec r) {
     PetscInt n = 0;
     const PetscScalar *x = nullptr, *m = nullptr;
+    PetscInt n_r = 0;
     CATENA_PETSC(VecGetLocalSize(mask_.get(), &n));
+    CATENA_PETSC(VecGetLocalSize(r, &n_r));
+    CATENA_ASSERT(n_r == blocks * n, "AlgebraicPart::residual_measure: residual of another layout");
     CATENA_PETSC(VecGetArrayRead(r, &x));
     CATENA_PETSC(VecGetArrayRead(mask_.get(), &m));
     double local[2] = {0.0, 0.0}, global[2] = {0.0, 0.0};  // nodal, constraint rows

@@ -192,7 +192,7 @@ struct DecoupledStageSolver::Impl {
 DecoupledStageSolver::DecoupledStageSolver(Mat pattern, const Eigen::MatrixXd& A,
                                            const Eigen::MatrixXd& A2,
                                            const TableauDecomposition& form,
-                                           const std::string& prefix)
+                                           const std::string& prefix, Pivoting pivoting)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.s = static_cast<int>(A.rows());
@@ -221,7 +221,7 @@ DecoupledStageSolver::DecoupledStageSolver(Mat pattern, const Eigen::MatrixXd& A
       block.solution = block.pair->create_vector();
     }
     const std::string block_prefix = prefix + "block" + std::to_string(m.blocks.size()) + "_";
-    block.ksp = create_direct_ksp(comm, block_prefix, JacobianSymmetry::general);
+    block.ksp = create_direct_ksp(comm, block_prefix, JacobianSymmetry::general, pivoting);
     m.blocks.push_back(std::move(block));
   }
   for (int i = 0; i < m.s; ++i)

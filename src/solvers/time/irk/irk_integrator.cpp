@@ -367,7 +367,9 @@ IrkIntegrator::IrkIntegrator(assembly::SecondOrderSystem& system, const IrkOptio
                          "; use coupled (or auto)");
   const Mat pattern = m.algebraic->active() ? m.mass_coupling.get() : m.mass.get();
   if (form && options.linear_algebra != StageLinearAlgebra::coupled)
-    m.decoupled = std::make_unique<DecoupledStageSolver>(pattern, m.T.A, m.A2, *form, "irk_");
+    m.decoupled = std::make_unique<DecoupledStageSolver>(
+        pattern, m.T.A, m.A2, *form, "irk_",
+        m.algebraic->active() ? Pivoting::required : Pivoting::needed);
   else
     m.block = std::make_unique<BlockMatrix>(m.mass.get(), m.s);
   m.x = create_interleaved_vector(m.state.q(), m.s);

@@ -37,6 +37,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/petsc_handle.hpp"
+#include "catena/solvers/newton/direct_newton.hpp"
 #include "catena/solvers/time/irk/tableau_decomposition.hpp"
 
 namespace catena::solvers {
@@ -55,9 +56,11 @@ class DecoupledStageSolver {
  public:
   // Collective. pattern: an assembled n × n MPIAIJ matrix with K's, C's and M's pattern.
   // A, A2: the tableau's A and A² (for the shell operator's product, which must equal the
-  // coupled stage matrix's), A = T D T⁻¹ by `form`. Block KSPs: prefix + "block<b>_".
+  // coupled stage matrix's), A = T D T⁻¹ by `form`. Block KSPs: prefix + "block<b>_",
+  // factored with `pivoting` (direct_newton.hpp; `required` with multipliers).
   DecoupledStageSolver(Mat pattern, const Eigen::MatrixXd& A, const Eigen::MatrixXd& A2,
-                       const TableauDecomposition& form, const std::string& prefix);
+                       const TableauDecomposition& form, const std::string& prefix,
+                       Pivoting pivoting = Pivoting::needed);
   ~DecoupledStageSolver();
   DecoupledStageSolver(const DecoupledStageSolver&) = delete;
   DecoupledStageSolver& operator=(const DecoupledStageSolver&) = delete;
