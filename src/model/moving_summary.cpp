@@ -129,22 +129,20 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   const double t_end = dynamic ? m.dynamic_options.duration : 0.0;
   if (!m.moving_loads.empty()) describe_moving_loads(m, t_end, t, notes);
   if (m.contacts.empty()) return;
-  // How many pantographs have a property: none, all or some of them, in words.
-  const auto share = [&m](bool MovingContact::*property, const char* none, const char* all,
-                          const char* some) {
-    const auto n = std::count_if(m.contacts.begin(), m.contacts.end(),
-                                 [&](const MovingContact& c) { return c.*property; });
-    return n == 0 ? none : n == static_cast<std::ptrdiff_t>(m.contacts.size()) ? all : some;
+  // How many pantographs have a property, and that share in words (none, all or some).
+  const auto count = [&m](bool MovingContact::*property) {
+    return static_cast<std::size_t>(std::count_if(
+        m.contacts.begin(), m.contacts.end(), [&](const MovingContact& c) { return c.*property; }));
   };
-  const char* contact = share(&MovingContact::bilateral, "penalty contact", "bilateral contact",
-                              "penalty and bilateral contacts");
+  const auto share = [&m](std::size_t n, const char* none, const char* all, const char* some) {
+    return n == 0 ? none : n == m.contacts.size() ? all : some;
+  };
+  const char* contact = share(count(&MovingContact::bilateral), "penalty contact",
+                              "bilateral contact", "penalty and bilateral contacts");
+  const std::size_t mechanisms = count(&MovingContact::mechanism);
   const char* kind =
-      share(&MovingContact::mechanism, "lumped-mass stages moving vertically",
+      share(mechanisms, "lumped-mass stages moving vertically",
             "single-arm mechanisms of rigid bodies", "lumped stages and single-arm mechanisms");
-  const bool any_lumped = std::any_of(m.contacts.begin(), m.contacts.end(),
-                                      [](const MovingContact& c) { return !c.mechanism; });
-  const bool any_mechanism = std::any_of(m.contacts.begin(), m.contacts.end(),
-                                         [](const MovingContact& c) { return c.mechanism; });
   t.row("pantographs", cat(std::to_string(m.contacts.size()), " (", kind, ", ", contact, ")"));
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
@@ -200,11 +198,11 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
     if (c.damping == 0.0 && !c.bilateral)
       notes.left_out.push_back(cat(who, ": contact damping (contact.damping 0)"));
   }
-  if (any_lumped)
+  if (mechanisms < m.contacts.size())
     notes.left_out.push_back(
         "pantograph stages' weight (cancelled: the static force is the net uplift), their "
         "horizontal motion and the head's rotation");
-  if (any_mechanism)
+  if (mechanisms > 0)
     notes.left_out.push_back(
         "arm_en50318 pantographs: the head's motion along the wire relative to the contact "
         "point (the contact acts at the head's point, at the wire's moving contact point)");

@@ -55,8 +55,8 @@ double weighted_error_norm(const ErrorTolerance& tol, Vec error, Vec q0, Vec q1)
 struct StepOutcome {
   bool converged = false;  // Newton converged (if not, `failure` says why)
   int newton_iterations = 0;
-  double residual_norm =
-      0.0;  // norm of the last Newton residual (its measure: reusable_newton.hpp), N
+  // Norm of the last Newton residual, N (the solve's measure: reusable_newton.hpp).
+  double residual_norm = 0.0;
   // Weighted local error estimate (≤ 1: acceptable) when the integrator has an embedded
   // estimate and the driver asked for it; < 0 otherwise.
   double error = -1.0;
