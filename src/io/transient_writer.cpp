@@ -122,6 +122,13 @@ class Series {
     for (hsize_t n : shape_) dims.push_back(n);
     file_->agreed({"H5Dset_extent", path_, name_},
                   [&] { return H5Dset_extent(dataset_.get(), dims.data()); });
+    // Every rank reads the dataset's header here, so a metadata-cache sync point that the
+    // extension made due runs on every rank at this call. Left to the write, it would run
+    // only on the ranks that look chunks up there (those with rows to write) while the
+    // others went on to the collective write: a hang (from_root, below, has the history).
+    H5O_info_t header{};
+    check_hdf5_status(H5Oget_info2(dataset_.get(), &header, H5O_INFO_BASIC), "H5Oget_info2", path_,
+                      name_);
     const DataspaceHandle file_space(
         checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
     std::vector<hsize_t> start(dims.size(), 0), count(dims);
@@ -211,6 +218,19 @@ struct TransientWriter::Impl {
     std::vector<double> slider_position, slider_speed;
   } pending;
   void write_pending_samples();
+  // Collective. Rows whose values every rank holds alike (time, contact, bodies, sliders,
+  // the step series) are written by every rank, whole, with rank 0's values (broadcast
+  // here): every rank then selects the same chunks in the collective write. When rank 0
+  // alone selected them, HDF5 1.10 looked the chunks up on rank 0 only, and a metadata
+  // cache sync point falling due there ran on rank 0 alone while the other ranks went on
+  // to the write: a 2-rank EN 50318 run hung so, 3 s into the dynamics.
+  template <class Value>
+  void from_root(std::vector<Value>& values) const {
+    std::uint64_t n = values.size();
+    MPI_Bcast(&n, 1, MPI_UINT64_T, 0, comm);
+    values.resize(n);
+    MPI_Bcast(values.data(), static_cast<int>(n * sizeof(Value)), MPI_BYTE, 0, comm);
+  }
   bool failed = false;  // a write failed (on every rank alike): the file is only closed
   bool closed = false;
 
@@ -590,8 +610,8 @@ void TransientWriter::Impl::write_pending_samples() {
   write([&] {
     const hid_t x = file.collective_transfer();
     const auto n = static_cast<hsize_t>(pending.n);
-    const RowBlock root_row{0, rank == 0 ? 1 : 0};
-    time.append(x, n, root_row, pending.time.data());
+    from_root(pending.time);
+    time.append(x, n, RowBlock{0, 1}, pending.time.data());
     positions.append(x, n, nodes.block(), pending.positions.data());
     velocities.append(x, n, nodes.block(), pending.velocities.data());
     slopes.append(x, n, nodes.block(), pending.slopes.data());
@@ -603,17 +623,23 @@ void TransientWriter::Impl::write_pending_samples() {
       reaction_moment.append(x, n, supports.block(), pending.reaction_moment.data());
     }
     if (n_contacts > 0) {
-      const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_contacts) : 0};
+      const RowBlock all{0, static_cast<std::int64_t>(n_contacts)};
+      from_root(pending.contact_force);
+      from_root(pending.contact_position);
       contact_force.append(x, n, all, pending.contact_force.data());
       contact_position.append(x, n, all, pending.contact_position.data());
     }
     if (n_bodies > 0) {
-      const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_bodies) : 0};
+      const RowBlock all{0, static_cast<std::int64_t>(n_bodies)};
+      from_root(pending.body_orientation);
+      from_root(pending.body_angular_velocity);
       body_orientation.append(x, n, all, pending.body_orientation.data());
       body_angular_velocity.append(x, n, all, pending.body_angular_velocity.data());
     }
     if (n_sliders > 0) {
-      const RowBlock all{0, rank == 0 ? static_cast<std::int64_t>(n_sliders) : 0};
+      const RowBlock all{0, static_cast<std::int64_t>(n_sliders)};
+      from_root(pending.slider_position);
+      from_root(pending.slider_speed);
       slider_position.append(x, n, all, pending.slider_position.data());
       slider_speed.append(x, n, all, pending.slider_speed.data());
     }
@@ -641,7 +667,12 @@ void TransientWriter::flush() {
         iterations.push_back(r.newton_iterations);
         rejected.push_back(r.rejected);
       }
-      const RowBlock rows{0, s.rank == 0 ? static_cast<std::int64_t>(n) : 0};
+      const RowBlock rows{0, static_cast<std::int64_t>(n)};
+      s.from_root(t);
+      s.from_root(dt);
+      s.from_root(error);
+      s.from_root(iterations);
+      s.from_root(rejected);
       s.step_time.append(x, n, rows, t.data());
       s.step_dt.append(x, n, rows, dt.data());
       s.step_iterations.append(x, n, rows, iterations.data());
@@ -652,7 +683,8 @@ void TransientWriter::flush() {
         for (const StepRecord& r : s.pending_steps)
           for (hsize_t i = 0; i < s.n_contacts; ++i)
             forces.push_back(i < r.contact_force.size() ? r.contact_force[i] : 0.0);
-        const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_contacts) : 0};
+        const RowBlock all{0, static_cast<std::int64_t>(s.n_contacts)};
+        s.from_root(forces);
         s.step_contact_force.append(x, n, all, forces.data());
       }
       if (s.n_registration > 0) {
@@ -664,7 +696,8 @@ void TransientWriter::flush() {
                         " registration heights, the model has " + std::to_string(s.n_registration));
           heights.insert(heights.end(), r.registration_height.begin(), r.registration_height.end());
         }
-        const RowBlock all{0, s.rank == 0 ? static_cast<std::int64_t>(s.n_registration) : 0};
+        const RowBlock all{0, static_cast<std::int64_t>(s.n_registration)};
+        s.from_root(heights);
         s.step_registration_height.append(x, n, all, heights.data());
       }
       s.pending_steps.clear();
