@@ -336,6 +336,18 @@ CommandLine parse_command_line(int argc, char** argv) {
         throw InputError({"", 0, a}, "'" + a + "' is an option of " + owner + " (catena " + owner +
                                          " SCENE.yaml " + a + "), not of " + cl.command);
       (a == "--realtime" ? cl.realtime : a == "--error-bar" ? cl.error_bar : cl.ids) = true;
+    } else if (a == "--error-bar-ranks") {
+      if (cl.command != "run")
+        throw InputError({"", 0, a}, "'" + a + "' is an option of run (catena run SCENE.yaml " + a +
+                                         " K), not of " + cl.command);
+      cl.error_bar_ranks =
+          parse_integer(value("--error-bar-ranks"), "--error-bar-ranks",
+                        "a whole number of ranks >= 1, fewer than the run's (mpirun -n)");
+      if (cl.error_bar_ranks < 1)
+        throw InputError({"", 0, a}, "--error-bar-ranks " + args[i] +
+                                         ": accepted: a whole number of ranks >= 1, fewer "
+                                         "than the run's (mpirun -n)");
+      cl.error_bar = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
     } else if (a == "--progress") {

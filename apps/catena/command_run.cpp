@@ -96,6 +96,7 @@ void print_summary(MPI_Comm comm, const model::Model& m, const io::StaticResult&
 }  // namespace
 
 void command_run(MPI_Comm comm, const CommandLine& cl) {
+  if (cl.error_bar_ranks > 0) return run_with_concurrent_error_bar(comm, cl);
   model::Model m = load_scene(comm, cl.scene, cl.overrides, memory_budget(comm, cl));
   const int rank = mpi_rank(comm);
   if (rank == 0) {

@@ -6,6 +6,8 @@
 // convergence the three runs show (study/richardson.hpp). Stored in OUT.h5 (/error_bar)
 // and printed. Costs up to the run again: half and a quarter of its steps, but a longer step
 // takes more Newton iterations (EN 50318 with HHT: 0.96 of the run's iterations).
+// `--error-bar-ranks K` runs them on K ranks of their own at the same time as the run
+// (docs/accuracy.md, "Error bar of a run").
 #include <mpi.h>
 
 #include <vector>
@@ -27,5 +29,14 @@ void check_error_bar_request(const CommandLine& cl, const model::Model& m);
 // Collective. Runs the comparison runs and reports; a comparison that cannot run or be
 // compared is reported (stderr) and leaves the run without an error bar, not failed.
 void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
+
+// Collective over `world`. `catena run --error-bar-ranks K`: the last K ranks of `world` run
+// the comparisons (at once on two groups when K >= 2, the one at 2 dt on two thirds of them;
+// one after the other when K = 1) while the others run the scene; then the estimate as
+// run_error_bar's. If the run ends without completing, its comparisons stop at their next
+// step and the run's error is rethrown on its ranks (the comparison ranks return). Throws
+// catena::InputError when K leaves no rank for the run or the scene refuses an error bar,
+// catena::OutputError when the comparisons' directory cannot be made — before anything runs.
+void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl);
 
 }  // namespace catena::app

@@ -51,7 +51,8 @@ const CommandHelp* commands() {
   static const CommandHelp all[] = {
       {"run",
        R"(  catena run   SCENE.yaml [-o OUT.h5] [--set KEY=VALUE ...] [--restart] [--progress S]
-               [--quiet] [--realtime] [--error-bar] [--memory-limit GIB] [PETSc options]
+               [--quiet] [--realtime] [--error-bar] [--error-bar-ranks K]
+               [--memory-limit GIB] [PETSc options]
 )",
        R"(  run     solve the scene (static equilibrium or dynamics) and write OUT.h5 (+ OUT.xmf
           for ParaView)
@@ -72,6 +73,9 @@ const CommandHelp* commands() {
                         (OUT.error_bar/) and estimate this run's time-discretisation
                         error of its statistics or probe track (Richardson, observed
                         order; stored in OUT.h5 /error_bar; up to the run's cost again)
+  --error-bar-ranks K   --error-bar with the runs at 2 dt and 4 dt on the last K ranks
+                        of mpirun -n, at the same time as this run on the others
+                        (K = 1: one after the other on that rank)
 )" + kMemoryOption,
        true},
       {"check", "  catena check SCENE.yaml [--set KEY=VALUE ...] [--memory-limit GIB] [--ids]\n",

@@ -25,6 +25,7 @@
 #include "commands.hpp"
 #include "launcher_watch.hpp"
 #include "run_environment.hpp"
+#include "scene_loading.hpp"
 
 int main(int argc, char** argv) {
   int status = 0;
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     catena::PetscSession petsc(&argc, &argv, nullptr);
     const int rank = catena::mpi_rank(PETSC_COMM_WORLD);
     const catena::app::LauncherWatch launcher_watch;  // ranks never outlive mpirun
+    catena::app::record_job_layout(PETSC_COMM_WORLD);
     try {
       const catena::app::CommandLine cl = catena::app::parse_command_line(argc, argv);
       if (cl.command == "help") {

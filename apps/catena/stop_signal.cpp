@@ -2,6 +2,8 @@
 
 #include <csignal>
 #include <cstdlib>
+#include <functional>
+#include <utility>
 
 namespace catena::app {
 namespace {
@@ -9,6 +11,7 @@ namespace {
 volatile std::sig_atomic_t received = 0;
 using Handler = void (*)(int);
 Handler previous_term = SIG_DFL, previous_int = SIG_DFL;
+std::function<bool()> extra_poll;  // ExtraStop's, while one is alive
 
 extern "C" void on_stop_signal(int signal) {
   if (received != 0) std::_Exit(128 + signal);  // asked twice: stop now
@@ -28,8 +31,11 @@ StopSignal::~StopSignal() {
   std::signal(SIGINT, previous_int);
 }
 
-bool StopSignal::requested() { return received != 0; }
+bool StopSignal::requested() { return received != 0 || (extra_poll && extra_poll()); }
 int StopSignal::signal_number() { return received; }
 void StopSignal::request(int signal) { received = signal; }
+
+ExtraStop::ExtraStop(std::function<bool()> poll) { extra_poll = std::move(poll); }
+ExtraStop::~ExtraStop() { extra_poll = nullptr; }
 
 }  // namespace catena::app

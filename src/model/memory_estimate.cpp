@@ -139,6 +139,11 @@ std::string format_gib(double bytes) {
 std::string MemoryBudget::describe() const {
   const std::string ranks_text =
       std::to_string(ranks_on_host) + (ranks_on_host == 1 ? " rank" : " ranks") + " on it";
+  const std::string whole =
+      from_option ? "the --memory-limit per host" : "this host's physical memory";
+  if (job_ranks_on_host > 0)
+    return format_gib(host_bytes) + ", this run's share of " + whole + " (" + ranks_text +
+           " of the job's " + std::to_string(job_ranks_on_host) + ")";
   if (from_option)
     return "the --memory-limit of " + format_gib(host_bytes) + " per host (" + ranks_text + ")";
   return "the " + format_gib(host_bytes) + " of physical memory of this host (" + ranks_text + ")";

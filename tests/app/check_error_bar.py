@@ -1,9 +1,11 @@
 #!/usr/bin/python3
-"""check_error_bar.py RUN.h5 REFERENCE.h5 — the error bar `catena run --error-bar` stored
-in RUN.h5 (/error_bar) against the true error: the RMS distance between RUN's and
-REFERENCE's track of the node that moves most (the plucked string's middle), REFERENCE a
-run of the same scene at a step small enough to count as converged. Passes if the estimate
-is within a factor of 3 of it and rests on an observed order (not the bound)."""
+"""check_error_bar.py RUN.h5 REFERENCE.h5 [SAME_AS.h5] — the error bar `catena run
+--error-bar` stored in RUN.h5 (/error_bar) against the true error: the RMS distance between
+RUN's and REFERENCE's track of the node that moves most (the plucked string's middle),
+REFERENCE a run of the same scene at a step small enough to count as converged. Passes if
+the estimate is within a factor of 3 of it and rests on an observed order (not the bound),
+and, with SAME_AS (the same run's error bar made another way: the comparison runs beside the
+run, --error-bar-ranks), if both files hold the same estimate and order to 1e-9."""
 import math
 import sys
 
@@ -38,6 +40,14 @@ def main():
         sys.exit("the estimate is the bound, not a Richardson estimate")
     if not (true / 3 <= estimate <= 3 * true):
         sys.exit("the estimate is not within a factor of 3 of the true error")
+    if len(sys.argv) > 3:
+        with h5py.File(sys.argv[3], "r") as f:
+            other = dict(f["error_bar"][parts[0]].attrs)
+        for key in ("probe_rms", "probe_rms_order"):
+            a, b = float(bar[key]), float(other[key])
+            print(f"{key}: {a:.12g} here, {b:.12g} in {sys.argv[3]}")
+            if abs(a - b) > 1e-9 * abs(b):
+                sys.exit(f"{key} differs from {sys.argv[3]}'s")
 
 
 if __name__ == "__main__":

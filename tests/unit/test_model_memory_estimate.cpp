@@ -138,6 +138,20 @@ TEST(MemoryBudget, RanksOnOneHostEachHoldTheModel) {
   EXPECT_NE(std::string(e.what()).find("fewer ranks per host"), std::string::npos) << e.what();
 }
 
+// A run that shares its host with other runs of the job (a study's groups, the comparison
+// runs of --error-bar-ranks) is checked against its share, and the refusal says so.
+TEST(MemoryBudget, ARunSharingItsHostIsCheckedAgainstItsShare) {
+  MemoryBudget shared = budget_of(8.0, 1, 1);
+  shared.job_ranks_on_host = 3;
+  EXPECT_EQ(shared.describe(),
+            "8 GiB, this run's share of this host's physical memory (1 rank on it of the job's 3)");
+  shared.from_option = true;
+  EXPECT_EQ(shared.describe(),
+            "8 GiB, this run's share of the --memory-limit per host (1 rank on it of the job's 3)");
+  const InputError e = input_error_of(wire_scene(10'000'000), shared);
+  EXPECT_NE(std::string(e.what()).find("this run's share"), std::string::npos) << e.what();
+}
+
 TEST(MemoryBudget, AnInactiveBudgetChecksNothing) {
   EXPECT_NO_THROW(parse_scene(wire_scene(1000), "w.yaml", {}, MemoryBudget{}));
 }

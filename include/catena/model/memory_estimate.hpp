@@ -68,6 +68,10 @@ struct MemoryBudget {
   bool from_option = false;  // host_bytes is the user's --memory-limit
   int ranks = 1;
   int ranks_on_host = 1;  // the most ranks any host runs
+  // Concurrent runs of one job share a host (a study's groups, the comparison runs of
+  // `catena run --error-bar-ranks`): host_bytes is then this run's share, its ranks' part
+  // of the job's ranks on the host, and the description says so.
+  int job_ranks_on_host = 0;  // the job's ranks on the host of the smallest share; 0: unshared
   bool active() const { return host_bytes > 0.0; }
   // "the 23.4 GiB of physical memory of this host (1 rank on it)" or the option's.
   std::string describe() const;
