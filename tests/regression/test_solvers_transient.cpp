@@ -2,7 +2,9 @@
 // step doubling), output samples land on the fixed output times with dense-output
 // accuracy, a stop request ends the run between steps, and an unreachable tolerance ends
 // with an error naming time, step and the minimum; a multistep method's steps never grow
-// faster than its formula's zero-stability cap, and still grow where the cap is small.
+// faster than its formula's zero-stability cap, and still grow where the cap is small; a
+// fixed step that fails now and then is halved and the run goes on, one that fails at every
+// step stops the run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -157,6 +159,83 @@ TEST(Transient, UnreachableToleranceStopsAtTheMinimumStep) {
     EXPECT_NE(what.find("below its minimum at t = "), std::string::npos);
     EXPECT_NE(what.find("dt_min = 1e-06"), std::string::npos);
     EXPECT_NE(what.find("error estimate"), std::string::npos);
+  }
+}
+
+// HHT whose Newton "fails" on any step longer than `longest` (as a factorisation that
+// cannot pivot made every step of dt fail): the driver halves such steps until they pass.
+class FailsLongSteps : public solvers::TimeIntegrator {
+ public:
+  FailsLongSteps(catena::assembly::SecondOrderSystem& system, double longest)
+      : inner_(system, solvers::HhtOptions{}), longest_(longest) {}
+  std::string name() const override { return inner_.name(); }
+  int order() const override { return inner_.order(); }
+  bool has_embedded_estimate() const override { return inner_.has_embedded_estimate(); }
+  void set_state(double t, Vec q, Vec v, Vec a) override { inner_.set_state(t, q, v, a); }
+  solvers::StepOutcome attempt(double h, const solvers::ErrorTolerance* tol) override {
+    if (h <= longest_) return inner_.attempt(h, tol);
+    solvers::StepOutcome failed;
+    failed.failure = "a step longer than the test's limit";
+    return failed;
+  }
+  void accept() override { inner_.accept(); }
+  void interpolate(double t, Vec q, Vec v) override { inner_.interpolate(t, q, v); }
+  double time() const override { return inner_.time(); }
+  double previous_time() const override { return inner_.previous_time(); }
+  Vec q() const override { return inner_.q(); }
+  Vec v() const override { return inner_.v(); }
+  Vec a() const override { return inner_.a(); }
+  Vec pending_q() const override { return inner_.pending_q(); }
+  Vec pending_v() const override { return inner_.pending_v(); }
+  const solvers::IntegratorCounters& counters() const override { return inner_.counters(); }
+
+ private:
+  solvers::HhtIntegrator inner_;
+  double longest_;
+};
+
+solvers::TransientReport run_failing_long_steps(double longest) {
+  const catena::model::Model m = catena::test::oscillator(kMass, kOmega);
+  catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  catena::test::set_global_value(q.get(), system.dof_map().global_dof(0, 0), kX0);
+  FailsLongSteps integrator(system, longest);
+  integrator.set_state(0.0, q.get(), v.get(), nullptr);
+  solvers::TransientOptions o;
+  o.t_end = 1.0;
+  o.step.dt = 0.01;
+  Recorder recorder(MPI_COMM_WORLD, 0);
+  return solvers::run_transient(system, integrator, o, recorder);
+}
+
+// A fixed step that fails now and then is halved and the run goes on at dt; one that fails
+// at every step, where only steps 128 times shorter converge, stops the run after 50 such
+// steps in a row (they covered 0.39 dt) with the cause, instead of crawling on.
+TEST(Transient, FixedStepsCutNowAndThenGoOn) {
+  catena::test::ensure_petsc();
+  const solvers::TransientReport r = run_failing_long_steps(0.006);  // each step cut to 0.005
+  EXPECT_NEAR(r.t_reached, 1.0, 1e-12);
+  // 200 steps of 0.005 s; the last one, the 0.005 s left to the end, is not a cut.
+  EXPECT_EQ(r.fixed_steps_cut, 199);
+  EXPECT_NEAR(r.smallest_cut_dt, 0.005, 1e-15);
+}
+
+TEST(Transient, FixedStepsThatFailEveryTimeStopTheRun) {
+  catena::test::ensure_petsc();
+  try {
+    run_failing_long_steps(1e-4);
+    FAIL() << "expected a NumericalError";
+  } catch (const catena::NumericalError& e) {
+    const std::string what = e.what();
+    std::printf("  message: %s\n", what.c_str());
+    EXPECT_NE(what.find("the fixed step dt = 0.01 s failed in each of 50 steps in a row from "
+                        "t = 0 s"),
+              std::string::npos);
+    EXPECT_NE(what.find("covered only 0.00390625 s together (the last 7.8125e-05 s)"),
+              std::string::npos);
+    EXPECT_NE(what.find("last failure: a step longer than the test's limit"), std::string::npos);
+    EXPECT_NE(what.find("use a smaller integrator.dt"), std::string::npos);
   }
 }
 

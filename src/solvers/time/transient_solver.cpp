@@ -136,6 +136,7 @@ class Driver {
         h = (factor >= 1.0 && factor <= hold) ? step : step * factor;
       } else {
         h = c.dt;
+        watch_for_stalled_fixed_steps(t, step, rejected > 0);
       }
       record(step, a, rejected, h);
       rejected = 0;
@@ -257,6 +258,34 @@ class Driver {
     observer_.fixed_step_cut({t, failed, h_next, last_failure_.failure, report_.fixed_steps_cut});
   }
 
+  // Fixed steps: a step of dt that fails is retried halved, and dt resumes after it. Where
+  // dt fails at every step and only far shorter steps converge, the run crawls on at their
+  // length (a million attempts without reaching dt_min, seen with a factorisation that
+  // could not pivot): after kStalledSteps cut steps in a row that together covered less
+  // than one dt, the run stops with the cause instead.
+  static constexpr int kStalledSteps = 50;
+  void watch_for_stalled_fixed_steps(double t, double step, bool cut) {
+    if (!cut) {
+      stalled_steps_ = 0;
+      stalled_time_ = 0.0;
+      return;
+    }
+    if (stalled_steps_ == 0) stalled_since_ = t;
+    ++stalled_steps_;
+    stalled_time_ += step;
+    if (stalled_steps_ < kStalledSteps || stalled_time_ >= options_.step.dt) return;
+    std::ostringstream os;
+    os << in_.name() << ": the fixed step dt = " << options_.step.dt << " s failed in each of "
+       << stalled_steps_ << " steps in a row from t = " << stalled_since_
+       << " s, and the halved steps that converged covered only " << stalled_time_
+       << " s together (the last " << step << " s)";
+    const StepOutcome& f = last_failure_;
+    if (!f.failure.empty()) os << "; last failure: " << f.failure;
+    if (f.worst_dof >= 0) os << "; largest residual at " << system_.describe_dof(f.worst_dof);
+    os << "; use a smaller integrator.dt, or adaptive steps (integrator.adaptive: true)";
+    throw NumericalError(os.str());
+  }
+
   void record(double step, const Attempt& a, int rejected, double next_h) {
     if (!options_.step.adaptive && rejected > 0)
       report_.smallest_cut_dt =
@@ -310,6 +339,8 @@ class Driver {
   std::vector<PendingSample> pending_;
   StepOutcome last_failure_;
   TransientReport report_;
+  int stalled_steps_ = 0;  // fixed steps cut in a row (watch_for_stalled_fixed_steps)
+  double stalled_time_ = 0.0, stalled_since_ = 0.0;
 };
 
 }  // namespace
