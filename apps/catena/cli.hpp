@@ -65,7 +65,8 @@ struct CommandLine {
   bool realtime = false;               // run --realtime: measure against the wall clock
   bool error_bar = false;              // run --error-bar: Richardson at 2 dt and 4 dt
   // run --error-bar-ranks K (implies --error-bar): the last K ranks run the comparisons while
-  // the others run the scene (0: the comparisons follow the run on all its ranks).
+  // the others run the scene (0: not given; with --error-bar the comparisons then follow the
+  // run on all its ranks).
   int error_bar_ranks = 0;
   // --memory-limit GIB: the memory per host a run may use (default: physical memory);
   // 0 (--memory-limit off): no memory check.

@@ -19,6 +19,7 @@
 #include "catena/study/richardson.hpp"
 #include "catena/study/study_plan.hpp"
 #include "commands.hpp"
+#include "output_preflight.hpp"
 #include "rank_zero.hpp"
 #include "scene_loading.hpp"
 #include "stop_signal.hpp"
@@ -71,7 +72,8 @@ std::string create_directory(MPI_Comm comm, const fs::path& directory) {
   std::string failure;
   if (mpi_rank(comm) == 0) {
     std::error_code ec;
-    fs::create_directories(directory, ec);
+    // One level: its parent is the output's directory, which the run checks exists.
+    fs::create_directory(directory, ec);
     if (ec) failure = "cannot create " + directory.string() + ": " + ec.message();
   }
   return agreed_failure(comm, failure);
@@ -97,6 +99,9 @@ std::string run_comparison(MPI_Comm comm, const CommandLine& cl, const fs::path&
     const CaseConsole console(directory / (name + ".log"), name);
     command_run(comm, coarse);
   } catch (const Error& e) {
+    failure = "the run at dt " + study::number_text(coarse_dt) + " s failed (" + e.what() + ")";
+  } catch (const std::exception& e) {
+    // Anything else (memory): reported like a failure, so that the ranks still meet.
     failure = "the run at dt " + study::number_text(coarse_dt) + " s failed (" + e.what() + ")";
   } catch (const RunInterrupted& stop) {
     // The run itself is complete: a stop during its error bar costs the error bar only.
@@ -208,15 +213,18 @@ void print_error_bar_entries(const std::vector<io::ErrorBarEntry>& entries) {
 
 void check_error_bar_request(const CommandLine& cl, const model::Model& m) {
   if (!cl.error_bar) return;
+  const std::string flag = cl.error_bar_ranks > 0 ? "--error-bar-ranks" : "--error-bar";
   if (m.analysis != model::AnalysisType::dynamic)
-    throw InputError({cl.scene, 0, "--error-bar"},
-                     "--error-bar estimates the time-discretisation error of a dynamic run; "
-                     "this scene's analysis is static (analysis.type: static)");
+    throw InputError({cl.scene, 0, flag},
+                     flag +
+                         " estimates the time-discretisation error of a dynamic run; "
+                         "this scene's analysis is static (analysis.type: static)");
   if (m.dynamic_options.integrator.adaptive)
-    throw InputError({cl.scene, 0, "--error-bar"},
-                     "--error-bar compares the run with the same run at 2 dt and 4 dt, which "
-                     "needs fixed steps (integrator.adaptive: false); an adaptive run controls "
-                     "its local error by integrator.rtol and atol instead");
+    throw InputError({cl.scene, 0, flag},
+                     flag +
+                         " compares the run with the same run at 2 dt and 4 dt, which "
+                         "needs fixed steps (integrator.adaptive: false); an adaptive run controls "
+                         "its local error by integrator.rtol and atol instead");
 }
 
 void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
@@ -245,12 +253,15 @@ void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl) {
                          (size == 1 ? " rank" : " ranks") + " (mpirun -n); accepted: 1 to " +
                          std::to_string(size - 1) +
                          ", or --error-bar to run the comparisons after the run on every rank");
-  // Every refusal before the ranks part, the same on every rank.
+  // The scene's refusals, the request's and the output paths' before the ranks part, the
+  // same on every rank (the run checks the rest, e.g. --restart, on its own ranks).
   std::string output;
   double dt = 0.0;
   {
-    const model::Model m = load_scene(world, cl.scene, cl.overrides);
+    const model::Model m = load_scene(world, cl.scene, cl.overrides, memory_budget(world, cl));
     check_error_bar_request(cl, m);
+    check_output_path(world, m, cl.output.has_value());
+    check_modal_basis_path(world, m);
     output = m.output.file;
     dt = m.dynamic_options.integrator.dt;
   }
@@ -258,8 +269,8 @@ void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl) {
   if (const std::string failure = create_directory(world, directory); !failure.empty())
     throw OutputError(failure + " (the comparison runs' directory of --error-bar-ranks)");
   // Ranks 0 .. size − k − 1 run the scene. The comparisons: on one rank one after the other;
-  // on more, at once, the run at 2 dt (twice the steps) on two thirds of them.
-  const int first = size - k, at_4dt = k == 1 ? size : size - std::max(1, k / 3);
+  // on more, at once, the run at 2 dt (twice the steps) on about two thirds of them.
+  const int first = size - k, at_4dt = k == 1 ? size : size - std::max(1, (k + 1) / 3);
   const int group_of_rank = rank < first ? 0 : rank < at_4dt ? 1 : 2;
   std::vector<int> factors;
   if (group_of_rank == 1) factors.push_back(2);
@@ -278,6 +289,9 @@ void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl) {
           directory.c_str());
     std::fflush(stdout);
   }
+  // A SIGTERM to the job while a rank waits (for its group's next run, or for the others
+  // at the end) is kept, not fatal: the run stops cleanly and tells the comparisons.
+  const StopSignal signals;
   MPI_Comm group = MPI_COMM_NULL;
   MPI_Comm_split(world, group_of_rank, rank, &group);
   std::exception_ptr run_failure;  // the run's own: rethrown on its ranks at the end
@@ -291,6 +305,9 @@ void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl) {
     } catch (const Error&) {
       run_failure = std::current_exception();
     } catch (const RunInterrupted&) {
+      run_failure = std::current_exception();
+    } catch (const std::exception&) {
+      // Also rethrown at the end: the comparison ranks must still hear that the run ended.
       run_failure = std::current_exception();
     }
     if (rank == 0) {

@@ -34,9 +34,11 @@ void run_error_bar(MPI_Comm comm, const CommandLine& cl, const model::Model& m);
 // the comparisons (at once on two groups when K >= 2, the one at 2 dt on two thirds of them;
 // one after the other when K = 1) while the others run the scene; then the estimate as
 // run_error_bar's. If the run ends without completing, its comparisons stop at their next
-// step and the run's error is rethrown on its ranks (the comparison ranks return). Throws
-// catena::InputError when K leaves no rank for the run or the scene refuses an error bar,
-// catena::OutputError when the comparisons' directory cannot be made — before anything runs.
+// time step (not during their set-up) and the run's error is rethrown on its ranks (the
+// comparison ranks return). Throws catena::InputError when K leaves no rank for the run, the
+// scene or its output path is refused or it refuses an error bar, catena::OutputError when
+// the comparisons' directory cannot be made — all before the ranks part; the run's own
+// checks (--restart, the output lock) follow on its ranks.
 void run_with_concurrent_error_bar(MPI_Comm world, const CommandLine& cl);
 
 }  // namespace catena::app

@@ -32,24 +32,29 @@ model::MemoryBudget memory_budget(MPI_Comm comm, const CommandLine& cl) {
   budget.ranks = mpi_size(comm);
   const int on_host = ranks_on_this_host(comm);
   MPI_Allreduce(&on_host, &budget.ranks_on_host, 1, MPI_INT, MPI_MAX, comm);
-  // Other runs of the job (a study's other groups, --error-bar-ranks' comparisons) share
-  // the host: this run may use its ranks' part of it, the smallest part on any host.
+  // Other runs of the job (a study's other groups, --error-bar-ranks' comparisons) may share
+  // a host: each of the job's ranks there may use its part of the host's memory, and the
+  // run its ranks' parts. The smallest part per rank on any host, times the ranks of the run
+  // on its fullest host, is the budget that host's need is compared with.
   const int job_on_host = std::max(job_ranks_on_this_host, on_host);
-  const double share = static_cast<double>(on_host) / job_on_host;
-  double smallest_share = share;
-  MPI_Allreduce(&share, &smallest_share, 1, MPI_DOUBLE, MPI_MIN, comm);
-  if (smallest_share < 1.0) {
-    const int mine = share == smallest_share ? job_on_host : 0;
-    MPI_Allreduce(&mine, &budget.job_ranks_on_host, 1, MPI_INT, MPI_MAX, comm);
-  }
+  double host = 0.0;
   if (cl.memory_limit_gib) {
-    budget.host_bytes = *cl.memory_limit_gib * 1024.0 * 1024.0 * 1024.0;
+    host = *cl.memory_limit_gib * 1024.0 * 1024.0 * 1024.0;
     budget.from_option = true;
   } else {
-    const double mine = model::physical_memory_bytes();
-    MPI_Allreduce(&mine, &budget.host_bytes, 1, MPI_DOUBLE, MPI_MIN, comm);
+    host = model::physical_memory_bytes();
   }
-  budget.host_bytes *= smallest_share;
+  const double mine = host / job_on_host;
+  double per_rank = mine;
+  MPI_Allreduce(&mine, &per_rank, 1, MPI_DOUBLE, MPI_MIN, comm);
+  budget.host_bytes = per_rank * budget.ranks_on_host;
+  int shared = on_host < job_on_host ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &shared, 1, MPI_INT, MPI_MAX, comm);
+  if (shared) {
+    // The job's ranks on the run's fullest host, for the message.
+    const int there = on_host == budget.ranks_on_host ? job_on_host : 0;
+    MPI_Allreduce(&there, &budget.job_ranks_on_host, 1, MPI_INT, MPI_MAX, comm);
+  }
   return budget;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 
@@ -54,12 +55,16 @@ DataspaceHandle rows_space(std::int64_t n_rows, int n_columns, const std::string
 // metadata cache's dirty-bytes threshold, at which parallel HDF5 makes every rank meet to
 // write the metadata (a sync point), from its default of 256 KiB down to N (>= 512), so that
 // tests meet sync points in every write instead of once in a long run.
-void apply_sync_bytes_hook(hid_t access, const std::string& path) {
+// Collective: rank 0's value on every rank (HDF5 needs the same cache settings on all).
+void apply_sync_bytes_hook(MPI_Comm comm, hid_t access, const std::string& path) {
   constexpr const char* variable = "CATENA_HDF5_SYNC_BYTES";
-  const char* text = std::getenv(variable);
-  if (text == nullptr || *text == '\0') return;
+  std::string text;
+  if (mpi_rank(comm) == 0)
+    if (const char* value = std::getenv(variable); value != nullptr) text = value;
+  broadcast_string(comm, text);
+  if (text.empty()) return;
   char* end = nullptr;
-  const long bytes = std::strtol(text, &end, 10);
+  const long bytes = std::strtol(text.c_str(), &end, 10);
   if (*end != '\0' || bytes < 512 || bytes > (32L << 20))
     throw InputError({"", 0, variable}, std::string(variable) + "=" + text +
                                             ": accepted: a whole number of bytes, 512 to 33554432");
@@ -76,7 +81,7 @@ ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path)
     : comm_(comm), path_(std::move(path)) {
   const PropertyListHandle access = create_property_list(H5P_FILE_ACCESS, path_);
   check_hdf5_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio", path_);
-  apply_sync_bytes_hook(access.get(), path_);
+  apply_sync_bytes_hook(comm, access.get(), path_);
   // The 1.8 object format is the oldest with dense attribute storage (below).
   check_hdf5_status(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST),
                     "H5Pset_libver_bounds", path_);
@@ -97,7 +102,7 @@ ParallelHdf5File::ParallelHdf5File(MPI_Comm comm, std::string path, OpenExisting
     : comm_(comm), path_(std::move(path)) {
   const PropertyListHandle access = create_property_list(H5P_FILE_ACCESS, path_);
   check_hdf5_status(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "H5Pset_fapl_mpio", path_);
-  apply_sync_bytes_hook(access.get(), path_);
+  apply_sync_bytes_hook(comm, access.get(), path_);
   file_ = agreed_create<FileHandle>(
       {"H5Fopen", path_}, [&] { return H5Fopen(path_.c_str(), H5F_ACC_RDWR, access.get()); });
   collective_transfer_ = create_property_list(H5P_DATASET_XFER, path_);

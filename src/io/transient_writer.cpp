@@ -126,9 +126,9 @@ class Series {
     // extension made due runs on every rank at this call. Left to the write, it would run
     // only on the ranks that look chunks up there (those with rows to write) while the
     // others went on to the collective write: a hang (from_root, below, has the history).
-    H5O_info_t header{};
-    check_hdf5_status(H5Oget_info2(dataset_.get(), &header, H5O_INFO_BASIC), "H5Oget_info2", path_,
-                      name_);
+    H5O_info_t header{};  // HDF5 1.10's H5O_info_t (H5Oget_info2)
+    file_->agreed({"H5Oget_info2", path_, name_},
+                  [&] { return H5Oget_info2(dataset_.get(), &header, H5O_INFO_BASIC); });
     const DataspaceHandle file_space(
         checked_hdf5_id(H5Dget_space(dataset_.get()), "H5Dget_space", path_, name_));
     std::vector<hsize_t> start(dims.size(), 0), count(dims);
@@ -229,7 +229,13 @@ struct TransientWriter::Impl {
     std::uint64_t n = values.size();
     MPI_Bcast(&n, 1, MPI_UINT64_T, 0, comm);
     values.resize(n);
-    MPI_Bcast(values.data(), static_cast<int>(n * sizeof(Value)), MPI_BYTE, 0, comm);
+    // In pieces of at most 1 GiB: an int counts the bytes of one broadcast.
+    auto* bytes = reinterpret_cast<char*>(values.data());
+    for (std::uint64_t done = 0, total = n * sizeof(Value); done < total;) {
+      const std::uint64_t piece = std::min<std::uint64_t>(total - done, 1ULL << 30);
+      MPI_Bcast(bytes + done, static_cast<int>(piece), MPI_BYTE, 0, comm);
+      done += piece;
+    }
   }
   bool failed = false;  // a write failed (on every rank alike): the file is only closed
   bool closed = false;
