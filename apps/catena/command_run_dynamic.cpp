@@ -31,6 +31,7 @@
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
 #include "catena/post/contact_resolution.hpp"
+#include "catena/solvers/modal/modal_integrator.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "catena/solvers/time/consistent_acceleration.hpp"
@@ -717,6 +718,11 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
         k.factorizations, k.residual_evaluations, wall, stepping,
         stepping / std::max(report.t_reached - t_begin, 1e-300));
     print_peak_memory(rank, memory, mpi_size(comm));
+    if (const auto* modal_run = dynamic_cast<const solvers::ModalIntegrator*>(integrator.get()))
+      std::printf(
+          "modal model: the field rebuilt from the modes %ld times (field samples, "
+          "checkpoints; the steps need none)\n",
+          modal_run->field_rebuilds());
     if (realtime_summary) RealtimeMonitor::print(rank, *realtime_summary, m.output.interval);
     std::printf(
         "output: %s (%ld samples; ParaView: %s, or %s with the displacements), "

@@ -53,6 +53,7 @@ Eigen::VectorXd ModalIntegrator::pantograph_values(Vec v) const {
 
 void ModalIntegrator::rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y, bool rates,
                               Vec out) const {
+  ++field_rebuilds_;
   const double* base = nullptr;
   double* a = nullptr;
   if (!rates) CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
@@ -67,6 +68,7 @@ void ModalIntegrator::rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y
 void ModalIntegrator::rebuild_state(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot,
                                     const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot, Vec q,
                                     Vec v) const {
+  ++field_rebuilds_;
   const double* base = nullptr;
   double *a = nullptr, *b = nullptr;
   CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));

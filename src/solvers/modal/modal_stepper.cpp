@@ -36,6 +36,7 @@ ModalStepper::ModalStepper(ModalDynamics dynamics) : d_(std::move(dynamics)) {
     dropper_damping_(j) = dr.damping;
     dropper_sign_(j) = dr.in_modes ? -1.0 : 1.0;
   }
+  D_single_ = SinglePrecisionRows(D_);
   const int np = d_.n_pantograph_dofs();
   if (np > 0) {
     Eigen::FullPivLU<Eigen::MatrixXd> lu(d_.Mp);
@@ -283,6 +284,31 @@ void ModalStepper::row_products(Propagator& P, std::size_t c, int row) const {
   P.row_v[c][static_cast<std::size_t>(row)] = D_ * (P.Gv1 * r).matrix();
 }
 
+void ModalStepper::prepare(double h) {
+  Propagator& P = propagator(h);
+  if (D_.rows() == 0) return;
+  const int n = d_.n_modes();
+  // row_products for all rows: (rows ∘ G) Dᵀ = rows (diag(G) Dᵀ), a block of rows at a time.
+  const Eigen::MatrixXd u_weights = P.Gu1.matrix().asDiagonal() * D_.transpose();
+  const Eigen::MatrixXd v_weights = P.Gv1.matrix().asDiagonal() * D_.transpose();
+  constexpr Eigen::Index kBlock = 256;
+  for (std::size_t c = 0; c < d_.contacts.size(); ++c) {
+    const auto n_rows = static_cast<Eigen::Index>(d_.contacts[c].reference.size());
+    const Eigen::Map<const SinglePrecisionRows::RowMajorMatrix> rows(d_.contacts[c].rows.data(),
+                                                                     n_rows, n);
+    for (Eigen::Index first = 0; first < n_rows; first += kBlock) {
+      const Eigen::Index count = std::min(kBlock, n_rows - first);
+      const Eigen::MatrixXd u = rows.middleRows(first, count) * u_weights;
+      const Eigen::MatrixXd v = rows.middleRows(first, count) * v_weights;
+      for (Eigen::Index r = 0; r < count; ++r) {
+        const auto row = static_cast<std::size_t>(first + r);
+        P.row_u[c][row] = u.row(r).transpose();
+        P.row_v[c][row] = v.row(r).transpose();
+      }
+    }
+  }
+}
+
 ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState& to) {
   Propagator& P = propagator(h);
   const int n = d_.n_modes();
@@ -341,9 +367,25 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     }
   }
   // Every dropper's elongation, to find those whose correction turns active; the rates
-  // only of the droppers in the iteration (their damping), one row each.
+  // only of the droppers in the iteration (their damping), one row each. The product with
+  // all the rows is made in single precision; `exact_elongation(j)` forms dropper j's anew
+  // from its exact row (once) and returns the change, for every dropper the step's result
+  // depends on: those in the iteration and those whose test the rounding could decide.
   Eigen::VectorXd eps_free;
-  if (nd > 0) eps_free.noalias() = D_ * eta_free.matrix();
+  std::vector<char> exact(static_cast<std::size_t>(nd), 0);
+  double rounding = 0.0;  // per unit bound: ‖η_free‖₂
+  if (nd > 0) {
+    D_single_.multiply(eta_free.matrix(), eps_free);
+    rounding = eta_free.matrix().norm();
+  }
+  const auto exact_elongation = [&](Eigen::Index j) {
+    if (exact[static_cast<std::size_t>(j)]) return 0.0;
+    exact[static_cast<std::size_t>(j)] = 1;
+    const double e = D_.row(j).dot(eta_free.matrix());
+    const double change = e - eps_free(j);
+    eps_free(j) = e;
+    return change;
+  };
 
   // The unknowns: the contacts on their paths, and the droppers whose correction is active
   // at the start or turns active during the iteration; per unit λ, the change of every
@@ -396,6 +438,7 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
     if (sites[c]->on_path) add(true, c, from.contact_force[c]);
   for (std::size_t j = 0; j < d_.droppers.size(); ++j)
     if (from.slack[j] != 0.0) {
+      exact_elongation(static_cast<Eigen::Index>(j));
       add(false, j, from.slack[j]);
       is_unknown[j] = 1;
     }
@@ -417,9 +460,16 @@ ModalStepResult ModalStepper::step(const ModalState& from, double h, ModalState&
         if (y.lambda != 0.0) modal += y.lambda * y.eps;
       eps = elongations(modal, sites, forces, slack);
       for (std::size_t j = 0; j < d_.droppers.size(); ++j) {
+        if (is_unknown[j]) continue;
         const auto i = static_cast<Eigen::Index>(j);
-        if (!is_unknown[j] &&
-            dropper_sign_(i) * (dropper_tension_(i) + dropper_stiffness_(i) * eps(i)) > 0.0) {
+        const auto test = [&] {
+          return dropper_sign_(i) * (dropper_tension_(i) + dropper_stiffness_(i) * eps(i));
+        };
+        // eps is affine in eps_free with slope 1: an exact eps_free(i) moves eps(i) alike.
+        if (!exact[j] && std::abs(test()) <= dropper_stiffness_(i) * D_single_.bound(i) * rounding)
+          eps(i) += exact_elongation(i);
+        if (test() > 0.0) {
+          eps(i) += exact_elongation(i);
           add(false, j, 0.0);
           is_unknown[j] = 1;
         }

@@ -67,8 +67,10 @@ StateGuard::StateGuard(const assembly::SecondOrderSystem& system, double t_end, 
   }
 }
 
+bool StateGuard::watches_sliders() const { return !system_.model().sliders.empty(); }
+
 void StateGuard::check_sliders(double t, Vec q) const {
-  if (system_.model().sliders.empty()) return;
+  if (!watches_sliders()) return;
   const PetscScalar* x = nullptr;
   CATENA_PETSC(VecGetArrayRead(q, &x));
   std::vector<double> slides;

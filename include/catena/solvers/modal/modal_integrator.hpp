@@ -44,8 +44,14 @@ class ModalIntegrator final : public TimeIntegrator {
   // static correction is left out, as in q().
   bool current_entries(const std::vector<PetscInt>& rows, std::vector<double>& out) const override;
 
+  // Not collective. ModalStepper::prepare for steps of h (the run's dt).
+  void prepare(double h) { stepper_.prepare(h); }
+
   const ModalModel& model() const { return model_; }
   const ModalState& state() const { return current_; }
+  // Not collective. How often a field (q, v, a or a pair) has been rebuilt from the modes so
+  // far: each a pass over the shapes, a field sample's cost; the steps themselves need none.
+  long field_rebuilds() const { return field_rebuilds_; }
 
  private:
   // Not collective (each rank its rows). q0 + Σ φ_i x_i with the pantographs' DOFs set to
@@ -67,6 +73,7 @@ class ModalIntegrator final : public TimeIntegrator {
   VecHandle q_, v_, a_, pending_q_, pending_v_, work_;
   // Which of the vectors above hold the state they stand for.
   mutable bool q_fresh_ = false, v_fresh_ = false, a_fresh_ = false, pending_fresh_ = false;
+  mutable long field_rebuilds_ = 0;
   std::vector<PetscInt> owned_pantograph_;  // per pantograph DOF: its local index or −1
 };
 

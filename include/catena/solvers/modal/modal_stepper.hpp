@@ -13,7 +13,11 @@
 // joins the iteration when its correction turns active. Every measure the laws read is
 // affine in λ, so its change per unit λ is formed once per step (from products D (G ∘ w)
 // kept per step size) and the iteration works on a few numbers per site: a step costs
-// one product, D η_free (D: droppers × modes), and O(modes) per site force.
+// one product, D η_free (D: droppers × modes), and O(modes) per site force. That product
+// is the step's largest part; it is made with D in single precision (single_precision_rows
+// .hpp), and each elongation the step uses (a dropper in the iteration, or one whose slack
+// test lies within the rounding's bound) is formed again from D's exact row, so the step's
+// result is the double-precision one.
 #include <Eigen/Dense>
 #include <array>
 #include <limits>
@@ -22,6 +26,7 @@
 
 #include "catena/solvers/modal/exact_step.hpp"
 #include "catena/solvers/modal/modal_model.hpp"
+#include "catena/solvers/modal/single_precision_rows.hpp"
 
 namespace catena::solvers {
 
@@ -54,6 +59,11 @@ class ModalStepper {
   void settle_forces(ModalState& s) const;
   // One step of h from `from` into `to`.
   ModalStepResult step(const ModalState& from, double h, ModalState& to);
+  // Forms, for steps of h, every path row's dropper products at once (blocked products, a
+  // fraction of a second on EN 50318) instead of each when a contact first reaches its row,
+  // so that those steps cost the same all along the line (real-time runs) and a run's
+  // stepping time is its steps'. Optional; other step sizes stay lazy.
+  void prepare(double h);
   // η̈ and ü at s.
   void accelerations(const ModalState& s, Eigen::VectorXd& eta_ddot, Eigen::VectorXd& u_ddot) const;
   // Contact c's penetration δ (m) at s (positive: in contact), for tests and output.
@@ -116,7 +126,8 @@ class ModalStepper {
   void row_products(Propagator& P, std::size_t c, int row) const;
 
   ModalDynamics d_;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D_;  // droppers × modes
+  SinglePrecisionRows::RowMajorMatrix D_;  // droppers × modes
+  SinglePrecisionRows D_single_;           // D_ rounded, for the product with η_free
   Eigen::VectorXd dropper_tension_, dropper_stiffness_, dropper_damping_;
   Eigen::VectorXd dropper_sign_;  // ∂ΔT/∂T_elastic where active: −1 in the modes, +1 not
   Eigen::MatrixXd Mp_inverse_;

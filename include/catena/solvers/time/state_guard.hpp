@@ -51,6 +51,8 @@ class StateGuard {
   // for every accepted step, so that a slider is stopped where it leaves, not a sample
   // later.
   void check_sliders(double t, Vec q) const;
+  // Not collective (the same on every rank). Whether the model has sliders to check.
+  bool watches_sliders() const;
 
   // Not collective. The end of every such message: which step failed, what to do (also
   // for the checks of step records outside the guard).
