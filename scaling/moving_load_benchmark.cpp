@@ -252,11 +252,14 @@ int main(int argc, char** argv) {
   catena::assembly::SecondOrderSystem system(comm, model);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());
+  // The high-water marks by phase: which phase sets the run's peak memory per rank.
+  const catena::PeakMemory memory_system = catena::peak_memory(comm);
   catena::solvers::StaticReport statics;
   const double t_static = timed(comm, [&] {
     catena::solvers::StaticSolver solver(system, model.static_options);
     statics = solver.solve(q.get());
   });
+  const catena::PeakMemory memory_statics = catena::peak_memory(comm);
   CATENA_PETSC(VecSet(v.get(), 0.0));  // the scene has no initial offsets or velocity
   const catena::model::IntegratorOptions& io = model.dynamic_options.integrator;
   std::unique_ptr<catena::solvers::TimeIntegrator> integrator =
@@ -443,6 +446,12 @@ int main(int argc, char** argv) {
         "(largest), %.0f MiB (smallest), %.0f MiB in all\n",
         n_rest + 1, whole_run, memory.largest_bytes / mib, memory.smallest_bytes / mib,
         memory.total_bytes / mib);
+    std::printf(
+        "  peak memory per rank (largest) by phase: scene and system %.0f MiB (rank %d), "
+        "with the static solve %.0f MiB (rank %d), with the steps %.0f MiB (rank %d)\n",
+        memory_system.largest_bytes / mib, memory_system.largest_rank,
+        memory_statics.largest_bytes / mib, memory_statics.largest_rank, memory.largest_bytes / mib,
+        memory.largest_rank);
     // One JSON object for scaling/scaling_study.py (the names are its CSV columns).
     std::printf(
         "SCALING {\"method\": \"%s\", \"ranks\": %d, \"length_m\": %.17g, "

@@ -77,7 +77,7 @@ int chosen_span(const CommandLine& cl, const model::Model& m,
   return (n_spans + 1) / 2;
 }
 
-std::string number(double value) {
+std::string short_number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
   return text;
@@ -86,16 +86,16 @@ std::string number(double value) {
 // m along the span from its start support: every `step`, and the end support.
 std::vector<double> span_points(double length, double step) {
   const double smallest = length / static_cast<double>(kMaxPoints - 1);
-  const std::string accepted = "; accepted: " + number(smallest) + " m (" +
-                               std::to_string(kMaxPoints) + " points) to " + number(length) +
+  const std::string accepted = "; accepted: " + short_number(smallest) + " m (" +
+                               std::to_string(kMaxPoints) + " points) to " + short_number(length) +
                                " m (the span length)";
   if (step > length)
     throw InputError({"", 0, "--step"},
-                     "a step of " + number(step) + " m is longer than the span" + accepted);
+                     "a step of " + short_number(step) + " m is longer than the span" + accepted);
   const double n = std::floor(length / step * (1.0 + 1e-12));
   if (n + 1.0 > static_cast<double>(kMaxPoints))
     throw InputError({"", 0, "--step"},
-                     "a step of " + number(step) + " m makes too many points" + accepted);
+                     "a step of " + short_number(step) + " m makes too many points" + accepted);
   std::vector<double> x;
   for (int k = 0; k <= static_cast<int>(n); ++k) x.push_back(std::min(k * step, length));
   if (length - x.back() > 1e-9 * length) x.push_back(length);

@@ -30,7 +30,7 @@ std::string joined_formats(const std::vector<std::string>& formats) {
   return out;
 }
 
-std::string number(double x) {
+std::string exact_number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
@@ -61,10 +61,11 @@ void plot_on_this_rank(const StatsArguments& args) {
   const io::TemporaryFile statistics(io::temporary_sibling(prefix + "_statistics.csv", getpid()));
   write_contact_csv(ev, contact.path());
   write_statistics_csv(ev, statistics.path());
-  script_args.insert(script_args.end(),
-                     {contact.path().string(), statistics.path().string(),
-                      number(ev.section.x_start), number(ev.section.x_end), number(args.cutoff_hz),
-                      args.section || ev.run.evaluation_section ? "section" : "record"});
+  script_args.insert(
+      script_args.end(),
+      {contact.path().string(), statistics.path().string(), exact_number(ev.section.x_start),
+       exact_number(ev.section.x_end), exact_number(args.cutoff_hz),
+       args.section || ev.run.evaluation_section ? "section" : "record"});
   if (!draw_figures("plot_run.py", script_args)) throw nothing_drawn(args.file);
 }
 

@@ -75,8 +75,6 @@ std::vector<SweepRow> measure(const std::vector<QueuedCase>& cases,
   return rows;
 }
 
-std::string number(double x) { return study::number_text(x); }
-
 std::string csv_text(const std::vector<study::Variation>& variations,
                      const std::vector<SweepRow>& rows) {
   std::string out = "case";
@@ -93,12 +91,13 @@ std::string csv_text(const std::vector<study::Variation>& variations,
     cell(r.status);
     const bool ok = r.status == "completed";
     const post::ContactStatistics& s = r.statistics;
-    auto stat = [&](double x) { cell(ok ? number(x) : std::string()); };
+    auto stat = [&](double x) { cell(ok ? study::number_text(x) : std::string()); };
     cell(ok ? std::to_string(s.n_samples) : std::string());
     for (double x : {s.mean, s.standard_deviation, s.statistical_max, s.statistical_min, s.max,
                      s.min, s.contact_loss_percent})
       stat(x);
-    cell(ok && s.max_uplift_at_support ? number(1e3 * *s.max_uplift_at_support) : std::string());
+    cell(ok && s.max_uplift_at_support ? study::number_text(1e3 * *s.max_uplift_at_support)
+                                       : std::string());
     cell(ok ? std::to_string(r.work.steps_accepted) : std::string());
     stat(study::stepping_seconds(r.work));
     stat(study::stepping_per_simulated_second(r.work));

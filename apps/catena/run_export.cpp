@@ -10,7 +10,7 @@
 namespace catena::app {
 namespace {
 
-std::string number(double x) {
+std::string ten_digit_number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.10g", x);
   return buffer;
@@ -39,14 +39,14 @@ void write_contact_csv(const RunEvaluation& ev, const std::filesystem::path& pat
   out += '\n';
   const std::size_t n = ev.run.n_samples;
   for (std::size_t k = 0; k < n; ++k) {
-    out += number(ev.run.time[k]);
+    out += ten_digit_number(ev.run.time[k]);
     for (const PantographEvaluation& e : ev.pantographs) {
       out += ',';
-      out += number(e.pantograph->position[k]);
+      out += ten_digit_number(e.pantograph->position[k]);
       out += ',';
-      out += number(e.pantograph->force[k]);
+      out += ten_digit_number(e.pantograph->force[k]);
       out += ',';
-      out += number(e.filtered_force[k]);
+      out += ten_digit_number(e.filtered_force[k]);
     }
     out += '\n';
   }
@@ -73,17 +73,18 @@ void write_statistics_csv(const RunEvaluation& ev, const std::filesystem::path& 
   out += '\n';
   for (const PantographEvaluation& e : ev.pantographs) {
     // The section evaluated; empty cells where the pantograph covered none of it.
-    const std::string start = e.statistics ? number(e.section.x_start) : "";
-    const std::string end = e.statistics ? number(e.section.x_end) : "";
-    out += field(e.pantograph->name) + ',' + number(e.pantograph->speed * kmh_per_ms) + ',' +
-           start + ',' + end + ',' + (ev.finished ? "1" : "0") + ',';
+    const std::string start = e.statistics ? ten_digit_number(e.section.x_start) : "";
+    const std::string end = e.statistics ? ten_digit_number(e.section.x_end) : "";
+    out += field(e.pantograph->name) + ',' + ten_digit_number(e.pantograph->speed * kmh_per_ms) +
+           ',' + start + ',' + end + ',' + (ev.finished ? "1" : "0") + ',';
     if (e.statistics) {
       const post::ContactStatistics& s = *e.statistics;
       out += std::to_string(s.n_samples);
       for (double x : {s.mean, s.standard_deviation, s.statistical_max, s.statistical_min, s.max,
                        s.min, s.contact_loss_percent})
-        out += ',' + number(x);
-      out += ',' + (s.max_uplift_at_support ? number(1e3 * *s.max_uplift_at_support) : "");
+        out += ',' + ten_digit_number(x);
+      out +=
+          ',' + (s.max_uplift_at_support ? ten_digit_number(1e3 * *s.max_uplift_at_support) : "");
     } else {
       out += "0,,,,,,,,";
     }

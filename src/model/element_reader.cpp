@@ -6,7 +6,7 @@
 namespace catena::model::detail {
 namespace {
 
-const std::vector<std::string>& accepted_keys() {
+const std::vector<std::string>& element_keys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k{"id", "section", "nodes", "set"};
     k.insert(k.end(), element_option_keys().begin(), element_option_keys().end());
@@ -34,7 +34,7 @@ std::vector<PendingElement> read_elements(const Field& elements, const SectionTa
   std::unordered_map<std::int64_t, std::size_t> first_with_id;
   for (const Field& entry : elements.items()) {
     entry.expect_map("an element {id, section, nodes, ...}");
-    entry.check_keys(accepted_keys());
+    entry.check_keys(element_keys());
     const Field id = entry.child("id");
     PendingElement element{ElementDesc{}, {}, PrestressSpec{}, entry};
     element.desc.id = id.integer(IntRange::any("an element id"));

@@ -11,7 +11,7 @@ namespace {
 
 constexpr std::int64_t max_elements_per_line = 10'000'000;
 
-const std::vector<std::string>& accepted_keys() {
+const std::vector<std::string>& line_keys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k{"name", "from", "to", "elements", "section"};
     k.insert(k.end(), element_option_keys().begin(), element_option_keys().end());
@@ -54,7 +54,7 @@ class LineBuilder {
 
   void add(const Field& line) {
     line.expect_map("a line {from, to, elements, section, ...}");
-    line.check_keys(accepted_keys());
+    line.check_keys(line_keys());
     const std::string name = read_unique_name(line.child("name"));
     const int from = resolve_end(line.child("from"), build_);
     const int to = resolve_end(line.child("to"), build_);
