@@ -156,7 +156,9 @@ MatHandle SecondOrderSystem::create_matrix() const {
                     static_cast<size_t>(n) + dofs_.ghosts().size());
   std::vector<std::vector<PetscInt>> remote;
   if (mpi_size(comm_) > 1) remote = exchange_boundary_rows(comm_, dofs_, rows);
-  // Each owned row's columns: this rank's, merged with other ranks' where there are any.
+  // Each owned row's columns: this rank's, merged with other ranks' where there are any,
+  // and the diagonal, which a multiplier's row lacks (its constraint does not involve it)
+  // and PETSc's LU needs in the pattern (constraints_last_ordering.hpp).
   const auto visit_owned = [&](auto&& fn) {
     rows.visit(0, static_cast<size_t>(n), [&](size_t row, std::vector<PetscInt>& columns) {
       if (!remote.empty() && !remote[row].empty()) {
@@ -164,7 +166,10 @@ MatHandle SecondOrderSystem::create_matrix() const {
         std::sort(columns.begin(), columns.end());
         columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
       }
-      fn(first + static_cast<PetscInt>(row), columns);
+      const PetscInt global_row = first + static_cast<PetscInt>(row);
+      if (std::find(columns.begin(), columns.end(), global_row) == columns.end())
+        columns.push_back(global_row);
+      fn(global_row, columns);
     });
   };
 

@@ -4,11 +4,32 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
+#include "catena/solvers/newton/constraints_last_ordering.hpp"
 #include "catena/solvers/newton/interface_schur.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
 
 namespace catena::solvers {
 namespace {
+
+// Not collective. The factorisation package the options name (under either of PETSc's
+// option names), or "".
+std::string package_from_options(const std::string& prefix) {
+  for (const char* name : {"pc_factor_mat_solver_type", "pc_factor_mat_solver_package"}) {
+    char package[64] = "";
+    PetscBool set = PETSC_FALSE;
+    CATENA_PETSC(PetscOptionsGetString(nullptr, nullptr, ("-" + prefix + name).c_str(), package,
+                                       sizeof package, &set));
+    if (set) return package;
+  }
+  return {};
+}
+
+bool package_chosen_other_than_petsc(const std::string& prefix) {
+  const std::string package = package_from_options(prefix);
+  PetscBool petsc = PETSC_FALSE;
+  if (!package.empty()) CATENA_PETSC(PetscStrcasecmp(package.c_str(), MATSOLVERPETSC, &petsc));
+  return !package.empty() && !petsc;
+}
 
 // Collective on the PC. The factorisation type and package for `symmetry` and `pivoting`.
 void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry symmetry,
@@ -22,9 +43,15 @@ void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry
   // explicit one is handed to MUMPS as well when the options switch to it, and MUMPS's
   // factors then filled in almost completely (226 s for one factorisation of the EN 50318
   // line instead of 0.02 s).
+  const bool constraints_last = pivoting == Pivoting::constraints_last && size == 1;
   CATENA_PETSC(PCFactorSetMatSolverType(
-      pc, pivoting == Pivoting::not_needed && size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
+      pc, (pivoting == Pivoting::not_needed && size == 1) || constraints_last ? MATSOLVERPETSC
+                                                                              : MATSOLVERMUMPS));
   enable_mumps_null_pivot_detection(prefix);  // in case the options choose MUMPS
+  // The multipliers-last order is PETSc's LU's only: unless the options choose another
+  // package (which would be handed the order as well).
+  if (constraints_last && !package_chosen_other_than_petsc(prefix))
+    CATENA_PETSC(PCFactorSetMatOrderingType(pc, constraints_last_ordering()));
   if (pivoting != Pivoting::required) return;
   // The option under both of PETSc's names, its value in any case (PETSc ignores it).
   for (const char* name : {"pc_factor_mat_solver_type", "pc_factor_mat_solver_package"}) {
@@ -69,6 +96,34 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
     use_interface_schur(ksp, J);
   }
   CATENA_PETSC(SNESSetFromOptions(snes));
+}
+
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry) {
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  PCFailedReason failed = PC_NOERROR;
+  CATENA_PETSC(PCGetFailedReason(pc, &failed));
+  MatSolverType package = nullptr;
+  CATENA_PETSC(PCFactorGetMatSolverType(pc, &package));
+  PetscBool petsc = PETSC_FALSE;
+  if (package) CATENA_PETSC(PetscStrcmp(package, MATSOLVERPETSC, &petsc));
+  if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !petsc || !package_from_options(prefix).empty())
+    return false;
+  // A PC of another type first, so that the factorisation's settings (the order) start
+  // afresh; the options are applied again.
+  CATENA_PETSC(PCReset(pc));
+  CATENA_PETSC(PCSetType(pc, PCNONE));
+  set_direct_factorisation(pc, prefix, symmetry, Pivoting::required);
+  CATENA_PETSC(KSPSetFromOptions(ksp));
+  MPI_Comm comm = MPI_COMM_NULL;
+  CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(ksp), &comm));
+  CATENA_PETSC(PetscPrintf(
+      comm,
+      "note: %s: PETSc's LU of the Newton matrix met a zero pivot with the multipliers taken "
+      "last (dependent constraints, or an unknown only a constraint holds, e.g. a slider on a "
+      "straight path); MUMPS, which pivots, factors it from here on\n",
+      prefix.empty() ? "newton" : prefix.substr(0, prefix.size() - 1).c_str()));
+  return true;
 }
 
 bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting) {

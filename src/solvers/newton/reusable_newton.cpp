@@ -12,6 +12,8 @@ ReusableNewton::ReusableNewton(MPI_Comm comm, Mat J, Vec r, const std::string& p
                                JacobianSymmetry symmetry, const NewtonSettings& settings,
                                Residual residual, MatrixBuilder builder)
     : settings_(settings),
+      prefix_(prefix),
+      symmetry_(symmetry),
       residual_fn_(std::move(residual)),
       builder_(std::move(builder)),
       residual_(r) {
@@ -224,12 +226,15 @@ NewtonResult ReusableNewton::solve_once(Vec x, double atol, bool full_newton) {
   guard_.rethrow_if_any();
   CATENA_PETSC(ierr);
   // MUMPS out of workspace (delayed pivots of a saddle-point matrix): the matrix is factored
-  // again with a larger margin, and Newton goes on from the iterate it stopped at.
+  // again with a larger margin; PETSc's LU with the multipliers last at a zero pivot: MUMPS
+  // factors it (direct_newton.hpp). Newton goes on from the iterate it stopped at.
   for (;;) {
     SNESConvergedReason stopped;
     CATENA_PETSC(SNESGetConvergedReason(snes_.get(), &stopped));
-    if (stopped != SNES_DIVERGED_LINEAR_SOLVE ||
-        !enlarge_mumps_workspace(ksp(), direct_solve_status(ksp())))
+    if (stopped != SNES_DIVERGED_LINEAR_SOLVE) break;
+    if (!enlarge_mumps_workspace(ksp(), direct_solve_status(ksp())) &&
+        !(settings_.pivoting == Pivoting::constraints_last &&
+          fall_back_to_pivoting(ksp(), prefix_, symmetry_)))
       break;
     ierr = SNESSolve(snes_.get(), nullptr, x);
     guard_.rethrow_if_any();

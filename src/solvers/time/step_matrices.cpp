@@ -2,6 +2,7 @@
 
 #include "catena/assembly/compact_matrix.hpp"
 #include "catena/assembly/petsc_call.hpp"
+#include "catena/solvers/newton/constraints_last_ordering.hpp"
 
 namespace catena::solvers {
 
@@ -17,6 +18,7 @@ StepMatrices::StepMatrices(assembly::SecondOrderSystem& s, Vec q) : system(s) {
   CATENA_PETSC(MatDuplicate(mass.get(), MAT_COPY_VALUES, jacobian.out()));
   algebraic = std::make_unique<AlgebraicPart>(system, mass.get());
   if (algebraic->active()) {
+    mark_constraint_rows(jacobian.get(), algebraic->mask());
     coupling = system.create_matrix();
     system.jacobian({q, nullptr, {}}, {0.0, 0.0, 0.0, 1.0, 0.0}, coupling.get());
   }

@@ -29,8 +29,12 @@ enum class JacobianSymmetry { symmetric, general };
 // `required`: the matrix has zero diagonal rows (Lagrange multipliers), which only a
 // pivoting factorisation gets past; the options may not choose PETSc's own LU for it
 // (an input error naming the option: every step's factorisation would fail at its zero
-// pivot, and the step be halved down to dt_min).
-enum class Pivoting { needed, not_needed, required };
+// pivot, and the step be halved down to dt_min). `constraints_last`: the same matrix with
+// its multiplier rows marked (constraints_last_ordering.hpp): on one rank PETSc's LU with
+// the multipliers eliminated last, whose pivots are then the Schur complement's (about
+// five times faster than MUMPS on a catenary with a mechanism pantograph); MUMPS on more
+// ranks, or when the options choose it.
+enum class Pivoting { needed, not_needed, required, constraints_last };
 
 // Logically collective on the SNES.
 void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymmetry symmetry,
@@ -42,6 +46,13 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 // enable_mumps_exact_inertia) before calling.
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
                             Pivoting pivoting = Pivoting::needed);
+
+// Collective on the KSP. After a failed solve of a Pivoting::constraints_last matrix: if
+// PETSc's LU met a zero pivot (dependent constraints, or an unknown that only a constraint
+// holds, such as a slider's arc length on a straight path), the KSP factors with MUMPS, as
+// for Pivoting::required, from now on, and a note says so; returns whether it switched
+// (false for any other failure, or a package the options chose).
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry);
 
 // Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
 // partition interface (interface_schur.hpp) rather than factored whole: on more than one

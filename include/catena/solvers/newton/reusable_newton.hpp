@@ -141,6 +141,8 @@ class ReusableNewton {
                                   PetscReal fnorm, SNESConvergedReason* reason, void* ctx);
 
   NewtonSettings settings_;
+  std::string prefix_;
+  JacobianSymmetry symmetry_;
   Residual residual_fn_;
   MatrixBuilder builder_;
   LinearSolveCheck linear_check_;

@@ -42,9 +42,10 @@ struct StepMatrices {
   // Collective. K, C and the round-off floor's tangent at (q, v, t), the point remembered.
   void evaluate_tangent(Vec q, Vec v, double t);
   // Whether J needs a pivoting factorisation: only multipliers add zero diagonal rows (the
-  // other rows keep mass, or stiffness at a massless node).
+  // other rows keep mass, or stiffness at a massless node), and J has them marked, for an
+  // elimination order that takes them last (constraints_last_ordering.hpp).
   Pivoting pivoting() const {
-    return algebraic->active() ? Pivoting::required : Pivoting::not_needed;
+    return algebraic->active() ? Pivoting::constraints_last : Pivoting::not_needed;
   }
 
   // Restarts. Not collective. The tangent's point as entries "<prefix>.tangent_q",
