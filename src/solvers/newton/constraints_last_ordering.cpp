@@ -68,6 +68,24 @@ void mark_constraint_rows(Mat J, Vec mask) {
   for (PetscInt i = 0; i < n; ++i)
     if (m[i] != 0.0) rows.push_back(first + i);
   CATENA_PETSC(VecRestoreArrayRead(mask, &m));
+  mark_constraint_rows(J, rows);
+}
+
+std::vector<PetscInt> constraint_rows(Mat J) {
+  PetscObject marked = nullptr;
+  CATENA_PETSC(PetscObjectQuery(reinterpret_cast<PetscObject>(J), kMarkedRows, &marked));
+  if (!marked) return {};
+  IS rows = reinterpret_cast<IS>(marked);
+  PetscInt n = 0;
+  CATENA_PETSC(ISGetLocalSize(rows, &n));
+  const PetscInt* r = nullptr;
+  CATENA_PETSC(ISGetIndices(rows, &r));
+  std::vector<PetscInt> out(r, r + n);
+  CATENA_PETSC(ISRestoreIndices(rows, &r));
+  return out;
+}
+
+void mark_constraint_rows(Mat J, const std::vector<PetscInt>& rows) {
   IsHandle marked;
   CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(rows.size()), rows.data(),
                                PETSC_COPY_VALUES, marked.out()));

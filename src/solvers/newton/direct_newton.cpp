@@ -103,10 +103,14 @@ bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry 
   CATENA_PETSC(KSPGetPC(ksp, &pc));
   PCFailedReason failed = PC_NOERROR;
   CATENA_PETSC(PCGetFailedReason(pc, &failed));
-  MatSolverType package = nullptr;
-  CATENA_PETSC(PCFactorGetMatSolverType(pc, &package));
+  // PETSc's LU, or on more ranks the interface Schur solve (a shell PC) of PETSc's LUs.
   PetscBool petsc = PETSC_FALSE;
-  if (package) CATENA_PETSC(PetscStrcmp(package, MATSOLVERPETSC, &petsc));
+  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCSHELL, &petsc));
+  if (!petsc) {
+    MatSolverType package = nullptr;
+    CATENA_PETSC(PCFactorGetMatSolverType(pc, &package));
+    if (package) CATENA_PETSC(PetscStrcmp(package, MATSOLVERPETSC, &petsc));
+  }
   if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !petsc || !package_from_options(prefix).empty())
     return false;
   // A PC of another type first, so that the factorisation's settings (the order) start
@@ -129,7 +133,8 @@ bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry 
 bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivoting) {
   int size = 1;
   MPI_Comm_size(comm, &size);
-  if (size == 1 || pivoting != Pivoting::not_needed) return false;
+  if (size == 1 || (pivoting != Pivoting::not_needed && pivoting != Pivoting::constraints_last))
+    return false;
   for (const char* option : {"pc_type", "pc_factor_mat_solver_type"}) {
     PetscBool set = PETSC_FALSE;
     CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, ("-" + prefix + option).c_str(), &set));

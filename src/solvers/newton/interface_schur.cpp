@@ -10,6 +10,7 @@
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/petsc_handle.hpp"
+#include "catena/solvers/newton/constraints_last_ordering.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -22,9 +23,10 @@ PetscInt petsc(Eigen::Index n) { return static_cast<PetscInt>(n); }
 // A hub joins the interface alone; its neighbours need not.
 constexpr PetscInt kHubColumns = 64;
 
-// This rank's rows of J (global numbers, ascending): interior and interface.
+// This rank's rows of J (global numbers, ascending): interior and interface, and the
+// multipliers' rows among the latter (constraints_last_ordering.hpp).
 struct RowSplit {
-  std::vector<PetscInt> interior, interface;
+  std::vector<PetscInt> interior, interface, constraints;
 };
 
 // Collective. The off-process block's pattern (garray: its columns' global numbers) holds
@@ -66,12 +68,16 @@ RowSplit split_rows(Mat J) {
     CATENA_PETSC(VecScatterDestroy(&scatter));
   }
   RowSplit split;
+  // A multiplier's row has no diagonal of its own: the interior blocks, factored without
+  // pivoting, must not hold one; in the interface its pivot is the Schur complement's.
+  split.constraints = constraint_rows(J);
   {
     const PetscScalar *h = nullptr, *column_hub = nullptr;
     CATENA_PETSC(VecGetArrayRead(hubs.get(), &h));
     CATENA_PETSC(VecGetArrayRead(column_hubs.get(), &column_hub));
     for (PetscInt i = 0; i < n_rows; ++i) {
-      bool shared = h[i] > 0.0;
+      bool shared = h[i] > 0.0 || std::binary_search(split.constraints.begin(),
+                                                     split.constraints.end(), first + i);
       for (PetscInt k = ia[i]; k < ia[i + 1] && !shared; ++k) shared = column_hub[ja[k]] == 0.0;
       (shared ? split.interface : split.interior).push_back(first + i);
     }
@@ -115,6 +121,16 @@ class InterfaceSchur {
       owned_local_.push_back(split.interface[static_cast<std::size_t>(k)] - first);
       owned_position_.push_back(offsets[static_cast<std::size_t>(rank_)] + k);
     }
+    // Every rank's multiplier rows, as places in interface_ (S's rows).
+    const int n_constraints = static_cast<int>(split.constraints.size());
+    MPI_Allgather(&n_constraints, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+    std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
+    std::vector<PetscInt> constraints(static_cast<std::size_t>(offsets.back() + counts.back()));
+    MPI_Allgatherv(split.constraints.data(), n_constraints, MPIU_INT, constraints.data(),
+                   counts.data(), offsets.data(), MPIU_INT, comm);
+    for (const PetscInt row : constraints)
+      schur_constraints_.push_back(static_cast<PetscInt>(
+          std::lower_bound(interface_.begin(), interface_.end(), row) - interface_.begin()));
     CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(split.interior.size()),
                                  split.interior.data(), PETSC_COPY_VALUES, interior_.out()));
     CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(interface_.size()),
@@ -394,13 +410,29 @@ class InterfaceSchur {
           std::lower_bound(entries.begin(), entries.end(), std::pair{all_rows[k], all_columns[k]}) -
           entries.begin());
     all_terms_.resize(n_terms);
-    CATENA_PETSC(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_g, n_g, schur_ia_.data(),
-                                           schur_ja_.data(), schur_values_.data(),
-                                           schur_matrix_.out()));
+    if (schur_constraints_.empty()) {
+      CATENA_PETSC(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_g, n_g, schur_ia_.data(),
+                                             schur_ja_.data(), schur_values_.data(),
+                                             schur_matrix_.out()));
+    } else {
+      // With multipliers among its rows, S is itself a saddle-point matrix: they go last.
+      // Rows of S may share a pattern across that divide (a dense block), which PETSc's LU
+      // would factor as one inode that the order splits (a crash in its numeric kernel): S
+      // is made without inodes, before its assembly detects them (its own copy of the CSR).
+      CATENA_PETSC(MatCreate(PETSC_COMM_SELF, schur_matrix_.out()));
+      CATENA_PETSC(MatSetSizes(schur_matrix_.get(), n_g, n_g, n_g, n_g));
+      CATENA_PETSC(MatSetType(schur_matrix_.get(), MATSEQAIJ));
+      CATENA_PETSC(MatSetOption(schur_matrix_.get(), MAT_USE_INODES, PETSC_FALSE));
+      CATENA_PETSC(MatSeqAIJSetPreallocationCSR(schur_matrix_.get(), schur_ia_.data(),
+                                                schur_ja_.data(), schur_values_.data()));
+      mark_constraint_rows(schur_matrix_.get(), schur_constraints_);
+    }
     CATENA_PETSC(
         MatGetFactor(schur_matrix_.get(), MATSOLVERPETSC, MAT_FACTOR_LU, schur_factor_.out()));
-    CATENA_PETSC(MatGetOrdering(schur_matrix_.get(), MATORDERINGND, schur_row_order_.out(),
-                                schur_column_order_.out()));
+    CATENA_PETSC(
+        MatGetOrdering(schur_matrix_.get(),
+                       schur_constraints_.empty() ? MATORDERINGND : constraints_last_ordering(),
+                       schur_row_order_.out(), schur_column_order_.out()));
     const MatFactorInfo info = factor_info();
     CATENA_PETSC(MatLUFactorSymbolic(schur_factor_.get(), schur_matrix_.get(),
                                      schur_row_order_.get(), schur_column_order_.get(), &info));
@@ -457,6 +489,7 @@ class InterfaceSchur {
   PetscInt first_row_ = 0;                         // this rank's first row, global
   std::vector<PetscInt> interior_local_;           // this rank's interior rows, local numbers
   std::vector<PetscInt> interface_;                // every rank's interface rows, global, ascending
+  std::vector<PetscInt> schur_constraints_;        // the multipliers' places in interface_
   std::vector<PetscInt> owned_local_;              // this rank's interface rows, local numbers
   std::vector<Eigen::Index> owned_position_;       // ... and their places in interface_
   std::vector<Eigen::Index> coupled_position_;     // places of the interface rows in A_CI

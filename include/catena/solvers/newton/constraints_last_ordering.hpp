@@ -11,11 +11,20 @@
 // which PETSc reports as the factorisation's failure (the Newton solve fails).
 #include <petscmat.h>
 
+#include <vector>
+
 namespace catena::solvers {
 
 // Collective on J. Marks which of J's rows (the entries of `mask` that are nonzero, mask
 // laid out as J's rows) are multipliers, for the ordering below (kept with J).
 void mark_constraint_rows(Mat J, Vec mask);
+
+// Not collective. This rank's rows of J marked by mark_constraint_rows (global numbers,
+// ascending), or none.
+std::vector<PetscInt> constraint_rows(Mat J);
+
+// Not collective. Marks J's rows `rows` (this rank's, J's numbers) as multipliers.
+void mark_constraint_rows(Mat J, const std::vector<PetscInt>& rows);
 
 // Not collective. The ordering's name for PCFactorSetMatOrderingType (registered with
 // PETSc on each call, so that a PETSc initialised again finds it). For sequential matrices

@@ -32,8 +32,9 @@ enum class JacobianSymmetry { symmetric, general };
 // pivot, and the step be halved down to dt_min). `constraints_last`: the same matrix with
 // its multiplier rows marked (constraints_last_ordering.hpp): on one rank PETSc's LU with
 // the multipliers eliminated last, whose pivots are then the Schur complement's (about
-// five times faster than MUMPS on a catenary with a mechanism pantograph); MUMPS on more
-// ranks, or when the options choose it.
+// five times faster than MUMPS on a catenary with a mechanism pantograph); on more ranks the
+// interface split with the multipliers among the interface rows (taken last in S); MUMPS
+// when the options choose it.
 enum class Pivoting { needed, not_needed, required, constraints_last };
 
 // Logically collective on the SNES.
