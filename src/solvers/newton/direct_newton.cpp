@@ -11,24 +11,27 @@
 namespace catena::solvers {
 namespace {
 
-// Not collective. The factorisation package the options name (under either of PETSc's
-// option names), or "".
-std::string package_from_options(const std::string& prefix) {
+// Not collective. The factorisation package the options name, and the option that names
+// it (either of PETSc's names; its value in any case); both "" when none does.
+struct ChosenPackage {
+  std::string option, package;
+  bool petsc() const {
+    PetscBool same = PETSC_FALSE;
+    if (!package.empty()) CATENA_PETSC(PetscStrcasecmp(package.c_str(), MATSOLVERPETSC, &same));
+    return same == PETSC_TRUE;
+  }
+};
+
+ChosenPackage package_from_options(const std::string& prefix) {
   for (const char* name : {"pc_factor_mat_solver_type", "pc_factor_mat_solver_package"}) {
+    const std::string option = "-" + prefix + name;
     char package[64] = "";
     PetscBool set = PETSC_FALSE;
-    CATENA_PETSC(PetscOptionsGetString(nullptr, nullptr, ("-" + prefix + name).c_str(), package,
-                                       sizeof package, &set));
-    if (set) return package;
+    CATENA_PETSC(
+        PetscOptionsGetString(nullptr, nullptr, option.c_str(), package, sizeof package, &set));
+    if (set) return {option, package};
   }
   return {};
-}
-
-bool package_chosen_other_than_petsc(const std::string& prefix) {
-  const std::string package = package_from_options(prefix);
-  PetscBool petsc = PETSC_FALSE;
-  if (!package.empty()) CATENA_PETSC(PetscStrcasecmp(package.c_str(), MATSOLVERPETSC, &petsc));
-  return !package.empty() && !petsc;
 }
 
 // Collective on the PC. The factorisation type and package for `symmetry` and `pivoting`.
@@ -50,24 +53,15 @@ void set_direct_factorisation(PC pc, const std::string& prefix, JacobianSymmetry
   enable_mumps_null_pivot_detection(prefix);  // in case the options choose MUMPS
   // The multipliers-last order is PETSc's LU's only: unless the options choose another
   // package (which would be handed the order as well).
-  if (constraints_last && !package_chosen_other_than_petsc(prefix))
+  const ChosenPackage chosen = package_from_options(prefix);
+  if (constraints_last && (chosen.package.empty() || chosen.petsc()))
     CATENA_PETSC(PCFactorSetMatOrderingType(pc, constraints_last_ordering()));
-  if (pivoting != Pivoting::required) return;
-  // The option under both of PETSc's names, its value in any case (PETSc ignores it).
-  for (const char* name : {"pc_factor_mat_solver_type", "pc_factor_mat_solver_package"}) {
-    const std::string option = "-" + prefix + name;
-    char package[64] = "";
-    PetscBool set = PETSC_FALSE, petsc = PETSC_FALSE;
-    CATENA_PETSC(
-        PetscOptionsGetString(nullptr, nullptr, option.c_str(), package, sizeof package, &set));
-    if (set) CATENA_PETSC(PetscStrcasecmp(package, MATSOLVERPETSC, &petsc));
-    if (petsc)
-      throw InputError({"", 0, option},
-                       std::string("'") + package +
-                           "': PETSc's LU does not pivot, and this Newton matrix has the zero "
-                           "diagonal rows of Lagrange multipliers (joints, rigid bodies, "
-                           "constraints); accepted: a pivoting package, e.g. mumps (the default)");
-  }
+  if (pivoting == Pivoting::required && chosen.petsc())
+    throw InputError({"", 0, chosen.option},
+                     "'" + chosen.package +
+                         "': PETSc's LU does not pivot, and this Newton matrix has the zero "
+                         "diagonal rows of Lagrange multipliers (joints, rigid bodies, "
+                         "constraints); accepted: a pivoting package, e.g. mumps (the default)");
 }
 
 }  // namespace
@@ -111,7 +105,8 @@ bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry 
     CATENA_PETSC(PCFactorGetMatSolverType(pc, &package));
     if (package) CATENA_PETSC(PetscStrcmp(package, MATSOLVERPETSC, &petsc));
   }
-  if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !petsc || !package_from_options(prefix).empty())
+  if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !petsc ||
+      !package_from_options(prefix).package.empty())
     return false;
   // A PC of another type first, so that the factorisation's settings (the order) start
   // afresh; the options are applied again.

@@ -31,8 +31,9 @@ enum class JacobianSymmetry { symmetric, general };
 // (an input error naming the option: every step's factorisation would fail at its zero
 // pivot, and the step be halved down to dt_min). `constraints_last`: the same matrix with
 // its multiplier rows marked (constraints_last_ordering.hpp): on one rank PETSc's LU with
-// the multipliers eliminated last, whose pivots are then the Schur complement's (about
-// five times faster than MUMPS on a catenary with a mechanism pantograph); on more ranks the
+// the multipliers eliminated last, whose pivots are then the Schur complement's (the
+// mechanism pantograph's EN 50318 run then costs 1.12 times the lumped one's instead of
+// 1.5–2.5 with MUMPS; docs/performance.md); on more ranks the
 // interface split with the multipliers among the interface rows (taken last in S); MUMPS
 // when the options choose it.
 enum class Pivoting { needed, not_needed, required, constraints_last };
