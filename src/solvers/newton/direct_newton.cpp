@@ -139,7 +139,7 @@ bool use_interface_split(MPI_Comm comm, const std::string& prefix, Pivoting pivo
 }
 
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
-                            Pivoting pivoting) {
+                            Pivoting pivoting, Mat split) {
   KspHandle ksp;
   CATENA_PETSC(KSPCreate(comm, ksp.out()));
   CATENA_PETSC(KSPSetOptionsPrefix(ksp.get(), prefix.c_str()));
@@ -147,6 +147,7 @@ KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSy
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp.get(), &pc));
   set_direct_factorisation(pc, prefix, symmetry, pivoting);
+  if (split && use_interface_split(comm, prefix, pivoting)) use_interface_schur(ksp.get(), split);
   CATENA_PETSC(KSPSetFromOptions(ksp.get()));
   return ksp;
 }

@@ -89,22 +89,21 @@ RowSplit split_rows(Mat J) {
 }
 
 // The solve. Per factorisation: this rank's interior block A_II (PETSc's LU, nested
-// dissection, the symbolic part once), W = A_II⁻¹ A_IΓ for the interface columns its
-// interior touches, and S = A_ΓΓ − Σ_ranks A_CI W (C: the interface rows coupled to the
-// rank's interior). S is sparse — on a line each cut couples only to its neighbours, a hub
-// to everything — so every rank contributes a small dense block (C × touched columns) and
-// its own rows of A_ΓΓ; the terms are gathered on every rank, summed in rank order (the
-// same bits everywhere) into a sparse S and factored there by PETSc's LU (nested
-// dissection, symbolic once; no pivoting: S is a Schur complement of a matrix that needs
-// none). Per solve: y = A_II⁻¹ b_I, x_Γ = S⁻¹ (b_Γ − Σ A_CI y), x_I = y − W x_Γ: one
-// interior solve, a product with W's few columns and one allreduce of n_Γ numbers. What
-// grows with the rank count P: n_Γ (about 12 per cut on a cable line), the gathered terms
-// (P small blocks) and the allreduce (n_Γ numbers); a dense S would cost n_Γ² memory and
-// n_Γ³ work per factorisation on every rank.
+// dissection, the symbolic part once; factored in place, see factor_interior), W = A_II⁻¹ A_IΓ
+// for the interface columns its interior touches, and S = A_ΓΓ − Σ_ranks A_CI W (C: the interface
+// rows coupled to the rank's interior). S is sparse — on a line each cut couples only to its
+// neighbours, a hub to everything — so every rank contributes a small dense block (C × touched
+// columns) and its own rows of A_ΓΓ; the terms are gathered on every rank, summed in rank order
+// (the same bits everywhere) into a sparse S and factored there by PETSc's LU (nested dissection,
+// symbolic once; no pivoting: S is a Schur complement of a matrix that needs none). Per solve: y =
+// A_II⁻¹ b_I, x_Γ = S⁻¹ (b_Γ − Σ A_CI y), x_I = y − W x_Γ: one interior solve, a product with W's
+// few columns and one allreduce of n_Γ numbers. What grows with the rank count P: n_Γ (about 12 per
+// cut on a cable line), the gathered terms (P small blocks) and the allreduce (n_Γ numbers); a
+// dense S would cost n_Γ² memory and n_Γ³ work per factorisation on every rank.
 class InterfaceSchur {
  public:
-  InterfaceSchur(MPI_Comm comm, const RowSplit& split, PetscInt first)
-      : comm_(comm), first_row_(first) {
+  InterfaceSchur(MPI_Comm comm, const RowSplit& split, PetscInt first, PetscInt n_local)
+      : comm_(comm), first_row_(first), n_local_(n_local) {
     for (PetscInt row : split.interior) interior_local_.push_back(row - first);
     int size = 1;
     MPI_Comm_size(comm, &size);
@@ -135,10 +134,11 @@ class InterfaceSchur {
                                  split.interior.data(), PETSC_COPY_VALUES, interior_.out()));
     CATENA_PETSC(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(interface_.size()),
                                  interface_.data(), PETSC_COPY_VALUES, interface_is_.out()));
+    CATENA_PETSC(ISCreateStride(PETSC_COMM_SELF, n_local, first, 1, local_is_.out()));
   }
 
   ~InterfaceSchur() {
-    if (blocks_) MatDestroySubMatrices(3, &blocks_);
+    if (blocks_) MatDestroySubMatrices(2, &blocks_);
   }
 
   long interface_size() const { return static_cast<long>(interface_.size()); }
@@ -155,13 +155,16 @@ class InterfaceSchur {
           "(the split, the symbolic factorisation and W's columns rest on it)");
     pattern_ = pattern;
     if (!blocks_) find_coupled_rows(A);
-    // The three blocks, one call: A_II, A_IΓ (this rank's rows), A_CI (the coupled interface
-    // rows, fetched from their owners).
-    IS rows[3] = {interior_.get(), interior_.get(), coupled_is_.get()};
-    IS cols[3] = {interior_.get(), interface_is_.get(), interior_.get()};
-    CATENA_PETSC(MatCreateSubMatrices(A, 3, rows, cols,
+    // The two small blocks, one call: A_IΓ (this rank's rows), A_CI (the coupled interface
+    // rows, fetched from their owners; the columns of all this rank's rows, those of its
+    // interface meeting the zeros of y's and W's interface rows).
+    IS rows[2] = {interior_.get(), coupled_is_.get()};
+    IS cols[2] = {interface_is_.get(), local_is_.get()};
+    CATENA_PETSC(MatCreateSubMatrices(A, 2, rows, cols,
                                       blocks_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &blocks_));
-    const Mat Aii = blocks_[0], Aig = blocks_[1], Aci = blocks_[2];
+    const Mat Aig = blocks_[0], Aci = blocks_[1];
+    Mat local = nullptr;  // this rank's diagonal block: its rows, its columns
+    CATENA_PETSC(MatMPIAIJGetSeqAIJ(A, &local, nullptr, nullptr));
     const auto n_i = static_cast<Eigen::Index>(interior_local_.size());
     const auto n_c = static_cast<Eigen::Index>(coupled_position_.size());
     // The interior factorisation is this rank's alone; its outcome is agreed before the
@@ -172,17 +175,18 @@ class InterfaceSchur {
     if (n_i > 0) {
       try {
         if (!factor_) {
-          CATENA_PETSC(MatGetFactor(Aii, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
-          CATENA_PETSC(MatGetOrdering(Aii, MATORDERINGND, row_order_.out(), column_order_.out()));
+          find_interface_slots(local);
+          CATENA_PETSC(MatGetFactor(local, MATSOLVERPETSC, MAT_FACTOR_LU, factor_.out()));
+          CATENA_PETSC(MatGetOrdering(local, MATORDERINGND, row_order_.out(), column_order_.out()));
           const MatFactorInfo info = factor_info();
-          CATENA_PETSC(MatLUFactorSymbolic(factor_.get(), Aii, row_order_.get(),
+          CATENA_PETSC(MatLUFactorSymbolic(factor_.get(), local, row_order_.get(),
                                            column_order_.get(), &info));
           touched_ = touched_columns(Aig);
-          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), b_interior_.out()));
-          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_i), y_interior_.out()));
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, n_local_, b_local_.out()));
+          CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, n_local_, y_local_.out()));
           CATENA_PETSC(VecCreateSeq(PETSC_COMM_SELF, petsc(n_c), t_coupled_.out()));
         }
-        outcome = factor_numeric(factor_.get(), Aii) ? 2 : 1;
+        outcome = factor_interior(local) ? 2 : 1;
       } catch (const std::exception& e) {
         outcome = 0;
         error_text = e.what();
@@ -200,16 +204,18 @@ class InterfaceSchur {
     std::vector<PetscInt> rows_of, columns_of;  // their places in S (first setup only)
     const bool first = !schur_built_;
     const auto n_t = static_cast<Eigen::Index>(touched_.size());
-    W_.resize(n_i, n_t);
+    W_.clear();
     if (n_i > 0 && n_t > 0) {
       solve_for_touched_columns(Aig);
       // −A_CI W, column by column: the coupled rows of the touched columns of S.
-      VecHandle w;
-      CATENA_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, petsc(n_i), nullptr, w.out()));
       for (Eigen::Index k = 0; k < n_t; ++k) {
-        CATENA_PETSC(VecPlaceArray(w.get(), W_.col(k).data()));
-        CATENA_PETSC(MatMult(Aci, w.get(), t_coupled_.get()));
-        CATENA_PETSC(VecResetArray(w.get()));
+        const SparseColumn& column = W_[static_cast<std::size_t>(k)];
+        PetscScalar* w = nullptr;
+        CATENA_PETSC(VecSet(b_local_.get(), 0.0));
+        CATENA_PETSC(VecGetArray(b_local_.get(), &w));
+        for (std::size_t e = 0; e < column.rows.size(); ++e) w[column.rows[e]] = column.values[e];
+        CATENA_PETSC(VecRestoreArray(b_local_.get(), &w));
+        CATENA_PETSC(MatMult(Aci, b_local_.get(), t_coupled_.get()));
         const PetscScalar* t = nullptr;
         CATENA_PETSC(VecGetArrayRead(t_coupled_.get(), &t));
         for (Eigen::Index r = 0; r < n_c; ++r) {
@@ -262,13 +268,18 @@ class InterfaceSchur {
       r(owned_position_[k]) = bb[owned_local_[k]];
     PetscScalar* y = nullptr;
     if (n_i > 0) {
-      PetscScalar* bi = nullptr;
-      CATENA_PETSC(VecGetArrayWrite(b_interior_.get(), &bi));
-      for (Eigen::Index k = 0; k < n_i; ++k)
-        bi[k] = bb[interior_local_[static_cast<std::size_t>(k)]];
-      CATENA_PETSC(VecRestoreArrayWrite(b_interior_.get(), &bi));
-      CATENA_PETSC(MatSolve(factor_.get(), b_interior_.get(), y_interior_.get()));
-      CATENA_PETSC(MatMult(blocks_[2], y_interior_.get(), t_coupled_.get()));
+      // y = Ã⁻¹ (b_I, 0): A_II⁻¹ b_I in the interior rows, 0 in the interface rows.
+      PetscScalar* bl = nullptr;
+      CATENA_PETSC(VecGetArrayWrite(b_local_.get(), &bl));
+      std::copy(bb, bb + n_local_, bl);
+      for (const PetscInt row : owned_local_) bl[row] = 0.0;
+      CATENA_PETSC(VecRestoreArrayWrite(b_local_.get(), &bl));
+      CATENA_PETSC(MatSolve(factor_.get(), b_local_.get(), y_local_.get()));
+      CATENA_PETSC(VecGetArray(y_local_.get(), &y));
+      // Exact zeros already (identity rows); set all the same, as A_CI's columns meet them.
+      for (const PetscInt row : owned_local_) y[row] = 0.0;
+      CATENA_PETSC(VecRestoreArray(y_local_.get(), &y));
+      CATENA_PETSC(MatMult(blocks_[1], y_local_.get(), t_coupled_.get()));
       const PetscScalar* t = nullptr;
       CATENA_PETSC(VecGetArrayRead(t_coupled_.get(), &t));
       for (std::size_t c = 0; c < coupled_position_.size(); ++c) r(coupled_position_[c]) -= t[c];
@@ -287,12 +298,15 @@ class InterfaceSchur {
     PetscScalar* xx = nullptr;
     CATENA_PETSC(VecGetArray(x, &xx));
     if (n_i > 0) {
-      CATENA_PETSC(VecGetArray(y_interior_.get(), &y));
-      Eigen::Map<Eigen::VectorXd> yi(y, n_i);
-      if (W_.cols() > 0) yi.noalias() -= W_ * x_interface(touched_);
-      for (Eigen::Index k = 0; k < n_i; ++k)
-        xx[interior_local_[static_cast<std::size_t>(k)]] = yi(k);
-      CATENA_PETSC(VecRestoreArray(y_interior_.get(), &y));
+      CATENA_PETSC(VecGetArray(y_local_.get(), &y));
+      for (std::size_t k = 0; k < W_.size(); ++k) {
+        const double x_k = x_interface(touched_[static_cast<Eigen::Index>(k)]);
+        const SparseColumn& column = W_[k];
+        for (std::size_t e = 0; e < column.rows.size(); ++e)
+          y[column.rows[e]] -= column.values[e] * x_k;
+      }
+      std::copy(y, y + n_local_, xx);  // the interface rows' are set below
+      CATENA_PETSC(VecRestoreArray(y_local_.get(), &y));
     }
     for (std::size_t k = 0; k < owned_local_.size(); ++k)
       xx[owned_local_[k]] = x_interface(owned_position_[k]);
@@ -345,17 +359,20 @@ class InterfaceSchur {
                                  coupled.data(), PETSC_COPY_VALUES, coupled_is_.out()));
   }
 
-  // W = A_II⁻¹ A_IΓ on the touched columns (one multi-column solve).
+  // W = A_II⁻¹ A_IΓ on the touched columns, a solve of Ã each (rows of all this rank's
+  // unknowns, the interface's zero), kept as its nonzeros only: the inverse of a Newton
+  // matrix decays away from the cut until its entries underflow to exact zeros (on the
+  // 10 km line at np 2 a column has 550–23 000 nonzeros of 120 000 rows), so the sparse W
+  // gives the dense W's products bit for bit, in a fraction of the memory and the time.
   void solve_for_touched_columns(Mat Aig) {
-    const auto n_i = W_.rows(), n_t = W_.cols();
-    MatHandle B, X;
-    CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), nullptr, B.out()));
-    CATENA_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, petsc(n_i), petsc(n_t), W_.data(), X.out()));
-    PetscScalar* b = nullptr;
-    CATENA_PETSC(MatDenseGetArrayWrite(B.get(), &b));
-    std::fill(b, b + n_i * n_t, 0.0);
+    const auto n_t = touched_.size();
+    const auto n_i = static_cast<PetscInt>(interior_local_.size());
     std::vector<Eigen::Index> column_of(interface_.size(), -1);
-    for (Eigen::Index k = 0; k < n_t; ++k) column_of[static_cast<std::size_t>(touched_[k])] = k;
+    for (std::size_t k = 0; k < n_t; ++k)
+      column_of[static_cast<std::size_t>(touched_[static_cast<Eigen::Index>(k)])] =
+          static_cast<Eigen::Index>(k);
+    // A_IΓ by column: (local row, value).
+    std::vector<std::vector<std::pair<PetscInt, PetscScalar>>> entries(n_t);
     for (PetscInt i = 0; i < n_i; ++i) {
       PetscInt n = 0;
       const PetscInt* c = nullptr;
@@ -364,12 +381,84 @@ class InterfaceSchur {
       for (PetscInt k = 0; k < n; ++k) {
         const Eigen::Index column = column_of[static_cast<std::size_t>(c[k])];
         CATENA_ASSERT(column >= 0, "interface Schur solve: a column outside the pattern");
-        b[column * n_i + i] = v[k];
+        entries[static_cast<std::size_t>(column)].emplace_back(
+            interior_local_[static_cast<std::size_t>(i)], v[k]);
       }
       CATENA_PETSC(MatRestoreRow(Aig, i, &n, &c, &v));
     }
-    CATENA_PETSC(MatDenseRestoreArrayWrite(B.get(), &b));
-    CATENA_PETSC(MatMatSolve(factor_.get(), B.get(), X.get()));
+    std::vector<char> interface_row(static_cast<std::size_t>(n_local_), 0);
+    for (const PetscInt row : owned_local_) interface_row[static_cast<std::size_t>(row)] = 1;
+    W_.resize(n_t);
+    for (std::size_t k = 0; k < n_t; ++k) {
+      PetscScalar* b = nullptr;
+      CATENA_PETSC(VecSet(b_local_.get(), 0.0));
+      CATENA_PETSC(VecGetArray(b_local_.get(), &b));
+      for (const auto& [row, value] : entries[k]) b[row] = value;
+      CATENA_PETSC(VecRestoreArray(b_local_.get(), &b));
+      CATENA_PETSC(MatSolve(factor_.get(), b_local_.get(), y_local_.get()));
+      const PetscScalar* w = nullptr;
+      CATENA_PETSC(VecGetArrayRead(y_local_.get(), &w));
+      for (PetscInt row = 0; row < n_local_; ++row)
+        if (w[row] != 0.0 && !interface_row[static_cast<std::size_t>(row)]) {
+          W_[k].rows.push_back(row);
+          W_[k].values.push_back(w[row]);
+        }
+      CATENA_PETSC(VecRestoreArrayRead(y_local_.get(), &w));
+    }
+  }
+
+  // First setup: where the values of this rank's interface rows sit in its diagonal
+  // block's value array (each row's range and its diagonal).
+  void find_interface_slots(Mat local) {
+    PetscInt n = 0;
+    const PetscInt *ia = nullptr, *ja = nullptr;
+    PetscBool done = PETSC_FALSE;
+    CATENA_PETSC(MatGetRowIJ(local, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+    if (!done) throw Error("interface Schur solve: the diagonal block gives no row structure");
+    for (const PetscInt row : owned_local_) {
+      const PetscInt* at = std::find(ja + ia[row], ja + ia[row + 1], row);
+      if (at == ja + ia[row + 1])
+        throw Error("interface Schur solve: row " + std::to_string(first_row_ + row) +
+                    " has no diagonal entry in the pattern (SecondOrderSystem::create_matrix "
+                    "gives every row one)");
+      interface_slots_.push_back({ia[row], ia[row + 1], static_cast<PetscInt>(at - ja)});
+    }
+    CATENA_PETSC(MatRestoreRowIJ(local, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  }
+
+  // The interior block's LU without a copy of it: this rank's diagonal block with its
+  // interface rows made identity rows, Ã = [A_II A_IΓ; 0 I], factored in place and given its
+  // values back. Ã is block triangular, so Ã⁻¹ (b_I, 0) = (A_II⁻¹ b_I, 0), and eliminating an
+  // identity row changes no other (its multipliers are zeros): Ã's pivots are A_II's, in the
+  // order nested dissection gives A_II's rows within the block's. The copy of A_II this
+  // replaces was as large as the block (the 10 km line at np 2: ~45 MiB per rank).
+  bool factor_interior(Mat local) {
+    PetscScalar* a = nullptr;
+    saved_values_.clear();
+    CATENA_PETSC(MatSeqAIJGetArray(local, &a));
+    for (const Slots& row : interface_slots_)
+      for (PetscInt k = row.begin; k < row.end; ++k) {
+        saved_values_.push_back(a[k]);
+        a[k] = k == row.diagonal ? 1.0 : 0.0;
+      }
+    CATENA_PETSC(MatSeqAIJRestoreArray(local, &a));
+    const auto restore = [&] {
+      PetscScalar* values = nullptr;
+      if (MatSeqAIJGetArray(local, &values)) return;
+      std::size_t at = 0;
+      for (const Slots& row : interface_slots_)
+        for (PetscInt k = row.begin; k < row.end; ++k) values[k] = saved_values_[at++];
+      MatSeqAIJRestoreArray(local, &values);
+    };
+    bool factored = false;
+    try {
+      factored = factor_numeric(factor_.get(), local);
+    } catch (...) {
+      restore();
+      throw;
+    }
+    restore();
+    return factored;
   }
 
   // First setup, collective: S's sparse pattern from every rank's terms (their places,
@@ -484,9 +573,14 @@ class InterfaceSchur {
     return out;
   }
 
+  struct Slots {
+    PetscInt begin, end, diagonal;  // places in the diagonal block's value array
+  };
+
   MPI_Comm comm_;
   int rank_ = 0;
   PetscInt first_row_ = 0;                         // this rank's first row, global
+  PetscInt n_local_ = 0;                           // this rank's rows
   std::vector<PetscInt> interior_local_;           // this rank's interior rows, local numbers
   std::vector<PetscInt> interface_;                // every rank's interface rows, global, ascending
   std::vector<PetscInt> schur_constraints_;        // the multipliers' places in interface_
@@ -494,11 +588,18 @@ class InterfaceSchur {
   std::vector<Eigen::Index> owned_position_;       // ... and their places in interface_
   std::vector<Eigen::Index> coupled_position_;     // places of the interface rows in A_CI
   IsHandle interior_, interface_is_, coupled_is_;  // sequential index sets of global rows
-  Mat* blocks_ = nullptr;                          // A_II, A_IΓ, A_CI
-  MatHandle factor_;
+  IsHandle local_is_;                              // this rank's rows (global numbers)
+  Mat* blocks_ = nullptr;                          // A_IΓ, A_CI
+  std::vector<Slots> interface_slots_;             // this rank's interface rows, as Slots
+  std::vector<PetscScalar> saved_values_;          // their values while Ã is factored
+  MatHandle factor_;                               // Ã's LU
   IsHandle row_order_, column_order_;
   std::vector<Eigen::Index> touched_;
-  Eigen::MatrixXd W_;
+  struct SparseColumn {
+    std::vector<PetscInt> rows;  // local, ascending
+    std::vector<PetscScalar> values;
+  };
+  std::vector<SparseColumn> W_;  // A_II⁻¹ A_IΓ's touched columns, their nonzeros
   // S, sparse (CSR arrays PETSc's matrix uses in place), and its LU.
   std::vector<PetscInt> schur_ia_, schur_ja_;
   std::vector<PetscScalar> schur_values_;
@@ -511,7 +612,7 @@ class InterfaceSchur {
   PetscObjectState pattern_ = 0;  // A's nonzero state at the first setup
   bool ready_ = false;            // the last setup succeeded
   bool schur_built_ = false;      // S's pattern and symbolic factorisation made
-  VecHandle b_interior_, y_interior_, t_coupled_, r_interface_, x_interface_;
+  VecHandle b_local_, y_local_, t_coupled_, r_interface_, x_interface_;
 };
 
 InterfaceSchur& context(PC pc) {
@@ -558,7 +659,7 @@ long use_interface_schur(KSP ksp, Mat J) {
   CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(J), &comm));
   PetscInt first = 0, end = 0;
   CATENA_PETSC(MatGetOwnershipRange(J, &first, &end));
-  auto solver = std::make_unique<InterfaceSchur>(comm, split_rows(J), first);
+  auto solver = std::make_unique<InterfaceSchur>(comm, split_rows(J), first, end - first);
   const long n_interface = solver->interface_size();
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp, &pc));

@@ -38,6 +38,8 @@ MumpsStatus mumps_status(KSP ksp) {
 
 std::string DirectSolveStatus::describe() const {
   std::string text = "KSP reason " + std::string(KSPConvergedReasons[reason]);
+  if (preconditioner != PC_NOERROR)
+    text += ", preconditioner failed: " + std::string(PCFailedReasons[preconditioner]);
   if (mumps.is_mumps)
     text += ", MUMPS INFOG(1) = " + std::to_string(mumps.infog1) +
             ", INFOG(2) = " + std::to_string(mumps.infog2) + ", " +
@@ -48,6 +50,9 @@ std::string DirectSolveStatus::describe() const {
 DirectSolveStatus direct_solve_status(KSP ksp) {
   DirectSolveStatus status;
   CATENA_PETSC(KSPGetConvergedReason(ksp, &status.reason));
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  CATENA_PETSC(PCGetFailedReason(pc, &status.preconditioner));
   status.mumps = mumps_status(ksp);
   return status;
 }

@@ -14,9 +14,13 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
     target_ = system.create_vector();
     saddle_ = system.create_matrix();
   }
-  ksp_ = create_direct_ksp(
-      system.comm(), "mass_",
-      algebraic_.active() ? JacobianSymmetry::general : JacobianSymmetry::symmetric);
+  // M alone is positive definite (or singular, reported below): no pivoting, so PETSc's LU
+  // on one rank and the interface split on more, as the HHT matrix M + c_C C + c_K K (a
+  // MUMPS LDLᵀ of M held 80 MiB per rank of the 10 km line at np 2, the run's peak; LU, not
+  // PETSc's Cholesky, for its nested-dissection order). The saddle-point matrix pivots.
+  ksp_ = algebraic_.active() ? create_direct_ksp(system.comm(), "mass_", JacobianSymmetry::general)
+                             : create_direct_ksp(system.comm(), "mass_", JacobianSymmetry::general,
+                                                 Pivoting::not_needed, mass_);
   // G constant: factored once here, at any state (the reference's zero vector will do).
   if (system.constraints_linear()) factor(rhs_.get(), 0.0);
 }

@@ -44,10 +44,12 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
 
 // Collective. A KSPPREONLY direct factorisation (LDLᵀ or LU; MUMPS with null-pivot
 // detection, or PETSc's own on one rank when `pivoting` allows) with options prefix
-// `prefix`, KSPSetFromOptions applied. Set further MUMPS defaults (e.g.
-// enable_mumps_exact_inertia) before calling.
+// `prefix`, KSPSetFromOptions applied. With `split` (the matrix the KSP will factor, its
+// pattern final) and on more than one rank, a matrix needing no pivoting is solved by the
+// interface split of that pattern, as configure_direct_newton does (use_interface_split).
+// Set further MUMPS defaults (e.g. enable_mumps_exact_inertia) before calling.
 KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSymmetry symmetry,
-                            Pivoting pivoting = Pivoting::needed);
+                            Pivoting pivoting = Pivoting::needed, Mat split = nullptr);
 
 // Collective on the KSP. After a failed solve of a Pivoting::constraints_last matrix: if
 // PETSc's LU met a zero pivot (dependent constraints, or an unknown that only a constraint

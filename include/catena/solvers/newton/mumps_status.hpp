@@ -18,19 +18,26 @@ struct MumpsStatus {
 MumpsStatus mumps_status(KSP ksp);
 
 // The outcome of a direct solver's (KSPPREONLY with LU or Cholesky) factorisation or solve:
-// the KSP's reason (still "iterating" after a KSPSetUp alone) and MUMPS's status. A
-// failure is a negative KSP reason, a negative INFOG(1) or any null pivot (ICNTL(24) = 1
-// lets MUMPS go on past them, and the solution is then arbitrary along the null space).
+// the KSP's reason (still "iterating" after a KSPSetUp alone), the preconditioner's failure
+// (PETSc's LU or the interface Schur solve meeting a zero pivot: after a KSPSetUp alone,
+// only it tells) and MUMPS's status. A failure is a negative KSP reason, a failed
+// preconditioner, a negative INFOG(1) or any null pivot (ICNTL(24) = 1 lets MUMPS go on
+// past them, and the solution is then arbitrary along the null space).
 struct DirectSolveStatus {
   KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  PCFailedReason preconditioner = PC_NOERROR;
   MumpsStatus mumps;
-  bool failed() const { return reason < 0 || mumps.infog1 < 0 || mumps.null_pivots > 0; }
+  bool failed() const {
+    return reason < 0 || preconditioner != PC_NOERROR || mumps.infog1 < 0 || mumps.null_pivots > 0;
+  }
   // "KSP reason R, MUMPS INFOG(1) = a, INFOG(2) = b, n null pivots" (MUMPS parts only when
   // MUMPS is the solver).
   std::string describe() const;
 };
 
-// Logically collective. Call after KSPSetUp or KSPSolve of a direct solver.
+// Logically collective (the preconditioner's failure is the same on every rank for the
+// factorisations Catena makes: MUMPS, PETSc's LU on one rank, the interface Schur solve,
+// which agrees its outcome). Call after KSPSetUp or KSPSolve of a direct solver.
 DirectSolveStatus direct_solve_status(KSP ksp);
 
 // Logically collective. If `status` is MUMPS running out of its workspace (INFOG(1) = −8,

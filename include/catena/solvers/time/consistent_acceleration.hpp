@@ -18,8 +18,9 @@ namespace catena::solvers {
 
 class AccelerationSolver {
  public:
-  // Collective. Factors M (Cholesky, options prefix -mass_) or, with constraints, the
-  // saddle-point matrix above (LU). Throws NumericalError if it is singular (a free DOF
+  // Collective. Factors M (LU without pivoting: PETSc's on one rank, the interface split
+  // on more; options prefix -mass_) or, with constraints, the saddle-point matrix above
+  // (MUMPS LU). Throws NumericalError if it is singular (a free DOF
   // without mass, or redundant constraints), naming the likely cause.
   AccelerationSolver(assembly::SecondOrderSystem& system, Mat mass);
   // Collective. a at (t, q, v). With constraints it also writes λ into the multiplier
