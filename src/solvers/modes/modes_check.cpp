@@ -38,6 +38,7 @@ long eigenvalues_below(Mat K, Mat M, const std::vector<PetscInt>& keep, double l
   CATENA_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   CATENA_PETSC(KSPSetOptionsPrefix(ksp.get(), kPrefix));
   enable_mumps_exact_inertia(kPrefix);
+  discard_mumps_factors(kPrefix);
   CATENA_PETSC(KSPSetFromOptions(ksp.get()));
   CATENA_PETSC(KSPSetUp(ksp.get()));
   const DirectSolveStatus status = direct_solve_status(ksp.get());

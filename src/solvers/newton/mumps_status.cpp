@@ -105,4 +105,8 @@ void enable_mumps_exact_inertia(const std::string& prefix) {
   set_default_option(prefix, "mat_mumps_icntl_13", "1");
 }
 
+void discard_mumps_factors(const std::string& prefix) {
+  set_default_option(prefix, "mat_mumps_icntl_31", "1");
+}
+
 }  // namespace catena::solvers

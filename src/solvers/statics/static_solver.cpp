@@ -30,13 +30,11 @@ struct StaticSolver::Impl {
   PetscReal base_atol = 0, base_rtol = 0, base_stol = 0;
   PetscInt base_max_it = 0, base_max_f = 0;
   // An LDLᵀ factorisation of the tangent at each accepted state, independent of the
-  // solver the user chose for Newton, for its inertia (stability) and null pivots. Not
-  // Newton's MUMPS instance even when Newton's is MUMPS LDLᵀ: MUMPS keeps the scaling its
-  // analysis computed from the first matrix's values, and a singular tangent's (a rigid
-  // body's unloaded swing) leaves Newton's regularised matrices badly scaled (Newton then
-  // stalls). It holds its factors only while they are read, and Newton's are freed before
-  // it factors: one factorisation in memory at a time (two took 100 MiB of the 10 km
-  // line's 420 MiB static peak), for one more analysis per load step of each.
+  // solver the user chose for Newton, for its inertia (stability) and null pivots; its
+  // factors are discarded as MUMPS computes them (never solved with). Not Newton's MUMPS
+  // instance even when Newton's is MUMPS LDLᵀ: MUMPS keeps the scaling its analysis
+  // computed from the first matrix's values, and a singular tangent's (a rigid body's
+  // unloaded swing) left Newton's regularised matrices badly scaled (Newton stalled).
   KspHandle stability_ksp;
   int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
   // Rigid bodies: a body's rotations have no stiffness of their own (natural coordinates:
@@ -66,13 +64,9 @@ struct StaticSolver::Impl {
   // of null pivots (INFOG(28)).
   MumpsStatus tangent_status(Vec q) {
     system.jacobian({q, nullptr, path}, assembly::kStaticJacobian, jacobian.get());
-    KSP newton = nullptr;
-    CATENA_PETSC(SNESGetKSP(snes.get(), &newton));
-    CATENA_PETSC(KSPReset(newton));  // its next solve factors a new matrix in any case
     CATENA_PETSC(KSPSetOperators(stability_ksp.get(), jacobian.get(), jacobian.get()));
     CATENA_PETSC(KSPSetUp(stability_ksp.get()));
     MumpsStatus status = mumps_status(stability_ksp.get());
-    CATENA_PETSC(KSPReset(stability_ksp.get()));
     // [K Gᵀ; G 0] has exactly one negative eigenvalue per multiplier when K is positive
     // definite on the constraints' null space: only the excess means instability.
     status.negative_pivots -= model::total_multipliers(system.model());
@@ -125,6 +119,7 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
                                  &s.base_max_it, &s.base_max_f));
 
   enable_mumps_exact_inertia("static_stability_");
+  discard_mumps_factors("static_stability_");
   s.stability_ksp =
       create_direct_ksp(system.comm(), "static_stability_", JacobianSymmetry::symmetric);
 }
