@@ -431,7 +431,8 @@ class InterfaceSchur {
   // values back. Ã is block triangular, so Ã⁻¹ (b_I, 0) = (A_II⁻¹ b_I, 0), and eliminating an
   // identity row changes no other (its multipliers are zeros): Ã's pivots are A_II's, in the
   // order nested dissection gives A_II's rows within the block's. The copy of A_II this
-  // replaces was as large as the block (the 10 km line at np 2: ~45 MiB per rank).
+  // replaces was nearly as large as the block (the 10 km line at np 2: 89 MB of both ranks'
+  // memory in PETSc's log, MatCreateSubMatrices).
   bool factor_interior(Mat local) {
     PetscScalar* a = nullptr;
     saved_values_.clear();

@@ -5,9 +5,9 @@
 // pantograph's head, whose contact pattern reaches the wire it crosses in the run) are
 // split from the rest (its interior). The interior rows of different ranks never couple, so each
 // rank factors its own interior block A_II with PETSc's LU (the fast solver of docs/performance.md,
-// "Direct solver"); the interface's Schur complement S = A_ΓΓ − A_ΓI A_II⁻¹ A_IΓ is formed
-// explicitly as a sparse matrix and factored on every rank. The rows of Lagrange
-// multipliers marked on J (constraints_last_ordering.hpp) are interface rows too: no
+// "Direct solver"; in place, without a copy); the interface's Schur complement S = A_ΓΓ − A_ΓI
+// A_II⁻¹ A_IΓ is formed explicitly as a sparse matrix and factored on every rank. The rows of
+// Lagrange multipliers marked on J (constraints_last_ordering.hpp) are interface rows too: no
 // interior block holds a zero diagonal, and S is factored with them last. A line cut into P pieces
 // has an interface of a few nodes per cut, each coupled to its neighbouring cuts only, so S is
 // small and sparse and the solve is a direct one, independent of the rank count to round-off. Per
