@@ -61,8 +61,8 @@ void enable_mumps_exact_inertia(const std::string& prefix);
 // Not collective. For a factorisation read only for its statistics (the inertia INFOG(12),
 // the null pivots INFOG(28)), never solved with: MUMPS discards the factors as it computes
 // them (ICNTL(31) = 1), so they take no memory beside another solver's (the static
-// stability check beside Newton's factors: the 10 km line's static peak 420 -> 387 MiB at
-// np 1, 318 -> 290 MiB at np 2), unless the user set it.
+// stability check beside Newton's factors: the 10 km line's static peak 420 -> 388 MiB at
+// np 1, 318 -> 289 MiB at np 2), unless the user set it.
 void discard_mumps_factors(const std::string& prefix);
 
 }  // namespace catena::solvers
