@@ -15,9 +15,10 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
     saddle_ = system.create_matrix();
   }
   // M alone is positive definite (or singular, reported below): no pivoting, so PETSc's LU
-  // on one rank and the interface split on more, as the HHT matrix M + c_C C + c_K K (a
-  // MUMPS LDLᵀ of M held 80 MiB per rank of the 10 km line at np 2, the run's peak; LU, not
-  // PETSc's Cholesky, for its nested-dissection order). The saddle-point matrix pivots.
+  // on one rank and the interface split on more, as the HHT matrix M + c_C C + c_K K. A
+  // MUMPS LDLᵀ of M set the 10 km line's peak at np 2 (333 MiB per rank after it, 298 with
+  // the split); LU, not PETSc's Cholesky, for its nested-dissection order. The saddle-point
+  // matrix pivots (MUMPS).
   ksp_ = algebraic_.active() ? create_direct_ksp(system.comm(), "mass_", JacobianSymmetry::general)
                              : create_direct_ksp(system.comm(), "mass_", JacobianSymmetry::general,
                                                  Pivoting::not_needed, mass_);
