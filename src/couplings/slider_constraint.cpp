@@ -1,6 +1,7 @@
 #include "catena/couplings/slider_constraint.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "catena/core/error.hpp"
@@ -16,6 +17,8 @@ SliderConstraint::SliderConstraint(const model::Model& model, int index)
                 "SliderConstraint takes a slider");
   const model::Slider& slider = model.sliders[static_cast<size_t>(c.slider)];
   damping_ = slider.damping;
+  friction_ = slider.friction;
+  stick_speed_ = slider.stick_speed;
   const std::vector<int>& path = model.paths[static_cast<size_t>(slider.path)].elements;
   stations_ = model::path_stations(model, path);
   for (int k = 0; k < 3; ++k) dofs_.push_back(DofKey::multiplier(index, k));
@@ -98,13 +101,25 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
   const Vec3 lambda(q[kLambda], q[kLambda + 1], q[kLambda + 2]);
   const Vec3 point(q[kPoint], q[kPoint + 1], q[kPoint + 2]);
   const double slide_rate = s.v.empty() ? 0.0 : s.v[kSlide];
+  // Coulomb friction F = μ n φ(ṡ) on the s row (slider_constraint.hpp), n = |t × λ|; its
+  // derivatives in n are zero where n is (no normal force: no friction, a kink).
+  const double normal = friction_ > 0.0 ? tangent.cross(lambda).norm() : 0.0;
+  const double root = std::sqrt(slide_rate * slide_rate + stick_speed_ * stick_speed_);
+  const double phi = slide_rate / root;
+  const double dphi = stick_speed_ * stick_speed_ / (root * root * root);
+  Vec3 dn_dlambda = Vec3::Zero(), dn_dtangent = Vec3::Zero();
+  if (normal > 0.0) {
+    const double tl = tangent.dot(lambda);
+    dn_dlambda = (tangent.squaredNorm() * lambda - tl * tangent) / normal;
+    dn_dtangent = (lambda.squaredNorm() * tangent - tl * lambda) / normal;
+  }
   if (f) {
     std::fill(f, f + n, 0.0);
     for (int d = 0; d < 3; ++d) {
       f[kLambda + d] = point[d] - r_path[d];
       f[kPoint + d] = lambda[d];
     }
-    f[kSlide] = -tangent.dot(lambda) + damping_ * slide_rate;
+    f[kSlide] = -tangent.dot(lambda) + damping_ * slide_rate + friction_ * normal * phi;
     for (int b = 0; b < 4; ++b)
       for (int d = 0; d < 3; ++d) f[p.first[b] + d] += -p.S[b] * lambda[d];
   }
@@ -117,7 +132,7 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
     for (int d = 0; d < 3; ++d) {
       add(kPoint + d, kLambda + d, c.c_lambda);
       add(kLambda + d, kPoint + d, c.c_g);
-      add(kSlide, kLambda + d, -c.c_lambda * tangent[d]);
+      add(kSlide, kLambda + d, c.c_lambda * (-tangent[d] + friction_ * phi * dn_dlambda[d]));
       add(kLambda + d, kSlide, -c.c_g * tangent[d]);
       for (int b = 0; b < 4; ++b) {
         add(p.first[b] + d, kLambda + d, -c.c_lambda * p.S[b]);
@@ -125,16 +140,18 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
       }
     }
     // ∂(Gᵀλ)/∂q: the s row's −t·λ varies with s and with the path's blocks.
+    // The friction's, through t = σ Σ S_b' q_b (∂t/∂s = κ), in the s row only.
     if (c.c_K != 0.0) {
-      add(kSlide, kSlide, -c.c_K * curvature.dot(lambda));
+      const double mu_phi = friction_ * phi;
+      add(kSlide, kSlide, c.c_K * (-curvature.dot(lambda) + mu_phi * dn_dtangent.dot(curvature)));
       for (int b = 0; b < 4; ++b)
         for (int d = 0; d < 3; ++d) {
           const double h = -c.c_K * p.sigma * p.dS[b] * lambda[d];
-          add(kSlide, p.first[b] + d, h);
+          add(kSlide, p.first[b] + d, h + c.c_K * mu_phi * p.sigma * p.dS[b] * dn_dtangent[d]);
           add(p.first[b] + d, kSlide, h);
         }
     }
-    if (c.c_C != 0.0) add(kSlide, kSlide, c.c_C * damping_);
+    if (c.c_C != 0.0) add(kSlide, kSlide, c.c_C * (damping_ + friction_ * normal * dphi));
   }
 }
 

@@ -200,7 +200,12 @@ std::string describe(const Model& model, int n_ranks_running) {
               path.name + "' (" + std::to_string(path.elements.size()) + " elements, " +
               format_number(path_stations(model, path.elements).length()) + " m), from " +
               format_number(slider.start) + " m, damping " + format_number(slider.damping) +
-              " N*s/m; unknowns x, y, z, s: 3 multipliers");
+              " N*s/m" +
+              (slider.friction > 0.0
+                   ? ", Coulomb friction " + format_number(slider.friction) + " (stick speed " +
+                         format_number(slider.stick_speed) + " m/s)"
+                   : std::string()) +
+              "; unknowns x, y, z, s: 3 multipliers");
   }
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");

@@ -49,10 +49,11 @@ double nearest_arc_length(const Model& model, const std::vector<int>& elements,
 }  // namespace
 
 void read_sliders(const Field& sliders, SceneBuild& build) {
-  static const std::vector<std::string> keys{"name", "node", "path", "line", "damping"};
+  static const std::vector<std::string> keys{"name",    "node",     "path",       "line",
+                                             "damping", "friction", "stick_speed"};
   Model& model = build.model;
   for (const Field& entry : sliders.items()) {
-    entry.expect_map("a slider {node, path or line, damping}");
+    entry.expect_map("a slider {node, path or line, damping, friction, stick_speed}");
     entry.check_keys(keys);
     Slider slider;
     const Field name = entry.child("name");
@@ -114,6 +115,13 @@ void read_sliders(const Field& sliders, SceneBuild& build) {
                       " m along it, of " + format_number(stations.length()) +
                       " m); a slider starts inside its path");
     slider.damping = entry.child("damping").real_or(0.0, RealRange::non_negative("N*s/m"));
+    slider.friction = entry.child("friction").real_or(0.0, RealRange::non_negative(""));
+    const Field stick = entry.child("stick_speed");
+    if (stick.present() && !(slider.friction > 0.0))
+      stick.fail(
+          "stick_speed regularises Coulomb friction, and this slider has none; give "
+          "friction (a coefficient > 0) or leave stick_speed out");
+    slider.stick_speed = stick.real_or(slider.stick_speed, RealRange::positive("m/s"));
     model.sliders.push_back(slider);
   }
 }

@@ -21,8 +21,8 @@ using couplings::MatrixRequest;
 using couplings::SliderConstraint;
 
 // A 3-element cable path from (0,0,0) to (3,0,0) (nodes 1, 2 and interior 4, 5), slider
-// node 3 at x = 1.3, damping 2.5.
-model::Model scene() {
+// node 3 at x = 1.3, damping 2.5; `extra` adds keys to the slider.
+model::Model scene(const std::string& extra = "") {
   const std::string text =
       "sections: {wire: {type: cable, EA: 1.0e7, EI: 100, mass_per_length: 1}}\n"
       "nodes:\n"
@@ -30,7 +30,9 @@ model::Model scene() {
       "  - {id: 2, position: [3, 0, 0]}\n"
       "  - {id: 3, position: [1.3, 0, 0]}\n"
       "lines: [{name: wire, from: 1, to: 2, elements: 3, section: wire}]\n"
-      "sliders: [{name: bead, node: 3, line: wire, damping: 2.5}]\n"
+      "sliders: [{name: bead, node: 3, line: wire, damping: 2.5" +
+      extra +
+      "}]\n"
       "masses: [{node: 3, mass: 1}]\n"
       "supports: [{node: 1, fix: pinned}, {node: 2, fix: pinned}]\n"
       "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n";
@@ -98,6 +100,57 @@ TEST(SliderConstraint, VanishesOnThePathAndMatchesFiniteDifferences) {
     EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-8);
     EXPECT_DOUBLE_EQ(C[static_cast<size_t>(SliderConstraint::kSlide * (n + 1))], 2.5);
   }
+}
+
+// Coulomb friction μ |t × λ| φ(ṡ) on the s row: the matrix (its λ columns, its K terms
+// through the tangent, its C term through φ') against central differences, on both sides
+// of an element boundary, sliding each way, and a speed below the stick speed.
+TEST(SliderConstraint, CoulombFrictionMatchesFiniteDifferences) {
+  const model::Model m = scene(", friction: 0.4, stick_speed: 0.05");
+  ASSERT_EQ(m.sliders.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.sliders[0].friction, 0.4);
+  const SliderConstraint slider(m, m.sliders[0].constraint);
+  EXPECT_TRUE(slider.has_damping());
+  const auto n = static_cast<int>(slider.dofs().size());
+  couplings::Scratch scratch;
+  for (const double slide : {0.4, 1.0 - 1e-3, 1.0 + 1e-3})
+    for (const double rate : {0.3, -0.2, 0.02}) {
+      SCOPED_TRACE("s = " + std::to_string(slide) + ", ds/dt = " + std::to_string(rate));
+      const std::vector<double> q = state(m, slider, slide, 0.05);
+      std::vector<double> v(static_cast<size_t>(n));
+      for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = 0.2 * std::cos(0.3 + k);
+      v[SliderConstraint::kSlide] = rate;
+      auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
+        out.assign(static_cast<size_t>(n), 0.0);
+        slider.evaluate({x, v, {}, 0.0}, out.data(), {}, scratch);
+      };
+      const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
+      std::vector<double> J(static_cast<size_t>(n * n));
+      const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
+      slider.evaluate({q, v, {}, 0.0}, nullptr, request, scratch);
+      EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
+      auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
+        out.assign(static_cast<size_t>(n), 0.0);
+        slider.evaluate({q, u, {}, 0.0}, out.data(), {}, scratch);
+      };
+      const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n, 1e-7);
+      std::vector<double> C(static_cast<size_t>(n * n));
+      const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
+      slider.evaluate({q, v, {}, 0.0}, nullptr, only_c, scratch);
+      EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-7);
+      // The force itself: μ |t × λ| φ(ṡ) beyond the viscous part.
+      std::vector<double> f(static_cast<size_t>(n));
+      slider.evaluate({q, v, {}, 0.0}, f.data(), {}, scratch);
+      std::vector<double> f_static(static_cast<size_t>(n));
+      slider.evaluate({q, {}, {}, 0.0}, f_static.data(), {}, scratch);
+      const double coulomb =
+          f[SliderConstraint::kSlide] - f_static[SliderConstraint::kSlide] - 2.5 * rate;
+      EXPECT_GT(coulomb * rate, 0.0);  // opposes the motion (the s row is t·λ's balance)
+      for (int k = 0; k < n; ++k) {
+        if (k == SliderConstraint::kSlide) continue;
+        EXPECT_EQ(f[static_cast<size_t>(k)], f_static[static_cast<size_t>(k)]) << k;
+      }
+    }
 }
 
 TEST(SliderConstraint, AccelerationTargetAlongATrajectoryAcrossABoundary) {

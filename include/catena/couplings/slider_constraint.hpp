@@ -11,6 +11,14 @@
 //   G:                 [I, −t, −S_b I]
 //   c_K block (∂(Gᵀλ)/∂q):  (s, s) −κ·λ,  (s, q_b) and (q_b, s) −σ S_b' λ
 //   c_C block:              (s, s) c                (c: the slider's damping)
+// Coulomb friction (model::Slider::friction μ, stick speed v) adds to the s row
+//   F = μ n φ(ṡ),  n = |t × λ| = |t| |λ_⊥|,  φ(ṡ) = ṡ/√(ṡ² + v²)
+// (λ_⊥: the multipliers' part across the path, the normal force; n is |t| times it, as the
+// row's t·λ is |t| times the force along the path), whose derivatives go to the λ columns
+// (c_λ μ φ ∂n/∂λ), the c_K block (through t: μ φ ∂n/∂t · ∂t/∂(s, q_b)) and the c_C block
+// (c_C μ n φ'(ṡ)). φ is a smoothed sign: below v the force grows with the speed (a
+// creep of ṡ = v φ/√(1 − φ²) where a load of φ times the friction limit pushes), above it
+// the force is μ times the normal force to within (v/ṡ)²/2.
 //   γ = 2 ṡ ṫ + ṡ² κ,  ṫ = σ Σ S_b' q̇_b      (G a = γ: the acceleration-level constraint)
 // The s row says the multipliers' tangential part is the friction force; with c = 0 the path
 // pushes on the node only across itself. The slopes are shared at the nodes, so r_path and t
@@ -37,7 +45,7 @@ class SliderConstraint final : public ConstraintCoupling {
   void pattern(std::vector<std::pair<int, int>>& entries) const override;
   void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                 Scratch& scratch) const override;
-  bool has_damping() const override { return damping_ != 0.0; }
+  bool has_damping() const override { return damping_ != 0.0 || friction_ > 0.0; }
   bool linear() const override { return false; }
   void acceleration_target(const CouplingState& s, std::span<double> out) const override;
 
@@ -61,6 +69,7 @@ class SliderConstraint final : public ConstraintCoupling {
   std::vector<int> element_a_, element_b_;  // per path element: position of its first/last
                                             // node's DOFs in dofs()
   double damping_ = 0.0;
+  double friction_ = 0.0, stick_speed_ = 1.0;  // Coulomb: μ and v (m/s)
 };
 
 }  // namespace catena::couplings

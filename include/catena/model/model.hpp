@@ -276,17 +276,21 @@ struct InitialConditions {
 //   g = r − r_path(s) = 0,   r_path(s) = S1 r_A + S2 r_A,x + S3 r_B + S4 r_B,x
 // on the path element holding s (arc length on the reference geometry, as a pantograph's).
 // The ANCF slopes are shared at the nodes, so r_path and its tangent are continuous across
-// element boundaries. The tangential part of the multipliers is the friction:
-//   (∂r_path/∂s)·λ = −damping·ṡ    (viscous; zero: frictionless)
+// element boundaries. The tangential part of the multipliers is the friction, viscous and
+// Coulomb (regularised):
+//   (∂r_path/∂s)·λ = damping·ṡ + friction·|t × λ|·ṡ/√(ṡ² + stick_speed²)
+// (t = ∂r_path/∂s; |t × λ| is |t| times the normal force; zero: frictionless).
 // The node carries no mass of its own along s; masses, springs and bars at it, or a body
 // joined to it (a spherical joint), carry the trolley.
 struct Slider {
   std::string name;
-  int node = 0;          // its node (kind slider)
-  int path = 0;          // index into Model::paths
-  double start = 0.0;    // m: s in the reference configuration (where the node lies)
-  double damping = 0.0;  // N·s/m along the path
-  int constraint = -1;   // index of its constraint (type slider)
+  int node = 0;               // its node (kind slider)
+  int path = 0;               // index into Model::paths
+  double start = 0.0;         // m: s in the reference configuration (where the node lies)
+  double damping = 0.0;       // N·s/m along the path
+  double friction = 0.0;      // Coulomb coefficient μ: |friction force| ≤ μ |normal force|
+  double stick_speed = 1e-3;  // m/s: below it the Coulomb force grows with ṡ (regularised)
+  int constraint = -1;        // index of its constraint (type slider)
 };
 
 // A constant force moving at constant speed along a chain of cable/beam elements
