@@ -24,7 +24,7 @@ int SecondOrderSystem::linearize_elements(Vec q0, const std::function<bool(int)>
         rest.push_back(i);
         continue;
       }
-      const ActiveDofs dofs = active(i, 0.0, work_);
+      const ActiveDofs dofs = active(i, 0.0, q.data(), work_);
       const couplings::CouplingState s = gather(dofs, q.data(), nullptr, {}, 0.0, work_);
       element->linearize_about(s.q);
       block.push_back(i);

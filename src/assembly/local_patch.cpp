@@ -115,7 +115,7 @@ LocalPatch SecondOrderSystem::local_patch(const std::vector<PetscInt>& seeds, in
   std::vector<size_t> timed;
   std::vector<std::vector<PetscInt>> timed_local;
   for (size_t k : timed_) {
-    const ActiveDofs dofs = active(k, t, work_);
+    const ActiveDofs dofs = active(k, t, nullptr, work_);  // contacts: by time
     if (dofs.n == 0) continue;
     timed.push_back(k);
     timed_local.emplace_back(dofs.local, dofs.local + dofs.n);
@@ -206,7 +206,7 @@ void SecondOrderSystem::patch_force(const LocalPatch& patch, const double* q, co
   Buffers b;
   const PetscInt* row = patch.coupling_rows.data();
   for (size_t k : patch.couplings) {
-    const ActiveDofs dofs = active(k, patch.t, b);
+    const ActiveDofs dofs = active(k, patch.t, q, b);
     b.f.resize(std::max(b.f.size(), dofs.n));
     evaluate(k, dofs, q, v, {}, patch.t, b.f.data(), {}, b);
     const double* f = scale_force(dofs, b.f.data(), b.scaled);
@@ -223,7 +223,7 @@ void SecondOrderSystem::patch_mass_product(const LocalPatch& patch, const double
   std::vector<double> d_el;
   const PetscInt* row = patch.coupling_rows.data();
   for (size_t k : patch.couplings) {
-    const ActiveDofs dofs = active(k, patch.t, b);
+    const ActiveDofs dofs = active(k, patch.t, nullptr, b);  // kernels and contacts only
     const size_t nd = dofs.n;
     if (couplings_[k]->patch_role() != PatchRole::kernel) {  // only kernels carry mass
       row += nd;
@@ -256,7 +256,7 @@ std::vector<PatchEntry> SecondOrderSystem::patch_matrix(const LocalPatch& patch,
   std::vector<PetscInt> unknown;
   const PetscInt* row = patch.coupling_rows.data();
   for (size_t k : patch.couplings) {
-    const ActiveDofs dofs = active(k, patch.t, b);
+    const ActiveDofs dofs = active(k, patch.t, q, b);
     const size_t nd = dofs.n;
     b.block.resize(std::max(b.block.size(), nd * nd));
     const couplings::MatrixRequest request{c, b.block.data()};

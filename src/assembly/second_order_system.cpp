@@ -150,13 +150,44 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   f_work_ = create_vector();
 }
 
-SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, Buffers& b) const {
+namespace {
+
+// A coupling's DOF values in a local array, as gather() reads them.
+class LocalDofValues final : public couplings::DofValues {
+ public:
+  LocalDofValues(const double* q_local, const PetscInt* local, const double* fixed,
+                 const double* coefficient)
+      : q_(q_local), local_(local), fixed_(fixed), coefficient_(coefficient) {}
+  double at(int position) const override {
+    const PetscInt l = local_[position];
+    if (l < 0) return fixed_[position];
+    return coefficient_[position] * q_[l];
+  }
+
+ private:
+  const double* q_;
+  const PetscInt* local_;
+  const double* fixed_;
+  const double* coefficient_;
+};
+
+}  // namespace
+
+SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, const double* q_local,
+                                                        Buffers& b) const {
   const size_t begin = offset_[i];
   const bool linked = has_linked_[i] != 0;
   if (acts_on_all_[i])
     return {local_index_.data() + begin, global_index_.data() + begin, fixed_value_.data() + begin,
             linked ? coefficient_.data() + begin : nullptr, offset_[i + 1] - begin};
-  couplings_[i]->active_dofs(t, b.positions);
+  if (couplings_[i]->state_dependent_activity()) {
+    CATENA_ASSERT(q_local != nullptr, "a coupling whose activity follows the state needs it");
+    const LocalDofValues values(q_local, local_index_.data() + begin, fixed_value_.data() + begin,
+                                coefficient_.data() + begin);
+    couplings_[i]->active_dofs_at(t, values, b.positions);
+  } else {
+    couplings_[i]->active_dofs(t, b.positions);
+  }
   b.local.clear();
   b.global.clear();
   b.fixed.clear();
@@ -351,7 +382,7 @@ void SecondOrderSystem::assemble_matrices(const EvalPoint& p,
     if (p.v) v = std::make_unique<LocalArrayRead>(v_work_.get());
     std::vector<double>* blocks[2] = {&work_.block, &work_.block2};
     for (const size_t i : only) {
-      const ActiveDofs dofs = active(i, p.t, work_);
+      const ActiveDofs dofs = active(i, p.t, q.data(), work_);
       if (dofs.n == 0) continue;
       for (size_t r = 0; r < requests.size(); ++r) {
         if (blocks[r]->size() < dofs.n * dofs.n) blocks[r]->resize(dofs.n * dofs.n);

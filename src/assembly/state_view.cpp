@@ -46,8 +46,8 @@ void StateView::section_results(const EvalPoint& p, std::vector<int>& element_in
   for (size_t i = 0; i < sys.couplings_.size(); ++i) {
     const auto* e = dynamic_cast<const ElementCoupling*>(sys.couplings_[i].get());
     if (!e || e->origin() != ElementOrigin::element) continue;
-    const couplings::CouplingState g =
-        sys.gather(sys.active(i, p.t, sys.work_), q.data(), nullptr, p.path, p.t, sys.work_);
+    const couplings::CouplingState g = sys.gather(sys.active(i, p.t, q.data(), sys.work_), q.data(),
+                                                  nullptr, p.path, p.t, sys.work_);
     const elements::LocalState s{g.q, {}, p.path};
     element_indices.push_back(e->source());
     results.push_back(e->element().section_result(s));
@@ -190,8 +190,8 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
       const bool on = c->on_path(p.t);
       double delta = 0.0, F = 0.0;
       if (on) {
-        F = c->force(sys.gather(sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr,
-                                p.path, p.t, sys.work_),
+        F = c->force(sys.gather(sys.active(i, p.t, q.data(), sys.work_), q.data(),
+                                v ? v->data() : nullptr, p.path, p.t, sys.work_),
                      &delta);
       }
       local[4 * k] = F;
@@ -204,8 +204,9 @@ std::vector<ContactState> StateView::contact_states(const EvalPoint& p) const {
     for (const size_t i : bilateral_couplings_) {
       const auto* c = static_cast<const couplings::BilateralContact*>(sys.couplings_[i].get());
       const auto k = static_cast<size_t>(c->contact());
-      const couplings::CouplingState state = sys.gather(
-          sys.active(i, p.t, sys.work_), q.data(), v ? v->data() : nullptr, p.path, p.t, sys.work_);
+      const couplings::CouplingState state =
+          sys.gather(sys.active(i, p.t, q.data(), sys.work_), q.data(), v ? v->data() : nullptr,
+                     p.path, p.t, sys.work_);
       local[4 * k] = state.q[0];
       local[4 * k + 1] = c->position(p.t);
       local[4 * k + 3] = 1.0;

@@ -68,7 +68,7 @@ void SecondOrderSystem::constraint_targets(const EvalPoint& p, Vec out, bool vel
     for (size_t i = 0; i < couplings_.size(); ++i) {
       const auto* c = dynamic_cast<const couplings::ConstraintCoupling*>(couplings_[i].get());
       if (!c) continue;
-      const ActiveDofs dofs = active(i, p.t, work_);
+      const ActiveDofs dofs = active(i, p.t, q.data(), work_);
       const int n = dofs_.n_multipliers(c->index());
       std::array<double, model::kMaxMultipliersPerConstraint> target{};
       const couplings::CouplingState state =

@@ -20,7 +20,7 @@ void SecondOrderSystem::visit_forces(const EvalPoint& p, Fn&& fn,
   const size_t n = only ? only->size() : couplings_.size();
   for (size_t k = 0; k < n; ++k) {
     const size_t i = only ? (*only)[k] : k;
-    const ActiveDofs dofs = active(i, p.t, work_);
+    const ActiveDofs dofs = active(i, p.t, q.data(), work_);
     if (dofs.n == 0) continue;
     if (work_.f.size() < dofs.n) work_.f.resize(dofs.n);
     evaluate(i, dofs, q.data(), v ? v->data() : nullptr, p.path, p.t, work_.f.data(), {}, work_);

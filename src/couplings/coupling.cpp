@@ -14,4 +14,8 @@ void Coupling::active_dofs(double, std::vector<int>& positions) const {
   for (size_t i = 0; i < positions.size(); ++i) positions[i] = static_cast<int>(i);
 }
 
+void Coupling::active_dofs_at(double t, const DofValues&, std::vector<int>& positions) const {
+  active_dofs(t, positions);
+}
+
 }  // namespace catena::couplings

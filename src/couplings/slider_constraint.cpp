@@ -73,21 +73,26 @@ SliderConstraint::Place SliderConstraint::place(double s) const {
     p.dS[b] = h.ds[b];
     p.ddS[b] = beyond != 0.0 ? 0.0 : h.dds[b];
   }
-  const int a = element_a_[p.element], e = element_b_[p.element];
-  p.first[0] = a;
-  p.first[1] = a + 3;
-  p.first[2] = e;
-  p.first[3] = e + 3;
   return p;
+}
+
+void SliderConstraint::active_dofs_at(double, const DofValues& q,
+                                      std::vector<int>& positions) const {
+  const std::size_t element = place(q.at(kSlide)).element;
+  positions.clear();
+  for (int k = 0; k < kPath; ++k) positions.push_back(k);
+  for (const int first : {element_a_[element], element_b_[element]})
+    for (int k = 0; k < 6; ++k) positions.push_back(first + k);
 }
 
 void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                                 Scratch&) const {
-  const int n = static_cast<int>(dofs_.size());
+  const int n = static_cast<int>(s.q.size());
+  CATENA_ASSERT(n == kPath + 12, "a slider acts on lambda, r, s and one path element");
   const std::span<const double> q = s.q;
   const Place p = place(q[kSlide]);
   auto block = [&](int b) {
-    const int i = p.first[b];
+    const int i = kFirst[b];
     return Vec3(q[static_cast<size_t>(i)], q[static_cast<size_t>(i + 1)],
                 q[static_cast<size_t>(i + 2)]);
   };
@@ -121,7 +126,7 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
     }
     f[kSlide] = -tangent.dot(lambda) + damping_ * slide_rate + friction_ * normal * phi;
     for (int b = 0; b < 4; ++b)
-      for (int d = 0; d < 3; ++d) f[p.first[b] + d] += -p.S[b] * lambda[d];
+      for (int d = 0; d < 3; ++d) f[kFirst[b] + d] += -p.S[b] * lambda[d];
   }
   for (const MatrixRequest& r : m) {
     double* J = r.out;
@@ -135,8 +140,8 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
       add(kSlide, kLambda + d, c.c_lambda * (-tangent[d] + friction_ * phi * dn_dlambda[d]));
       add(kLambda + d, kSlide, -c.c_g * tangent[d]);
       for (int b = 0; b < 4; ++b) {
-        add(p.first[b] + d, kLambda + d, -c.c_lambda * p.S[b]);
-        add(kLambda + d, p.first[b] + d, -c.c_g * p.S[b]);
+        add(kFirst[b] + d, kLambda + d, -c.c_lambda * p.S[b]);
+        add(kLambda + d, kFirst[b] + d, -c.c_g * p.S[b]);
       }
     }
     // ∂(Gᵀλ)/∂q: the s row's −t·λ varies with s and with the path's blocks.
@@ -147,8 +152,8 @@ void SliderConstraint::evaluate(const CouplingState& s, double* f, std::span<con
       for (int b = 0; b < 4; ++b)
         for (int d = 0; d < 3; ++d) {
           const double h = -c.c_K * p.sigma * p.dS[b] * lambda[d];
-          add(kSlide, p.first[b] + d, h + c.c_K * mu_phi * p.sigma * p.dS[b] * dn_dtangent[d]);
-          add(p.first[b] + d, kSlide, h);
+          add(kSlide, kFirst[b] + d, h + c.c_K * mu_phi * p.sigma * p.dS[b] * dn_dtangent[d]);
+          add(kFirst[b] + d, kSlide, h);
         }
     }
     if (c.c_C != 0.0) add(kSlide, kSlide, c.c_C * (damping_ + friction_ * normal * dphi));
@@ -163,7 +168,7 @@ void SliderConstraint::acceleration_target(const CouplingState& s, std::span<dou
   const double rate = s.v[kSlide];
   Vec3 tangent_rate = Vec3::Zero(), curvature = Vec3::Zero();
   for (int b = 0; b < 4; ++b) {
-    const int i = p.first[b];
+    const int i = kFirst[b];
     for (int d = 0; d < 3; ++d) {
       tangent_rate[d] += p.sigma * p.dS[b] * s.v[static_cast<size_t>(i + d)];
       curvature[d] += p.ddS[b] * q[static_cast<size_t>(i + d)];

@@ -14,12 +14,6 @@
 namespace catena::model::detail {
 namespace {
 
-// The longest path a slider takes, in elements. Its constraint acts on every node of its
-// path at every time (couplings/slider_constraint.hpp), and its matrix block is dense over
-// them: at 250 elements, (6·251 + 7)² entries, 18 MB per block. A trolley runs along a span
-// or a few; a pantograph along kilometres uses a moving contact instead.
-constexpr std::size_t kMaxPathElements = 250;
-
 // m: how far a slider's node may lie from its path (the constraint holds it there from the
 // first step: a gap would be a jump).
 constexpr double kOnPathTolerance = 1e-6;
@@ -87,12 +81,6 @@ void read_sliders(const Field& sliders, SceneBuild& build) {
         entry, build, line.present() && line.is_scalar() ? line.text() : "slider " + slider.name,
         "sliders");
     const std::vector<int>& path = model.paths[static_cast<size_t>(slider.path)].elements;
-    if (path.size() > kMaxPathElements)
-      (line.present() ? line : entry.child("path"))
-          .fail("the path has " + std::to_string(path.size()) +
-                " elements; a slider takes at most " + std::to_string(kMaxPathElements) +
-                " (its constraint couples it to every node of its path at every step): give "
-                "the lines it runs along (line: [a, b]), not the whole line");
     for (int e : path)
       for (int n : model.elements[static_cast<size_t>(e)].nodes)
         if (n == slider.node)

@@ -6,7 +6,9 @@
 // continuous across the boundary.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,64 @@ model::Model scene(const std::string& extra = "") {
       "supports: [{node: 1, fix: pinned}, {node: 2, fix: pinned}]\n"
       "analysis: {type: dynamic, duration: 1, initial: {from: reference}}\n";
   return model::parse_scene(text, "slider.yaml");
+}
+
+// A state over all of a coupling's dofs(), read by position.
+class FullValues final : public couplings::DofValues {
+ public:
+  explicit FullValues(std::span<const double> q) : q_(q) {}
+  double at(int position) const override { return q_[static_cast<size_t>(position)]; }
+
+ private:
+  std::span<const double> q_;
+};
+
+// The part of a state over dofs() that the slider acts on, as the system gathers it.
+struct ActivePart {
+  std::vector<int> positions;
+  std::vector<double> q, v;
+};
+ActivePart active_part(const SliderConstraint& slider, const couplings::CouplingState& full) {
+  ActivePart a;
+  slider.active_dofs_at(full.t, FullValues(full.q), a.positions);
+  for (const int p : a.positions) {
+    a.q.push_back(full.q[static_cast<size_t>(p)]);
+    if (!full.v.empty()) a.v.push_back(full.v[static_cast<size_t>(p)]);
+  }
+  return a;
+}
+
+// The slider evaluated as the system evaluates it (on the DOFs it picks from the state), its
+// force and matrices scattered back to the positions of dofs(), zero elsewhere: so that
+// central differences over all of dofs() check the choice too.
+void evaluate_full(const SliderConstraint& slider, const couplings::CouplingState& full, double* f,
+                   std::span<const MatrixRequest> m, couplings::Scratch& scratch) {
+  const size_t n = slider.dofs().size();
+  const ActivePart a = active_part(slider, full);
+  const size_t na = a.positions.size();
+  EXPECT_EQ(na, static_cast<size_t>(SliderConstraint::kPath + 12));
+  std::vector<double> fa(na);
+  std::vector<std::vector<double>> blocks(m.size(), std::vector<double>(na * na));
+  std::vector<MatrixRequest> requests;
+  for (size_t k = 0; k < m.size(); ++k) requests.push_back({m[k].c, blocks[k].data()});
+  slider.evaluate({a.q, a.v, full.path, full.t}, f ? fa.data() : nullptr, requests, scratch);
+  if (f) {
+    std::fill(f, f + n, 0.0);
+    for (size_t i = 0; i < na; ++i) f[a.positions[i]] = fa[i];
+  }
+  for (size_t k = 0; k < m.size(); ++k) {
+    std::fill(m[k].out, m[k].out + n * n, 0.0);
+    for (size_t i = 0; i < na; ++i)
+      for (size_t j = 0; j < na; ++j)
+        m[k].out[static_cast<size_t>(a.positions[i]) * n + static_cast<size_t>(a.positions[j])] =
+            blocks[k][i * na + j];
+  }
+}
+
+void acceleration_target_full(const SliderConstraint& slider, const couplings::CouplingState& full,
+                              std::span<double> out) {
+  const ActivePart a = active_part(slider, full);
+  slider.acceleration_target({a.q, a.v, full.path, full.t}, out);
 }
 
 // [λ, r, s, path nodes' r and r_x]: reference values (s = `slide`), the path and the node
@@ -70,7 +130,7 @@ TEST(SliderConstraint, VanishesOnThePathAndMatchesFiniteDifferences) {
   EXPECT_EQ(n, 7 + 4 * 6);
   couplings::Scratch scratch;
   std::vector<double> f(static_cast<size_t>(n));
-  slider.evaluate({state(m, slider, 1.3, 0.0), {}, {}, 0.0}, f.data(), {}, scratch);
+  evaluate_full(slider, {state(m, slider, 1.3, 0.0), {}, {}, 0.0}, f.data(), {}, scratch);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(f[k], 0.0, 1e-14) << k;
 
   // Inside the first element, inside the second, and just either side of their boundary.
@@ -81,22 +141,22 @@ TEST(SliderConstraint, VanishesOnThePathAndMatchesFiniteDifferences) {
     for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = 0.2 * std::cos(0.3 + k);
     auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
       out.assign(static_cast<size_t>(n), 0.0);
-      slider.evaluate({x, v, {}, 0.0}, out.data(), {}, scratch);
+      evaluate_full(slider, {x, v, {}, 0.0}, out.data(), {}, scratch);
     };
     const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
     std::vector<double> J(static_cast<size_t>(n * n));
     const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
-    slider.evaluate({q, v, {}, 0.0}, nullptr, request, scratch);
+    evaluate_full(slider, {q, v, {}, 0.0}, nullptr, request, scratch);
     EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
     // ∂f/∂v: the damping on s alone.
     auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
       out.assign(static_cast<size_t>(n), 0.0);
-      slider.evaluate({q, u, {}, 0.0}, out.data(), {}, scratch);
+      evaluate_full(slider, {q, u, {}, 0.0}, out.data(), {}, scratch);
     };
     const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n);
     std::vector<double> C(static_cast<size_t>(n * n));
     const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
-    slider.evaluate({q, v, {}, 0.0}, nullptr, only_c, scratch);
+    evaluate_full(slider, {q, v, {}, 0.0}, nullptr, only_c, scratch);
     EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-8);
     EXPECT_DOUBLE_EQ(C[static_cast<size_t>(SliderConstraint::kSlide * (n + 1))], 2.5);
   }
@@ -122,27 +182,27 @@ TEST(SliderConstraint, CoulombFrictionMatchesFiniteDifferences) {
       v[SliderConstraint::kSlide] = rate;
       auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
         out.assign(static_cast<size_t>(n), 0.0);
-        slider.evaluate({x, v, {}, 0.0}, out.data(), {}, scratch);
+        evaluate_full(slider, {x, v, {}, 0.0}, out.data(), {}, scratch);
       };
       const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
       std::vector<double> J(static_cast<size_t>(n * n));
       const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
-      slider.evaluate({q, v, {}, 0.0}, nullptr, request, scratch);
+      evaluate_full(slider, {q, v, {}, 0.0}, nullptr, request, scratch);
       EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
       auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
         out.assign(static_cast<size_t>(n), 0.0);
-        slider.evaluate({q, u, {}, 0.0}, out.data(), {}, scratch);
+        evaluate_full(slider, {q, u, {}, 0.0}, out.data(), {}, scratch);
       };
       const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n, 1e-7);
       std::vector<double> C(static_cast<size_t>(n * n));
       const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
-      slider.evaluate({q, v, {}, 0.0}, nullptr, only_c, scratch);
+      evaluate_full(slider, {q, v, {}, 0.0}, nullptr, only_c, scratch);
       EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-7);
       // The force itself: μ |t × λ| φ(ṡ) beyond the viscous part.
       std::vector<double> f(static_cast<size_t>(n));
-      slider.evaluate({q, v, {}, 0.0}, f.data(), {}, scratch);
+      evaluate_full(slider, {q, v, {}, 0.0}, f.data(), {}, scratch);
       std::vector<double> f_static(static_cast<size_t>(n));
-      slider.evaluate({q, {}, {}, 0.0}, f_static.data(), {}, scratch);
+      evaluate_full(slider, {q, {}, {}, 0.0}, f_static.data(), {}, scratch);
       const double coulomb =
           f[SliderConstraint::kSlide] - f_static[SliderConstraint::kSlide] - 2.5 * rate;
       EXPECT_GT(coulomb * rate, 0.0);  // opposes the motion (the s row is t·λ's balance)
@@ -175,14 +235,14 @@ TEST(SliderConstraint, AccelerationTargetAlongATrajectoryAcrossABoundary) {
     }
     auto g = [&](double s) {
       std::vector<double> out(static_cast<size_t>(n));
-      slider.evaluate({q_at(s), {}, {}, s}, out.data(), {}, scratch);
+      evaluate_full(slider, {q_at(s), {}, {}, s}, out.data(), {}, scratch);
       return out;
     };
     std::vector<double> G(static_cast<size_t>(n * n));
     const MatrixRequest only_g[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
-    slider.evaluate({q_at(t), {}, {}, t}, nullptr, only_g, scratch);
+    evaluate_full(slider, {q_at(t), {}, {}, t}, nullptr, only_g, scratch);
     std::vector<double> target(3), velocity(3);
-    slider.acceleration_target({q_at(t), v, {}, t}, target);
+    acceleration_target_full(slider, {q_at(t), v, {}, t}, target);
     slider.velocity_target({q_at(t), v, {}, t}, velocity);
     const std::vector<double> gp = g(t + h), g0 = g(t), gm = g(t - h);
     for (int k = 0; k < 3; ++k) {
@@ -206,7 +266,7 @@ TEST(SliderConstraint, PathPointAndTangentAreContinuousAcrossAnElementBoundary) 
     g.assign(static_cast<size_t>(n), 0.0);
     G.assign(static_cast<size_t>(n * n), 0.0);
     const MatrixRequest only_g[1] = {{{0.0, 0.0, 0.0, 0.0, 1.0}, G.data()}};
-    slider.evaluate({q, {}, {}, 0.0}, g.data(), only_g, scratch);
+    evaluate_full(slider, {q, {}, {}, 0.0}, g.data(), only_g, scratch);
   };
   std::vector<double> g_below, G_below, g_above, G_above;
   const double e = 1e-9;

@@ -187,7 +187,10 @@ class SecondOrderSystem {
     const double* coefficient = nullptr;
     size_t n = 0;
   };
-  ActiveDofs active(size_t i, double t, Buffers& b) const;
+  // Coupling i's active DOFs at t; `q_local` (the local array of the state being
+  // evaluated) is read only by a coupling whose activity depends on the state, and must be
+  // given for one.
+  ActiveDofs active(size_t i, double t, const double* q_local, Buffers& b) const;
   // The state of `dofs` from local arrays (v may be null: zero velocity), gathered into
   // b.q and b.v.
   couplings::CouplingState gather(const ActiveDofs& dofs, const double* q_local,

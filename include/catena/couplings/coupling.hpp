@@ -78,6 +78,17 @@ enum class PatchRole {
   excluded,           // its forces are not re-evaluated in patches: its nodes are not unknowns
 };
 
+// The values of a coupling's DOFs in the state being evaluated, by position in dofs(): what
+// a coupling whose active DOFs follow its own unknowns reads to choose them
+// (Coupling::active_dofs_at; a slider's arc length picks the path element it acts on).
+class DofValues {
+ public:
+  virtual double at(int position) const = 0;
+
+ protected:
+  ~DofValues() = default;
+};
+
 class Coupling {
  public:
   virtual ~Coupling() = default;
@@ -99,6 +110,10 @@ class Coupling {
   // Positions in dofs() of the DOFs it acts on at time t; empty: none now. The matrix
   // entries among them lie in pattern().
   virtual void active_dofs(double t, std::vector<int>& positions) const;
+  // The same where they also depend on the state (state_dependent_activity()); `q` holds
+  // the state being evaluated. By default: active_dofs(t).
+  virtual bool state_dependent_activity() const { return false; }
+  virtual void active_dofs_at(double t, const DofValues& q, std::vector<int>& positions) const;
 
   // f (n_active, may be null) and each requested matrix combination over the active DOFs.
   // Overwrites the outputs.

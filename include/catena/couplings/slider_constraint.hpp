@@ -2,7 +2,9 @@
 // A slider (model::Slider) as a constraint: its node's point r and its arc length s along a
 // path of cable or beam elements, held together by
 //   g(q) = r − r_path(s) = 0,   r_path(s) = Σ_b S_b(x(s)) q_b                 (3 equations)
-// over the DOFs [λ (3), r (3), s, then every path node's r and r_x (6 each, ascending)].
+// over the DOFs [λ (3), r (3), s, then every path node's r and r_x (6 each, ascending)], of
+// which it acts on λ, r, s and the two nodes of the path element holding s (19 DOFs, chosen
+// from the state: active_dofs_at).
 // On the path element holding s, q_b are its blocks r_A, r_A,x, r_B, r_B,x and S_b the ANCF
 // Hermite functions (elements/hermite.hpp) at x = s − start (L − (s − start) on an element
 // walked backwards, model::element_reversed); σ = dx/ds = ±1. With t = ∂r_path/∂s = σ Σ S_b' q_b
@@ -26,9 +28,10 @@
 // path goes on along its end tangent (so that a Newton iterate may overshoot); a step that
 // ends there stops the run (solvers/time/state_guard.hpp: the slider left its path).
 //
-// The coupling acts on the whole path at every time (s is an unknown, not a function of
-// time), so its matrix holds a row of the path's DOFs: for a trolley on a span, not for a
-// pantograph on kilometres of line (which uses a moving contact).
+// s is an unknown, so the element it acts on follows the state, not the time: its matrix
+// pattern holds λ, r and s against every path DOF (rows and columns), as a moving contact's
+// holds the head against its path, and each evaluation fills the 19 × 19 block of the
+// element holding s.
 #include <vector>
 
 #include "catena/couplings/constraint_coupling.hpp"
@@ -48,8 +51,14 @@ class SliderConstraint final : public ConstraintCoupling {
   bool has_damping() const override { return damping_ != 0.0 || friction_ > 0.0; }
   bool linear() const override { return false; }
   void acceleration_target(const CouplingState& s, std::span<double> out) const override;
+  bool acts_on_all() const override { return false; }
+  bool state_dependent_activity() const override { return true; }
+  // λ, r, s (positions 0..6), then the first and the last node (r, r_x) of the path element
+  // holding s.
+  void active_dofs_at(double t, const DofValues& q, std::vector<int>& positions) const override;
 
-  // Positions in dofs() of the multipliers, r and s; then the path's nodes.
+  // Positions in dofs() (and in the active DOFs) of the multipliers, r and s; then, in dofs()
+  // the path's nodes, in the active DOFs the element's two.
   static constexpr int kLambda = 0, kPoint = 3, kSlide = 6, kPath = 7;
   // The path's length, m (s ∈ [0, length] is on it).
   double path_length() const { return stations_.length(); }
@@ -60,8 +69,9 @@ class SliderConstraint final : public ConstraintCoupling {
     std::size_t element = 0;
     double sigma = 1.0;
     double S[4], dS[4], ddS[4];
-    int first[4];  // positions in dofs() of the blocks r_A, r_A,x, r_B, r_B,x
   };
+  // Positions in the active DOFs of the element's blocks r_A, r_A,x, r_B, r_B,x.
+  static constexpr int kFirst[4] = {kPath, kPath + 3, kPath + 6, kPath + 9};
   Place place(double s) const;
 
   model::PathStations stations_;
