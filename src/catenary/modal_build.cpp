@@ -310,12 +310,12 @@ ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, ModalS
   out.frequency_hz = modes.frequency;
   PetscInt n_local = 0;
   CATENA_PETSC(VecGetLocalSize(q0, &n_local));
-  out.shapes.resize(n_local, n);
+  out.shapes = solvers::SinglePrecisionRows(n_local, n);
   for (PetscInt i = 0; i < n; ++i) {
     VecHandle& shape = modes.shape[static_cast<std::size_t>(i)];
     const double* a = nullptr;
     CATENA_PETSC(VecGetArrayRead(shape.get(), &a));
-    out.shapes.col(i) = Eigen::Map<const Eigen::VectorXd>(a, n_local);
+    out.shapes.set_column(i, a);
     CATENA_PETSC(VecRestoreArrayRead(shape.get(), &a));
     shape = VecHandle();  // freed as it is copied: the shapes are not held twice
   }

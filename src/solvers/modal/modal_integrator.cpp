@@ -29,8 +29,7 @@ std::string ModalIntegrator::name() const {
 Eigen::VectorXd ModalIntegrator::project(Vec w) const {
   const double* a = nullptr;
   CATENA_PETSC(VecGetArrayRead(w, &a));
-  Eigen::VectorXd x =
-      model_.shapes.transpose() * Eigen::Map<const Eigen::VectorXd>(a, model_.shapes.rows());
+  Eigen::VectorXd x = model_.shapes.multiply_transposed(a);
   CATENA_PETSC(VecRestoreArrayRead(w, &a));
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(w));
   if (x.size() > 0)
@@ -58,8 +57,8 @@ void ModalIntegrator::rebuild(const Eigen::VectorXd& x, const Eigen::VectorXd& y
   double* a = nullptr;
   if (!rates) CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
   CATENA_PETSC(VecGetArray(out, &a));
-  const auto& Phi = model_.shapes;
-  for (Eigen::Index r = 0; r < Phi.rows(); ++r) a[r] = (base ? base[r] : 0.0) + Phi.row(r).dot(x);
+  model_.shapes.multiply(x, field_);
+  for (Eigen::Index r = 0; r < field_.size(); ++r) a[r] = (base ? base[r] : 0.0) + field_(r);
   add_pantographs(y, a);
   CATENA_PETSC(VecRestoreArray(out, &a));
   if (!rates) CATENA_PETSC(VecRestoreArrayRead(model_.q0.get(), &base));
@@ -74,14 +73,13 @@ void ModalIntegrator::rebuild_state(const Eigen::VectorXd& eta, const Eigen::Vec
   CATENA_PETSC(VecGetArrayRead(model_.q0.get(), &base));
   CATENA_PETSC(VecGetArray(q, &a));
   CATENA_PETSC(VecGetArray(v, &b));
-  // Row by row, each row (one DOF's values in every mode) dotted with both coordinate
-  // vectors while it is in cache: the shapes, the model's largest array, are read once for
-  // the pair (a field sample's cost is that read).
-  const auto& Phi = model_.shapes;
-  for (Eigen::Index r = 0; r < Phi.rows(); ++r) {
-    const auto row = Phi.row(r);
-    a[r] = base[r] + row.dot(eta);
-    b[r] = row.dot(eta_dot);
+  // Each row (one DOF's values in every mode) dotted with both coordinate vectors while it
+  // is in cache: the shapes, the model's largest array, are read once for the pair (a field
+  // sample's cost is that read).
+  model_.shapes.multiply_pair(eta, eta_dot, field_, field_rate_);
+  for (Eigen::Index r = 0; r < field_.size(); ++r) {
+    a[r] = base[r] + field_(r);
+    b[r] = field_rate_(r);
   }
   add_pantographs(u, a);
   add_pantographs(u_dot, b);
@@ -106,7 +104,7 @@ bool ModalIntegrator::current_entries(const std::vector<PetscInt>& rows,
       out[k] = 0.0;
       continue;
     }
-    out[k] = base[r] + model_.shapes.row(r).dot(current_.eta);
+    out[k] = base[r] + model_.shapes.row_dot(r, current_.eta);
     for (std::size_t p = 0; p < owned_pantograph_.size(); ++p)
       if (owned_pantograph_[p] == r) out[k] += current_.u(static_cast<Eigen::Index>(p));
   }

@@ -74,7 +74,8 @@ class ModalIntegrator final : public TimeIntegrator {
   // Which of the vectors above hold the state they stand for.
   mutable bool q_fresh_ = false, v_fresh_ = false, a_fresh_ = false, pending_fresh_ = false;
   mutable long field_rebuilds_ = 0;
-  std::vector<PetscInt> owned_pantograph_;  // per pantograph DOF: its local index or −1
+  mutable Eigen::VectorXd field_, field_rate_;  // a rebuild's Φ̃ η and Φ̃ η̇ (rows: owned DOFs)
+  std::vector<PetscInt> owned_pantograph_;      // per pantograph DOF: its local index or −1
 };
 
 }  // namespace catena::solvers
