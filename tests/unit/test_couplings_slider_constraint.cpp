@@ -99,6 +99,33 @@ void acceleration_target_full(const SliderConstraint& slider, const couplings::C
   slider.acceleration_target({a.q, a.v, full.path, full.t}, out);
 }
 
+// The static Jacobian (∂f/∂q with Gᵀ and G, within 1e-7) and ∂f/∂v (within c_tolerance)
+// at (q, v) over all of dofs() against central differences; returns ∂f/∂v.
+std::vector<double> check_matrices(const SliderConstraint& slider, const std::vector<double>& q,
+                                   const std::vector<double>& v, double c_tolerance,
+                                   couplings::Scratch& scratch) {
+  const auto n = static_cast<int>(slider.dofs().size());
+  auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
+    out.assign(static_cast<size_t>(n), 0.0);
+    evaluate_full(slider, {x, v, {}, 0.0}, out.data(), {}, scratch);
+  };
+  const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
+  std::vector<double> J(static_cast<size_t>(n * n));
+  const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
+  evaluate_full(slider, {q, v, {}, 0.0}, nullptr, request, scratch);
+  EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
+  auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
+    out.assign(static_cast<size_t>(n), 0.0);
+    evaluate_full(slider, {q, u, {}, 0.0}, out.data(), {}, scratch);
+  };
+  const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n, 1e-7);
+  std::vector<double> C(static_cast<size_t>(n * n));
+  const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
+  evaluate_full(slider, {q, v, {}, 0.0}, nullptr, only_c, scratch);
+  EXPECT_LT(test::relative_max_difference(C, fd_c), c_tolerance);
+  return C;
+}
+
 // [λ, r, s, path nodes' r and r_x]: reference values (s = `slide`), the path and the node
 // distorted, multipliers and rates made up.
 std::vector<double> state(const model::Model& m, const SliderConstraint& slider, double slide,
@@ -139,25 +166,8 @@ TEST(SliderConstraint, VanishesOnThePathAndMatchesFiniteDifferences) {
     const std::vector<double> q = state(m, slider, slide, 0.05);
     std::vector<double> v(static_cast<size_t>(n));
     for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = 0.2 * std::cos(0.3 + k);
-    auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
-      out.assign(static_cast<size_t>(n), 0.0);
-      evaluate_full(slider, {x, v, {}, 0.0}, out.data(), {}, scratch);
-    };
-    const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
-    std::vector<double> J(static_cast<size_t>(n * n));
-    const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
-    evaluate_full(slider, {q, v, {}, 0.0}, nullptr, request, scratch);
-    EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
     // ∂f/∂v: the damping on s alone.
-    auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
-      out.assign(static_cast<size_t>(n), 0.0);
-      evaluate_full(slider, {q, u, {}, 0.0}, out.data(), {}, scratch);
-    };
-    const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n);
-    std::vector<double> C(static_cast<size_t>(n * n));
-    const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
-    evaluate_full(slider, {q, v, {}, 0.0}, nullptr, only_c, scratch);
-    EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-8);
+    const std::vector<double> C = check_matrices(slider, q, v, 1e-8, scratch);
     EXPECT_DOUBLE_EQ(C[static_cast<size_t>(SliderConstraint::kSlide * (n + 1))], 2.5);
   }
 }
@@ -180,24 +190,7 @@ TEST(SliderConstraint, CoulombFrictionMatchesFiniteDifferences) {
       std::vector<double> v(static_cast<size_t>(n));
       for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = 0.2 * std::cos(0.3 + k);
       v[SliderConstraint::kSlide] = rate;
-      auto residual = [&](const std::vector<double>& x, std::vector<double>& out) {
-        out.assign(static_cast<size_t>(n), 0.0);
-        evaluate_full(slider, {x, v, {}, 0.0}, out.data(), {}, scratch);
-      };
-      const std::vector<double> fd = test::central_difference_jacobian(residual, q, n, 1e-7);
-      std::vector<double> J(static_cast<size_t>(n * n));
-      const MatrixRequest request[1] = {{couplings::kStaticJacobian, J.data()}};
-      evaluate_full(slider, {q, v, {}, 0.0}, nullptr, request, scratch);
-      EXPECT_LT(test::relative_max_difference(J, fd), 1e-7);
-      auto in_rates = [&](const std::vector<double>& u, std::vector<double>& out) {
-        out.assign(static_cast<size_t>(n), 0.0);
-        evaluate_full(slider, {q, u, {}, 0.0}, out.data(), {}, scratch);
-      };
-      const std::vector<double> fd_c = test::central_difference_jacobian(in_rates, v, n, 1e-7);
-      std::vector<double> C(static_cast<size_t>(n * n));
-      const MatrixRequest only_c[1] = {{{0.0, 1.0, 0.0, 0.0, 0.0}, C.data()}};
-      evaluate_full(slider, {q, v, {}, 0.0}, nullptr, only_c, scratch);
-      EXPECT_LT(test::relative_max_difference(C, fd_c), 1e-7);
+      check_matrices(slider, q, v, 1e-7, scratch);
       // The force itself: μ |t × λ| φ(ṡ) beyond the viscous part.
       std::vector<double> f(static_cast<size_t>(n));
       evaluate_full(slider, {q, v, {}, 0.0}, f.data(), {}, scratch);
