@@ -199,8 +199,9 @@ SecondOrderSystem::ActiveDofs SecondOrderSystem::active(size_t i, double t, cons
     b.fixed.push_back(fixed_value_[k]);
     b.coefficient.push_back(coefficient_[k]);
   }
-  return {b.local.data(), b.global.data(), b.fixed.data(), linked ? b.coefficient.data() : nullptr,
-          b.positions.size()};
+  return {b.local.data(),     b.global.data(),
+          b.fixed.data(),     linked ? b.coefficient.data() : nullptr,
+          b.positions.size(), b.positions.data()};
 }
 
 const double* SecondOrderSystem::scale_force(const ActiveDofs& dofs, const double* f,

@@ -128,10 +128,12 @@ Reactions StateView::reactions(const EvalPoint& p) const {
         const couplings::Coupling* c = sys.couplings_[i].get();
         const auto* e = dynamic_cast<const ElementCoupling*>(c);
         if (!e && !dynamic_cast<const couplings::SliderConstraint*>(c)) return;
-        const std::vector<couplings::DofKey>& keys = c->dofs();  // both act on all of them
+        const std::vector<couplings::DofKey>& keys = c->dofs();
         for (size_t k = 0; k < f_el.size(); ++k) {
-          if (keys[k].kind == couplings::DofKey::Kind::multiplier) continue;
-          const int node = keys[k].index, comp = keys[k].component;
+          // A slider acts on the path element under it: its k-th active DOF is not dofs()[k].
+          const couplings::DofKey& key = keys[dofs.position(k)];
+          if (key.kind == couplings::DofKey::Kind::multiplier) continue;
+          const int node = key.index, comp = key.component;
           const std::ptrdiff_t row = slot(node);
           if (row < 0) continue;
           double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];

@@ -186,6 +186,9 @@ class SecondOrderSystem {
     const double* fixed = nullptr;
     const double* coefficient = nullptr;
     size_t n = 0;
+    // Position in the coupling's dofs() of each active DOF; null: all of them, in order.
+    const int* positions = nullptr;
+    size_t position(size_t k) const { return positions ? static_cast<size_t>(positions[k]) : k; }
   };
   // Coupling i's active DOFs at t; `q_local` (the local array of the state being
   // evaluated) is read only by a coupling whose activity depends on the state, and must be
