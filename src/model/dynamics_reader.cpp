@@ -323,6 +323,16 @@ void read_dynamics(const Field& scene, Model& model) {
               "structure's path); use structure: nonlinear");
   read_integrator(scene.child("integrator"), model.constraints.size(), nonlinear_constraints,
                   model.dynamic_options.integrator);
+  // Lobatto IIIC's end-of-step multipliers come from the saddle system [M Gᵀ; G 0], linear in
+  // λ; a slider's Coulomb friction is not (its force grows with the normal force, λ itself),
+  // so they would leave the friction out of every step's end.
+  for (const Slider& slider : model.sliders)
+    if (slider.friction > 0.0 && model.dynamic_options.integrator.type == "lobatto_iiic")
+      scene.child("integrator")
+          .child("type")
+          .fail("integrator type 'lobatto_iiic' takes no Coulomb friction (slider '" + slider.name +
+                "' has friction): its end-of-step multipliers are solved from a system linear "
+                "in them, which leaves the friction out; use hht, radau, bdf or park");
   check_step_within_duration(scene.child("integrator").child("dt"), duration,
                              model.dynamic_options);
 }

@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <limits>
 
+#include "catena/core/error.hpp"
+
 namespace catena::solvers {
 namespace {
 
@@ -95,9 +97,16 @@ SinglePrecisionRows::SinglePrecisionRows(Eigen::Index rows, Eigen::Index cols)
       values_(static_cast<std::size_t>(rows * cols), 0.0f),
       bound_(Eigen::VectorXd::Zero(rows)),
       rounding_squares_(Eigen::VectorXd::Zero(rows)),
-      norm_squares_(Eigen::VectorXd::Zero(rows)) {}
+      norm_squares_(Eigen::VectorXd::Zero(rows)),
+      column_is_set_(static_cast<std::size_t>(cols), 0) {}
 
 void SinglePrecisionRows::set_column(Eigen::Index c, const double* values) {
+  CATENA_ASSERT(c >= 0 && c < cols_ && column_is_set_.size() == static_cast<std::size_t>(cols_),
+                "SinglePrecisionRows::set_column: a column of a matrix built by (rows, cols)");
+  CATENA_ASSERT(!column_is_set_[static_cast<std::size_t>(c)],
+                "SinglePrecisionRows::set_column: each column once (its rounding enters the "
+                "bounds)");
+  column_is_set_[static_cast<std::size_t>(c)] = 1;
   for (Eigen::Index j = 0; j < rows_; ++j) {
     const float rounded = static_cast<float>(values[j]);
     values_[static_cast<std::size_t>(j * cols_ + c)] = rounded;

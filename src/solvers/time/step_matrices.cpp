@@ -31,8 +31,10 @@ void StepMatrices::evaluate_tangent(Vec q, Vec v, double t) {
   }
   tangent_t = t;
   system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, t}, K.get(), damping_matrix());
-  if (algebraic->active() && !system.constraints_linear())  // Gᵀ where K is
-    system.constraint_jacobian({tangent_q.get(), nullptr, {}, t}, {0.0, 0.0, 0.0, 1.0, 0.0},
+  // Gᵀ where K is, and at its velocity: a slider's Coulomb friction puts μ φ(ṡ) ∂n/∂λ into
+  // its multiplier columns.
+  if (algebraic->active() && !system.constraints_linear())
+    system.constraint_jacobian({tangent_q.get(), tangent_v.get(), {}, t}, {0.0, 0.0, 0.0, 1.0, 0.0},
                                coupling.get());
   round_off.set_tangent(K.get());
 }

@@ -8,8 +8,10 @@
 // Order: the modes and the pantographs are stepped exactly for the loads they are given;
 // the site forces enter as loads linear over the step, so the coupled step is second order
 // in h (the error of that interpolation), with no numerical damping and no period error of
-// any mode. A state given by set_state() is projected on the modes (η = Φᵀ M (q − q0)):
-// exact for a state of the model, the part outside the modes lost otherwise.
+// any mode. A state given by set_state() is projected on the modes (η = Φ̃ᵀ M (q − q0)):
+// exact for a state of the model up to the shapes' single-precision rounding (Φ̃ᵀ M Φ̃ = I
+// to about 6·10⁻⁸: a restart, or step doubling's return to a step's start, moves η by that
+// much of itself), the part outside the modes lost otherwise.
 #include <mpi.h>
 
 #include "catena/solvers/modal/modal_model.hpp"

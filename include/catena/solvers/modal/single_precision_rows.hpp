@@ -21,8 +21,8 @@ class SinglePrecisionRows {
 
   SinglePrecisionRows() = default;
   explicit SinglePrecisionRows(const RowMajorMatrix& rows);
-  // rows × cols of zeros, to be filled by set_column (each column once); the bounds hold
-  // once every column is set.
+  // rows × cols of zeros, to be filled by set_column (each column once, checked); the bounds
+  // hold once every column is set.
   SinglePrecisionRows(Eigen::Index rows, Eigen::Index cols);
   // Column c from `values` (rows() of them), rounded; its share of the bounds added.
   void set_column(Eigen::Index c, const double* values);
@@ -51,6 +51,7 @@ class SinglePrecisionRows {
   // While columns are set: per row, Σ (a − ã)² and Σ ã² so far.
   Eigen::VectorXd rounding_squares_, norm_squares_;
   Eigen::Index columns_set_ = 0;
+  std::vector<char> column_is_set_;
 };
 
 }  // namespace catena::solvers

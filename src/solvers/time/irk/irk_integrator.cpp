@@ -193,8 +193,10 @@ struct IrkIntegrator::Impl {
     }
     tangent_t = p.t;
     system.tangent_parts({tangent_q.get(), tangent_v.get(), {}, p.t}, K.get(), C.get());
-    if (algebraic->active() && !system.constraints_linear())  // M + Gᵀ with G where K is
-      refresh_mass_coupling({tangent_q.get(), nullptr, {}, p.t});
+    // M + Gᵀ with G where K is, and at its velocity: a slider's Coulomb friction puts
+    // μ φ(ṡ) ∂n/∂λ into its multiplier columns.
+    if (algebraic->active() && !system.constraints_linear())
+      refresh_mass_coupling({tangent_q.get(), tangent_v.get(), {}, p.t});
     ++counters.jacobian_evaluations;
     ++tangent_serial;
     round_off.set_tangent(K.get());
@@ -231,7 +233,7 @@ struct IrkIntegrator::Impl {
       // Where G depends on q, the multiplier columns of every stage take G at the last
       // stage's state (a simplified part of the full Newton: it converges linearly there).
       if (algebraic->active() && !system.constraints_linear())
-        refresh_mass_coupling({U[s - 1].get(), nullptr, {}, state.time() + T.c(s - 1) * h});
+        refresh_mass_coupling({U[s - 1].get(), V[s - 1].get(), {}, state.time() + T.c(s - 1) * h});
       block->assemble_rows(k_rows, c_rows, block_diagonal_part(), coefficients());
     } else if (decoupled) {
       if (refresh) evaluate_iterate_tangent(xk);
