@@ -27,8 +27,8 @@ class ConstraintCoupling : public Coupling {
   // False if G depends on q or t (SecondOrderSystem::constraints_linear() is then false on
   // every rank, and the integrators re-evaluate Gᵀ with the tangent).
   virtual bool linear() const = 0;
-  // γ at the state s (all of dofs(), multiplier slots first: their values are ignored), one
-  // per multiplier into `out`.
+  // γ at the state s (its active DOFs, as evaluate() sees them: all of dofs() but for a
+  // slider's; multiplier slots first, their values ignored), one per multiplier into `out`.
   virtual void acceleration_target(const CouplingState& s, std::span<double> out) const = 0;
   // β of the velocity-level constraint G v = β = −∂g/∂t at s.t, one per multiplier: zero
   // unless the constraint moves with time (a prescribed motion's velocity).
