@@ -54,11 +54,14 @@ void SliderConstraint::pattern(std::vector<std::pair<int, int>>& entries) const 
     }
 }
 
+std::size_t SliderConstraint::element_holding(double s) const {
+  return stations_.element_at(std::clamp(s, 0.0, stations_.length()));
+}
+
 SliderConstraint::Place SliderConstraint::place(double s) const {
   Place p;
-  const double length = stations_.length();
-  const double on_path = std::clamp(s, 0.0, length);
-  p.element = stations_.element_at(on_path);
+  const double on_path = std::clamp(s, 0.0, stations_.length());
+  p.element = element_holding(s);
   const double L = stations_.element_length(p.element);
   const double u = on_path - stations_.start[p.element];
   const bool back = reversed_[p.element] != 0;
@@ -78,7 +81,7 @@ SliderConstraint::Place SliderConstraint::place(double s) const {
 
 void SliderConstraint::active_dofs_at(double, const DofValues& q,
                                       std::vector<int>& positions) const {
-  const std::size_t element = place(q.at(kSlide)).element;
+  const std::size_t element = element_holding(q.at(kSlide));
   positions.clear();
   for (int k = 0; k < kPath; ++k) positions.push_back(k);
   for (const int first : {element_a_[element], element_b_[element]})

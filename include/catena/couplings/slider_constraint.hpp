@@ -73,6 +73,8 @@ class SliderConstraint final : public ConstraintCoupling {
   // Positions in the active DOFs of the element's blocks r_A, r_A,x, r_B, r_B,x.
   static constexpr int kFirst[4] = {kPath, kPath + 3, kPath + 6, kPath + 9};
   Place place(double s) const;
+  // The path element holding s (clamped to the path: beyond an end, the end element).
+  std::size_t element_holding(double s) const;
 
   model::PathStations stations_;
   std::vector<char> reversed_;              // per path element

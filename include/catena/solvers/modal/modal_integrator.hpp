@@ -9,9 +9,10 @@
 // the site forces enter as loads linear over the step, so the coupled step is second order
 // in h (the error of that interpolation), with no numerical damping and no period error of
 // any mode. A state given by set_state() is projected on the modes (η = Φ̃ᵀ M (q − q0)):
-// exact for a state of the model up to the shapes' single-precision rounding (Φ̃ᵀ M Φ̃ = I
-// to about 6·10⁻⁸: a restart, or step doubling's return to a step's start, moves η by that
-// much of itself), the part outside the modes lost otherwise.
+// exact for a state of the model up to the shapes' single-precision rounding (Φ̃ᵀ M Φ̃ is
+// I only to the rounding of its entries, 2⁻²⁴ each: a restart, or step doubling's return to
+// a step's start, moves η by about that much of itself — estimated, not measured), the part
+// outside the modes lost otherwise.
 #include <mpi.h>
 
 #include "catena/solvers/modal/modal_model.hpp"

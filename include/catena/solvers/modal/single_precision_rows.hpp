@@ -48,9 +48,8 @@ class SinglePrecisionRows {
   Eigen::Index rows_ = 0, cols_ = 0;
   std::vector<float> values_;  // row-major
   Eigen::VectorXd bound_;
-  // While columns are set: per row, Σ (a − ã)² and Σ ã² so far.
+  // While columns are set: per row, Σ (a − ã)² and Σ ã² so far; which columns are in.
   Eigen::VectorXd rounding_squares_, norm_squares_;
-  Eigen::Index columns_set_ = 0;
   std::vector<char> column_is_set_;
 };
 
