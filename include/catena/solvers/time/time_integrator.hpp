@@ -81,6 +81,11 @@ class TimeIntegrator {
   virtual bool has_embedded_estimate() const = 0;
   // k in ‖embedded estimate‖ = O(h^k) (HHT: 3; Radau IIA: s + 1); 0 without an estimate.
   virtual int estimate_order() const { return 0; }
+  // Order of the velocities' global error. Below order() only where index-3 constraints
+  // reduce it: an IRK on nonlinear constraints converges in v at its stage order (Radau
+  // IIA: s; Hairer & Wanner II, VII.4, Table 4.1). Step doubling then estimates the
+  // velocities' error too (transient_solver.hpp).
+  virtual int velocity_order() const { return order(); }
 
   // Collective. Sets the state at time t (vectors are copied). a may be null: then the
   // consistent acceleration M a = −f(t, q, v) is computed.

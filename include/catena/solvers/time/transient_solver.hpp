@@ -18,10 +18,12 @@
 // kept. A step change within [1, 1.2]·h is not made, so the factorisation is reused
 // (RADAU5's rule). Growth is capped at the integrator's max_step_ratio() (a multistep
 // formula's zero-stability limit); where that is below 1.2 the kept band shrinks to
-// [1, (1 + limit)/2]. A Newton failure halves h. Fixed steps: h = dt (the last step is cut
-// to land on t_end); a Newton failure halves h for that step and dt resumes afterwards;
-// the observer hears of each such cut and the report counts them, since a dt that keeps
-// failing costs a failed solve per step and says the step is too long.
+// [1, (1 + limit)/2]. A Newton failure halves h, and the step accepted after a rejected
+// attempt (Newton failure or error) does not grow (RADAU5's rule). Fixed steps: h = dt (the
+// last step is cut to land on t_end); a Newton failure halves h for that step and dt
+// resumes afterwards; the observer hears of each such cut and the report counts them,
+// since a dt that keeps failing costs a failed solve per step and says the step is too
+// long.
 // Below dt_min the run stops with a NumericalError naming the time, step, residual and
 // the worst DOF (node and component). Every sample passes the state guard before the
 // observer sees it (state_guard.hpp): a state that is not finite or has grown beyond any

@@ -406,6 +406,14 @@ bool IrkIntegrator::has_embedded_estimate() const {
 int IrkIntegrator::estimate_order() const {
   return has_embedded_estimate() ? impl_->T.embedded_order + 1 : 0;
 }
+// On nonlinear index-3 constraints the velocities converge at the stage order (Radau IIA:
+// s, against 2s − 1 for the positions; Hairer & Wanner II, VII.4, Table 4.1); linear
+// constraints leave the classical order (docs/integrators.md, "Orders measured").
+int IrkIntegrator::velocity_order() const {
+  const Impl& m = *impl_;
+  if (!m.algebraic->active() || m.system.constraints_linear()) return m.T.order;
+  return std::min(m.T.order, m.T.stage_order);
+}
 const ButcherTableau& IrkIntegrator::tableau() const { return impl_->T; }
 bool IrkIntegrator::decoupled() const { return static_cast<bool>(impl_->decoupled); }
 

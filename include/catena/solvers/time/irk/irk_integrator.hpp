@@ -74,6 +74,7 @@ class IrkIntegrator final : public StepStateIntegrator {
   int order() const override;
   bool has_embedded_estimate() const override;
   int estimate_order() const override;
+  int velocity_order() const override;
   void set_state(double t, Vec q, Vec v, Vec a) override;
   StepOutcome attempt(double h, const ErrorTolerance* tol) override;
   void accept() override;
