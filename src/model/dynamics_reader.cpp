@@ -101,8 +101,8 @@ void read_integrator(const Field& in, std::size_t constraints, bool nonlinear_co
           std::to_string(constraints) + "; use simplified or full");
   } else {
     fail_if_present(newton,
-                    "'newton' applies to hht, central_difference, bdf, park and the "
-                    "implicit Runge-Kutta types");
+                    "'newton' applies to hht, central_difference, rattle, bdf, park and "
+                    "the implicit Runge-Kutta types");
   }
   const Field tangent_every = in.child("tangent_every");
   if (o.newton == "linearly_implicit")

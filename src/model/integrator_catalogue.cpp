@@ -18,7 +18,7 @@ constexpr std::string_view kExplicitFirstStage =
     "matrix)";
 constexpr std::string_view kRadauFilter = "its filter would need RADAU5's index-3 treatment";
 
-constexpr std::array<IntegratorType, 11> kTypes{{
+constexpr std::array<IntegratorType, 12> kTypes{{
     {.name = "hht",
      .alias = "",
      .method = M::hht,
@@ -33,6 +33,7 @@ constexpr std::array<IntegratorType, 11> kTypes{{
      .embedded = E::always,
      .constraint_refusal = "its positions do not depend on the step's unknown (explicit)",
      .takes_newton = true},
+    {.name = "rattle", .alias = "", .method = M::rattle, .takes_newton = true},
     {.name = "gauss",
      .alias = "",
      .method = M::irk,

@@ -81,8 +81,8 @@ double integrator_factor_multiple(const Model& model) {
   const IntegratorOptions& in = model.dynamic_options.integrator;
   // Dynamics also finds the static equilibrium first (2), but frees it before stepping.
   // One system-sized factorisation like HHT's: the one-step types and the multistep ones.
-  if (in.type == "hht" || in.type == "central_difference" || in.type == "petsc" ||
-      in.type == "bdf" || in.type == "park" || in.type == "abm")
+  if (in.type == "hht" || in.type == "central_difference" || in.type == "rattle" ||
+      in.type == "petsc" || in.type == "bdf" || in.type == "park" || in.type == "abm")
     return 2.0;
   // Decoupled: a real block and complex ones (16-byte entries, more fill), measured on a
   // 200 000-element cable at twice HHT's per stage pair; coupled: the sn × sn system.

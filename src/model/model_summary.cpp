@@ -250,7 +250,8 @@ std::string describe(const Model& model, int n_ranks_running) {
     } else if (i.type == "bdf" || i.type == "abm") {
       method += " order ";
       method += std::to_string(i.order);
-    } else if (i.type != "petsc" && i.type != "central_difference" && i.type != "park") {
+    } else if (i.type != "petsc" && i.type != "central_difference" && i.type != "park" &&
+               i.type != "rattle") {
       method += ' ';
       method += std::to_string(i.stages);
       method += " stages";

@@ -18,7 +18,9 @@
 #include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "catena/solvers/time/multistep/adams_pece_integrator.hpp"
 #include "catena/solvers/time/multistep/multistep_integrator.hpp"
+#include "catena/solvers/time/rattle_integrator.hpp"
 #include "dynamics_fixtures.hpp"
+#include "lagrange_top.hpp"
 #include "model_builders.hpp"
 #include "petsc_test_session.hpp"
 
@@ -171,4 +173,19 @@ TEST(ResumeState, RadauContinuesBitForBit) {
   expect_exact_continuation(
       [&] { return std::make_unique<solvers::IrkIntegrator>(system, options); }, q.get(), v.get(),
       0.02, 10, 10);
+}
+
+// RATTLE on the heavy top (a rigid body's nonlinear frame constraints): the Newton
+// matrix's point and h, and the stability limit of the run's start, travel.
+TEST(ResumeState, RattleOnTheHeavyTopContinuesBitForBit) {
+  catena::test::ensure_petsc();
+  const catena::test::Top top;
+  const model::Model m = model::parse_scene(top.scene(), "heavy_top.yaml");
+  assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
+  catena::VecHandle q = system.create_vector(), v = system.create_vector();
+  system.reference_state(q.get());
+  catena::test::set_top_velocity(system, top, v.get());
+  expect_exact_continuation(
+      [&] { return std::make_unique<solvers::RattleIntegrator>(system, solvers::RattleOptions{}); },
+      q.get(), v.get(), 1e-3, 60, 60);
 }

@@ -21,6 +21,7 @@
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
 #include "catena/solvers/time/multistep/multistep_integrator.hpp"
+#include "catena/solvers/time/rattle_integrator.hpp"
 #include "dynamics_fixtures.hpp"
 #include "fd_jacobian.hpp"
 #include "model_builders.hpp"
@@ -67,7 +68,9 @@ struct Method {
   int stages = 0;
 };
 std::string label(const Method& m) {
-  return m.type == "hht" || m.type == "park" ? m.type : m.type + "_" + std::to_string(m.stages);
+  return m.type == "hht" || m.type == "park" || m.type == "rattle"
+             ? m.type
+             : m.type + "_" + std::to_string(m.stages);
 }
 
 std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSystem& system,
@@ -80,6 +83,14 @@ std::unique_ptr<solvers::TimeIntegrator> make(catena::assembly::SecondOrderSyste
     o.full_newton = full_newton;
     o.max_newton_iterations = 30;
     return std::make_unique<solvers::HhtIntegrator>(system, o);
+  }
+  if (method.type == "rattle") {
+    solvers::RattleOptions o;
+    o.atol = 1e-10;
+    o.rtol = 1e-13;
+    o.full_newton = full_newton;
+    o.max_newton_iterations = 30;
+    return std::make_unique<solvers::RattleIntegrator>(system, o);
   }
   if (method.type == "bdf" || method.type == "park") {
     solvers::MultistepOptions o;
@@ -184,7 +195,7 @@ const std::vector<Method>& constrained_methods() {
   static const std::vector<Method> methods{
       {"hht", 0},       {"gauss", 1},     {"gauss", 2},        {"radau_iia", 1},
       {"radau_iia", 2}, {"radau_iia", 3}, {"lobatto_iiic", 2}, {"lobatto_iiic", 3},
-      {"sdirk", 3},     {"bdf", 2},       {"park", 0}};
+      {"sdirk", 3},     {"bdf", 2},       {"park", 0},         {"rattle", 0}};
   return methods;
 }
 
@@ -319,7 +330,8 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
   const Result ref = run(m, {"radau_iia", 5}, t_end, 2048, true);
   for (const Method& method : constrained_methods()) {
     const int p =
-        method.type == "hht" || method.type == "park" || method.type == "bdf"
+        method.type == "hht" || method.type == "park" || method.type == "bdf" ||
+                method.type == "rattle"
             ? 2
             : solvers::make_tableau(solvers::parse_tableau_family(method.type), method.stages)
                   .order;

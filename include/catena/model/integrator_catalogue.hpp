@@ -24,6 +24,7 @@ enum class IntegratorMethod {
   irk,        // IrkIntegrator with the family's Butcher tableau
   petsc_ts,   // PetscTsIntegrator (the method from -ts_type)
   multistep,  // MultistepIntegrator (variable-step BDF, Park), AdamsPeceIntegrator (abm)
+  rattle,     // RattleIntegrator (Lobatto IIIA–IIIB, s = 2)
 };
 
 // Where a type has an embedded local error estimate (without it, step doubling serves).

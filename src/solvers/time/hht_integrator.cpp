@@ -182,14 +182,9 @@ HhtIntegrator::HhtIntegrator(assembly::SecondOrderSystem& system, const HhtOptio
       "HHT's linearly implicit step takes no constraints (the scene reader refuses them)");
   for (VecHandle* v : {&s.f0, &s.f1, &s.residual, &s.error, &s.work, &s.q_known, &s.v_known})
     *v = system.create_vector();
-  NewtonSettings settings;
-  settings.max_iterations = options.max_newton_iterations;
-  settings.full_newton = options.full_newton;
-  settings.pivoting = s.pivoting();
-  // Damping makes the matrix non-symmetric in general.
-  s.newton = std::make_unique<ReusableNewton>(
-      system.comm(), s.jacobian.get(), s.residual.get(), "hht_", JacobianSymmetry::general,
-      settings, [&s](Vec a, Vec r) { s.residual_at(a, r); },
+  s.newton = s.make_newton(
+      "hht_", options.max_newton_iterations, options.full_newton, s.residual.get(),
+      [&s](Vec a, Vec r) { s.residual_at(a, r); },
       [&s](Vec a, bool refresh, Mat J) { s.build_matrix(a, refresh, J); });
   LocalNewtonSettings local = options.local_newton_settings;
   // Central differences: the stiffness is not in the matrix, so no window of it either.

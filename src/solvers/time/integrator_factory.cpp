@@ -10,6 +10,7 @@
 #include "catena/solvers/time/multistep/adams_pece_integrator.hpp"
 #include "catena/solvers/time/multistep/multistep_integrator.hpp"
 #include "catena/solvers/time/petsc_ts/petsc_ts_integrator.hpp"
+#include "catena/solvers/time/rattle_integrator.hpp"
 
 namespace catena::solvers {
 namespace {
@@ -48,6 +49,14 @@ std::unique_ptr<TimeIntegrator> make_integrator(assembly::SecondOrderSystem& sys
     h.linearly_implicit = o.newton == "linearly_implicit";
     h.tangent_every = o.tangent_every;
     return std::make_unique<HhtIntegrator>(system, h);
+  }
+  if (o.type == "rattle") {
+    RattleOptions r;
+    r.rtol = o.newton_rtol;
+    r.atol = o.newton_atol;
+    r.max_newton_iterations = o.max_newton_iterations;
+    r.full_newton = o.newton == "full";
+    return std::make_unique<RattleIntegrator>(system, r);
   }
   if (o.type == "bdf" || o.type == "park") {
     MultistepOptions m;

@@ -39,6 +39,18 @@ void StepMatrices::evaluate_tangent(Vec q, Vec v, double t) {
   round_off.set_tangent(K.get());
 }
 
+std::unique_ptr<ReusableNewton> StepMatrices::make_newton(
+    const std::string& prefix, int max_iterations, bool full_newton, Vec residual,
+    ReusableNewton::Residual f, ReusableNewton::MatrixBuilder build) const {
+  NewtonSettings settings;
+  settings.max_iterations = max_iterations;
+  settings.full_newton = full_newton;
+  settings.pivoting = pivoting();
+  return std::make_unique<ReusableNewton>(system.comm(), jacobian.get(), residual, prefix,
+                                          JacobianSymmetry::general, settings, std::move(f),
+                                          std::move(build));
+}
+
 void StepMatrices::save_tangent(ResumeState& out, const std::string& prefix) const {
   out.vectors[prefix + ".tangent_q"] = tangent_q.get();
   out.vectors[prefix + ".tangent_v"] = tangent_v.get();

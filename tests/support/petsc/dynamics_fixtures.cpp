@@ -7,6 +7,7 @@
 #include "catena/core/error.hpp"
 #include "catena/solvers/time/hht_integrator.hpp"
 #include "catena/solvers/time/irk/irk_integrator.hpp"
+#include "catena/solvers/time/rattle_integrator.hpp"
 #include "model_builders.hpp"
 
 namespace catena::test {
@@ -113,6 +114,13 @@ std::unique_ptr<solvers::TimeIntegrator> tight_integrator(assembly::SecondOrderS
     o.rtol = 1e-13;
     o.max_newton_iterations = 30;
     return std::make_unique<solvers::HhtIntegrator>(system, o);
+  }
+  if (type == "rattle") {
+    solvers::RattleOptions o;
+    o.atol = 1e-12;
+    o.rtol = 1e-13;
+    o.max_newton_iterations = 30;
+    return std::make_unique<solvers::RattleIntegrator>(system, o);
   }
   solvers::IrkOptions o;
   o.family = solvers::parse_tableau_family(type);

@@ -18,6 +18,7 @@
 #include "catena/assembly/petsc_handle.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
+#include "catena/solvers/newton/reusable_newton.hpp"
 #include "catena/solvers/newton/round_off_floor.hpp"
 #include "catena/solvers/resume_state.hpp"
 #include "catena/solvers/time/algebraic_part.hpp"
@@ -47,6 +48,12 @@ struct StepMatrices {
   Pivoting pivoting() const {
     return algebraic->active() ? Pivoting::constraints_last : Pivoting::not_needed;
   }
+  // Collective. The step's Newton solver on J (non-symmetric in general: damping), with
+  // the pivoting above; options prefix `prefix` (e.g. "hht_"), `residual` its work vector.
+  std::unique_ptr<ReusableNewton> make_newton(const std::string& prefix, int max_iterations,
+                                              bool full_newton, Vec residual,
+                                              ReusableNewton::Residual f,
+                                              ReusableNewton::MatrixBuilder build) const;
 
   // Restarts. Not collective. The tangent's point as entries "<prefix>.tangent_q",
   // "<prefix>.tangent_v", "<prefix>.tangent_t", "<prefix>.round_off_known".

@@ -230,13 +230,9 @@ MultistepIntegrator::MultistepIntegrator(assembly::SecondOrderSystem& system,
                          "; accepted: >= 0 (the relative change of w0 that rebuilds the Newton "
                          "matrix)");
   s.matrix_tolerance = tolerance;
-  NewtonSettings settings;
-  settings.max_iterations = options.max_newton_iterations;
-  settings.full_newton = options.full_newton;
-  settings.pivoting = s.pivoting();
-  s.newton = std::make_unique<ReusableNewton>(
-      system.comm(), s.jacobian.get(), s.residual.get(), "multistep_", JacobianSymmetry::general,
-      settings, [&s](Vec d, Vec r) { s.residual_at(d, r); },
+  s.newton = s.make_newton(
+      "multistep_", options.max_newton_iterations, options.full_newton, s.residual.get(),
+      [&s](Vec d, Vec r) { s.residual_at(d, r); },
       [&s](Vec d, bool refresh, Mat J) { s.build_matrix(d, refresh, J); });
 }
 
