@@ -28,6 +28,7 @@ struct RattleIntegrator::Impl : StepMatrices {
   IntegratorCounters counters;
   long constraint_passes = 0;  // phase 1's second force pass per residual (at q₁)
   double omega_max = 0.0;      // rad/s at the first state set (the stability limit)
+  bool omega_known = false;    // 0 is a value too: nothing stiff, no limit
 
   Impl(assembly::SecondOrderSystem& s, const RattleOptions& o, StepState& st)
       : StepMatrices(s, st.q()), options(o), state(st) {}
@@ -162,7 +163,10 @@ void RattleIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   s.newton->invalidate_tangent();
   // The stability limit at the initial state, once (not again when step doubling returns
   // to a step's start).
-  if (!(s.omega_max > 0.0)) s.omega_max = s.highest_nodal_frequency(s.state.q(), s.state.v(), t);
+  if (!s.omega_known) {
+    s.omega_max = s.highest_nodal_frequency(s.state.q(), s.state.v(), t);
+    s.omega_known = true;
+  }
 }
 
 double RattleIntegrator::stable_step() const {
@@ -267,6 +271,7 @@ void RattleIntegrator::restore_resume_state(const ResumeState& in) {
   s.h_matrix = in.real("rattle.h_matrix");
   s.constraint_passes = in.integer("rattle.constraint_passes");
   s.omega_max = in.real("rattle.omega_max");
+  s.omega_known = true;
   restore_own_counters(in, s.counters);
   s.newton->restore_resume_state(in);
   // The floor's tangent and the matrix's point as they were (the matrix is rebuilt from
