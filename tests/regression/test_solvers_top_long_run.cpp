@@ -79,20 +79,22 @@ TEST(TopLongRun, RattleKeepsEnergyMomentumAndFrameOverTenThousandSpins) {
   catena::test::ensure_petsc();
   const Top steady;
   const Drift s = run(steady, 10000);
-  EXPECT_LT(std::abs(s.drift), 1e-6);
-  EXPECT_LT(s.band, 1e-6);
-  EXPECT_LT(s.momentum, 1e-10);
-  EXPECT_LT(s.frame, 1e-10);
+  // The target is a drift below 1e-6; the bounds are about 100 times what was measured
+  // (docs/validation.md), so that a slow drift shows.
+  EXPECT_LT(std::abs(s.drift), 1e-10);
+  EXPECT_LT(s.band, 1e-7);
+  EXPECT_LT(s.momentum, 1e-11);
+  EXPECT_LT(s.frame, 1e-12);
   EXPECT_LT(s.nutation_high - s.nutation_low, 1e-3);  // steady: the axis stays at 30°
 
   Top nutating;
   nutating.start_precession = 0.0;
   const Drift n = run(nutating, 10000);
   EXPECT_GT(n.nutation_high - n.nutation_low, 1e-3);  // it does nutate
-  EXPECT_LT(std::abs(n.drift), 1e-6);
-  EXPECT_LT(n.band, 1e-5);
-  EXPECT_LT(n.momentum, 1e-10);
-  EXPECT_LT(n.frame, 1e-10);
+  EXPECT_LT(std::abs(n.drift), 1e-7);
+  EXPECT_LT(n.band, 1e-5);  // the band of a second-order method: 4.3e-6 at 1 ms
+  EXPECT_LT(n.momentum, 1e-11);
+  EXPECT_LT(n.frame, 1e-12);
 }
 
 }  // namespace

@@ -22,7 +22,10 @@ struct RattleIntegrator::Impl : StepMatrices {
   int phase = 1;
   double scale0 = 0.0, scale1 = 0.0;
   // v½, the step's end positions q₁ (nodal slots), K₁ with Λ₁, and work vectors.
-  VecHandle v_half, q_end, k1, q_start_lambda, f_start, f_end, residual, g_velocity, beta;
+  VecHandle v_half, q_end, q_start_lambda, f_start, f_end, residual, g_velocity, beta;
+  // The Newton matrix's point (StepMatrices' tangent point stays the round-off floor's).
+  VecHandle matrix_q, matrix_v;
+  double matrix_t = 0.0;
   MatHandle G;  // the constraint rows G(q₁) alone (phase 2's velocity constraint)
   std::unique_ptr<ReusableNewton> newton;
   IntegratorCounters counters;
@@ -68,11 +71,12 @@ struct RattleIntegrator::Impl : StepMatrices {
     algebraic->scale_rows(r, algebraic->mass_scale() / (0.5 * h * h));
   }
 
-  // Phase 2: M K₂ + f(t₁, q₁, v₁) + G(q₁)ᵀΛ₂ in the force rows, (m̄/(½h)) (G(q₁) v₁ − β(t₁))
-  // in the constraint rows.
+  // Phase 2: M K₂ + f(t₁, q₁, v½) + G(q₁)ᵀΛ₂ in the force rows (Lobatto IIIB's second stage
+  // velocity is v½: taking v₁ there, implicitly, made a damped run first order), and
+  // (m̄/(½h)) (G(q₁) v₁ − β(t₁)) in the constraint rows.
   void phase_two(Vec x, Vec r) {
     end_state(x);
-    system.force({state.pending_q(), state.pending_v(), {}, t1()}, f_end.get(), &scale1);
+    system.force({state.pending_q(), v_half.get(), {}, t1()}, f_end.get(), &scale1);
     CATENA_PETSC(MatMult(mass_product.get(), x, r));
     CATENA_PETSC(VecAXPY(r, 1.0, f_end.get()));
     if (!algebraic->active()) return;
@@ -84,25 +88,25 @@ struct RattleIntegrator::Impl : StepMatrices {
 
   void residual_at(Vec x, Vec r) { phase == 1 ? phase_one(x, r) : phase_two(x, r); }
 
-  // J = M + ½h C + Gᵀ + m̄ G at the matrix's point; a refresh moves the point to the
-  // iterate's end of step (q₁ and the phase's velocity, with its multipliers).
+  // J = M + ½h C + Gᵀ + m̄ G at the matrix's point (phase 2's force rows do not depend on
+  // its unknown: no C there); a refresh moves the point to the iterate's q₁ and v½, with
+  // its multipliers.
   void build_matrix(Vec x, bool refresh, Mat J) {
     if (refresh) {
       if (phase == 1) {
         half_step(x);
-        CATENA_PETSC(VecCopy(q_end.get(), tangent_q.get()));
-        CATENA_PETSC(VecCopy(v_half.get(), tangent_v.get()));
+        CATENA_PETSC(VecCopy(q_end.get(), matrix_q.get()));
       } else {
         end_state(x);
-        CATENA_PETSC(VecCopy(state.pending_q(), tangent_q.get()));
-        CATENA_PETSC(VecCopy(state.pending_v(), tangent_v.get()));
+        CATENA_PETSC(VecCopy(state.pending_q(), matrix_q.get()));
       }
-      algebraic->take_algebraic(tangent_q.get(), x);
-      tangent_t = t1();
+      CATENA_PETSC(VecCopy(v_half.get(), matrix_v.get()));
+      algebraic->take_algebraic(matrix_q.get(), x);
+      matrix_t = t1();
       ++counters.jacobian_evaluations;
     }
-    const double c_C = system.has_damping() ? 0.5 * h : 0.0;
-    system.jacobian({tangent_q.get(), tangent_v.get(), {}, tangent_t},
+    const double c_C = phase == 1 && system.has_damping() ? 0.5 * h : 0.0;
+    system.jacobian({matrix_q.get(), matrix_v.get(), {}, matrix_t},
                     {0.0, c_C, 1.0, 1.0, algebraic->mass_scale()}, J);
   }
 
@@ -143,8 +147,8 @@ RattleIntegrator::RattleIntegrator(assembly::SecondOrderSystem& system,
                                    const RattleOptions& options)
     : StepStateIntegrator(system), impl_(std::make_unique<Impl>(system, options, step_state())) {
   Impl& s = *impl_;
-  for (VecHandle* v : {&s.v_half, &s.q_end, &s.k1, &s.q_start_lambda, &s.f_start, &s.f_end,
-                       &s.residual, &s.g_velocity, &s.beta})
+  for (VecHandle* v : {&s.v_half, &s.q_end, &s.q_start_lambda, &s.f_start, &s.f_end, &s.residual,
+                       &s.g_velocity, &s.beta, &s.matrix_q, &s.matrix_v})
     *v = system.create_vector();
   if (s.algebraic->active()) s.G = system.create_matrix();
   s.newton = s.make_newton(
@@ -191,10 +195,6 @@ StepOutcome RattleIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.newton->invalidate_matrix();
     s.h_matrix = h;
   }
-  if (!s.round_off.known()) {  // the floor of f, from a tangent at the start (once)
-    s.evaluate_tangent(s.state.q(), s.state.v(), s.state.time());
-    ++s.counters.jacobian_evaluations;
-  }
   const double atol = s.options.atol + s.options.rtol * s.scale0 + s.round_off.at(s.state.q());
   Vec x = s.state.pending_a();
 
@@ -209,7 +209,6 @@ StepOutcome RattleIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.state.discard_pending();
     return out;
   }
-  CATENA_PETSC(VecCopy(x, s.k1.get()));
   s.half_step(x);
   if (s.algebraic->active()) {
     const assembly::EvalPoint end{s.q_end.get(), s.v_half.get(), {}, s.t1()};
@@ -260,6 +259,9 @@ void RattleIntegrator::save_resume_state(ResumeState& out) const {
   out.reals["rattle.h_matrix"] = s.h_matrix;
   out.integers["rattle.constraint_passes"] = s.constraint_passes;
   out.reals["rattle.omega_max"] = s.omega_max;  // the run's start's, not the restart's
+  out.vectors["rattle.matrix_q"] = s.matrix_q.get();
+  out.vectors["rattle.matrix_v"] = s.matrix_v.get();
+  out.reals["rattle.matrix_t"] = s.matrix_t;
   save_own_counters(s.counters, out);
   s.newton->save_resume_state(out);
 }
@@ -272,10 +274,12 @@ void RattleIntegrator::restore_resume_state(const ResumeState& in) {
   s.constraint_passes = in.integer("rattle.constraint_passes");
   s.omega_max = in.real("rattle.omega_max");
   s.omega_known = true;
+  CATENA_PETSC(VecCopy(in.vector("rattle.matrix_q"), s.matrix_q.get()));
+  CATENA_PETSC(VecCopy(in.vector("rattle.matrix_v"), s.matrix_v.get()));
+  s.matrix_t = in.real("rattle.matrix_t");
   restore_own_counters(in, s.counters);
   s.newton->restore_resume_state(in);
-  // The floor's tangent and the matrix's point as they were (the matrix is rebuilt from
-  // that point at the next solve).
+  // The floor's tangent as it was (the matrix is rebuilt from its point at the next solve).
   if (s.restore_tangent(in, "rattle")) ++s.counters.jacobian_evaluations;
 }
 

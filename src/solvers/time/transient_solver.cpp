@@ -194,7 +194,9 @@ class Driver {
         // Velocities of a lower order (index-3 constraints) are estimated too, as the
         // displacement h·Δv their error makes in a step, weighed as the positions' error:
         // without it the squeezer's angles stayed about 1e-6 off at every rtol from 1e-3
-        // to 1e-7 (docs/validation.md).
+        // to 1e-7 (docs/validation.md). The step's exponent stays the positions' (k = p + 1)
+        // where this term decides, larger than the velocities' q + 1: the step grows more
+        // cautiously than theirs would ask, and a rejection may take one more attempt.
         if (velocities) {
           CATENA_PETSC(VecWAXPY(diff_.get(), -1.0, v_big_.get(), in_.pending_v()));
           CATENA_PETSC(VecScale(diff_.get(), h / (std::pow(2.0, in_.velocity_order()) - 1.0)));

@@ -6,16 +6,15 @@
 //   v½ = v₀ + ½h K₁,   q₁ = q₀ + h v½,
 //   M K₁ + f(t₀, q₀, v½) + G(q₀)ᵀΛ₁ = 0,   g(q₁, t₁) = 0              (phase 1: K₁, Λ₁),
 //   v₁ = v½ + ½h K₂,
-//   M K₂ + f(t₁, q₁, v₁) + G(q₁)ᵀΛ₂ = 0,   G(q₁) v₁ = β(t₁)            (phase 2: K₂, Λ₂).
-// For forces that do not depend on v these are the Lobatto IIIA (positions) and IIIB
-// (velocities) stages of s = 2; a damping force is taken at v½ in the first half step and
-// at v₁ in the second, implicitly, as central differences do (second order either way).
-// The step ends on both the position and the velocity constraints. With a constant
+//   M K₂ + f(t₁, q₁, v½) + G(q₁)ᵀΛ₂ = 0,   G(q₁) v₁ = β(t₁)            (phase 2: K₂, Λ₂).
+// The positions are the Lobatto IIIA and the velocities the Lobatto IIIB stages of s = 2:
+// both stages take a velocity-dependent force at v½ (implicit in the first, known in the
+// second); the step ends on both the position and the velocity constraints. With a constant
 // M and conservative forces (rigid bodies in natural coordinates under gravity, elastic
 // elements without damping) the method is symplectic and symmetric: the energy error stays
 // bounded, with no drift, over any number of steps, and quadratic first integrals such as
 // the angular momentum about a fixed axis are kept (docs/integrators.md, "RATTLE").
-// Without constraints it is the Störmer–Verlet scheme (central differences, velocity form).
+// Without constraints and damping it is the Störmer–Verlet scheme (central differences).
 // Second order in q, v and λ; no numerical damping, no embedded estimate (adaptive steps
 // use step doubling). The force rows of each phase are evaluated at known positions, so
 // the stiffness is explicit: stable for h·ω_max ≤ 2 as central differences, ω_max the
@@ -24,7 +23,7 @@
 // mechanisms and soft structures; a stiff cable needs hht or radau.
 //
 // Newton: each phase is one solve of ReusableNewton on the one matrix
-//   J = [M + ½h C   Gᵀ]
+//   J = [M + ½h C   Gᵀ]        (phase 2: no C, its force is known)
 //       [m̄ G        0 ]
 // (constraint rows scaled by m̄/(½h²) in phase 1 and m̄/(½h) in phase 2, so that both read
 // m̄ G), at the point of its last refresh; it holds no stiffness (the positions of each
