@@ -216,8 +216,8 @@ StepOutcome RattleIntegrator::attempt(double h, const ErrorTolerance* tol) {
     s.system.constraint_velocity(end, s.beta.get());
   }
 
-  // Phase 2 from K₂ = K₁ with Λ₂ = Λ₁, on the matrix at q₁: exact for it (its force is
-  // known, so one iteration where G is constant in the phase) and the next step's phase 1
+  // Phase 2 from K₂ = K₁ with Λ₂ = Λ₁, on the matrix at q₁: exact for it (its force and
+  // G(q₁) are fixed, so the phase is linear: one iteration) and the next step's phase 1
   // matrix (its columns at that step's q₀ = q₁). Phase 2 on the matrix phase 1 left had its
   // first iterate's residual grow (the top: 3.0 to 4.7).
   s.phase = 2;
