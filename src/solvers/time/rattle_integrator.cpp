@@ -21,7 +21,7 @@ struct RattleIntegrator::Impl : StepMatrices {
   double h = 0.0, h_matrix = -1.0;
   int phase = 1;
   double scale0 = 0.0, scale1 = 0.0;
-  // v½, the step's end positions q₁ (nodal slots), K₁ with Λ₁, and work vectors.
+  // v½, the step's end positions q₁ (nodal slots), and work vectors.
   VecHandle v_half, q_end, q_start_lambda, f_start, f_end, residual, g_velocity, beta;
   // The Newton matrix's point (StepMatrices' tangent point stays the round-off floor's).
   VecHandle matrix_q, matrix_v;
