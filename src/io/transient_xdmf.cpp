@@ -13,6 +13,12 @@
 //     Function items, and fails on the "|" syntax.
 // So each run gets NAME.xmf for the first and NAME.xmf2 for the second, which also carries
 // the displacements (Functions of the samples and the mesh).
+//
+// Rigid bodies and sliders are nodes outside every element, which a polyline grid does not
+// draw: scenes with them get a temporal collection each beside the mesh's ("bodies",
+// "sliders"), whose grids are vertices at those nodes (/mesh/body_nodes, /mesh/slider_nodes
+// index the same sampled positions) carrying the per-body and per-slider series as cell
+// values.
 #include "catena/io/transient_xdmf.hpp"
 
 #include <hdf5.h>
@@ -44,6 +50,8 @@ struct SeriesShape {
   std::int64_t n_samples = 0;
   std::int64_t n_nodes = 0;
   std::int64_t n_elements = 0;
+  std::int64_t n_bodies = 0;   // rows of /mesh/body_nodes (0: no rigid bodies)
+  std::int64_t n_sliders = 0;  // rows of /mesh/slider_nodes (0: no sliders)
 };
 
 // How a dataset is stored, in XDMF's terms (NumberType + Precision in bytes) and HDF5's.
@@ -99,8 +107,20 @@ class TransientXdmfText {
          << "    <Grid Name=\"samples\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (std::size_t k = 0; k < times.size(); ++k)
       sample_grid(static_cast<std::int64_t>(k), times[k]);
-    xml_ << "    </Grid>\n"
-         << "  </Domain>\n"
+    xml_ << "    </Grid>\n";
+    if (shape_.n_bodies > 0) {
+      xml_ << "    <Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (std::size_t k = 0; k < times.size(); ++k)
+        body_grid(static_cast<std::int64_t>(k), times[k]);
+      xml_ << "    </Grid>\n";
+    }
+    if (shape_.n_sliders > 0) {
+      xml_ << "    <Grid Name=\"sliders\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (std::size_t k = 0; k < times.size(); ++k)
+        slider_grid(static_cast<std::int64_t>(k), times[k]);
+      xml_ << "    </Grid>\n";
+    }
+    xml_ << "  </Domain>\n"
          << "</Xdmf>\n";
     return xml_.str();
   }
@@ -139,6 +159,50 @@ class TransientXdmfText {
     data_item(10, layout::element_set.path, {n_elements}, int32);
     end_attribute();
     xml_ << "      </Grid>\n";
+  }
+
+  // Sample k of the rigid bodies: a vertex at each body's node, its orientation (the unit
+  // quaternion w, x, y, z) and angular velocity per cell; the node's velocity and its axis
+  // e1 (the slopes) per point.
+  void body_grid(std::int64_t k, double t) {
+    const std::int64_t n_nodes = shape_.n_nodes, n = shape_.n_bodies;
+    vertex_grid_begin("bodies_" + std::to_string(k), t, layout::body_nodes.path, n, k,
+                      "bodies sample " + std::to_string(k));
+    sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
+    sampled_attribute("slopes", "Vector", "Node", layout::slopes.path, {n_nodes, 3}, k);
+    sampled_attribute("orientation", "Matrix", "Cell", layout::body_orientation.path, {n, 4}, k);
+    sampled_attribute("angular_velocity", "Vector", "Cell", layout::body_angular_velocity.path,
+                      {n, 3}, k);
+    xml_ << "      </Grid>\n";
+  }
+
+  // Sample k of the sliders: a vertex at each slider's node, its arc length s along its path
+  // and its rate per cell.
+  void slider_grid(std::int64_t k, double t) {
+    const std::int64_t n_nodes = shape_.n_nodes, n = shape_.n_sliders;
+    vertex_grid_begin("sliders_" + std::to_string(k), t, layout::slider_nodes.path, n, k,
+                      "sliders sample " + std::to_string(k));
+    sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
+    sampled_attribute("slider_position", "Scalar", "Cell", layout::slider_position.path, {n}, k);
+    sampled_attribute("slider_speed", "Scalar", "Cell", layout::slider_speed.path, {n}, k);
+    xml_ << "      </Grid>\n";
+  }
+
+  // A grid's opening, time, topology (a vertex at each of the `n` nodes listed in `nodes`) and
+  // geometry (every node's sampled position, as the mesh grid's; the comment keeps the XDMF
+  // Reader's geometry cache apart from the mesh grid's, as there).
+  void vertex_grid_begin(const std::string& name, double t, const char* nodes, std::int64_t n,
+                         std::int64_t k, const std::string& comment) {
+    xml_
+        << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << time_text(t) << "\"/>\n"
+        << "        <Topology TopologyType=\"Polyvertex\" NodesPerElement=\"1\" NumberOfElements=\""
+        << n << "\">\n";
+    data_item(10, nodes, {n}, int64);
+    xml_ << "        </Topology>\n"
+         << "        <Geometry GeometryType=\"XYZ\">\n";
+    sample_slab(10, layout::positions.path, {shape_.n_nodes, 3}, k, comment);
+    xml_ << "        </Geometry>\n";
   }
 
   // The displacement from the mesh and from the static equilibrium (sample 0): Functions
@@ -261,7 +325,7 @@ std::vector<std::int64_t> dataset_dimensions(hid_t dataset, const std::string& p
 void check_datasets(const std::string& path, const SeriesShape& shape) {
   const FileHandle file = open_time_series(path);
   const std::int64_t s = shape.n_samples, n = shape.n_nodes, e = shape.n_elements;
-  const std::vector<ExpectedDataset> expected{
+  std::vector<ExpectedDataset> expected{
       {layout::time.path, {s}, float64},
       {layout::node_ids.path, {n}, int64},
       {layout::node_positions.path, {n, 3}, float64},
@@ -274,6 +338,18 @@ void check_datasets(const std::string& path, const SeriesShape& shape) {
       {layout::slopes.path, {s, n, 3}, float64},
       {layout::axial_force.path, {s, e}, float64},
   };
+  if (shape.n_bodies > 0) {
+    const std::int64_t b = shape.n_bodies;
+    expected.push_back({layout::body_nodes.path, {b}, int64});
+    expected.push_back({layout::body_orientation.path, {s, b, 4}, float64});
+    expected.push_back({layout::body_angular_velocity.path, {s, b, 3}, float64});
+  }
+  if (shape.n_sliders > 0) {
+    const std::int64_t b = shape.n_sliders;
+    expected.push_back({layout::slider_nodes.path, {b}, int64});
+    expected.push_back({layout::slider_position.path, {s, b}, float64});
+    expected.push_back({layout::slider_speed.path, {s, b}, float64});
+  }
   for (const ExpectedDataset& dataset : expected) {
     const DatasetHandle handle(checked_hdf5_id(H5Dopen2(file.get(), dataset.name, H5P_DEFAULT),
                                                "H5Dopen2", path, dataset.name));
@@ -291,6 +367,33 @@ void check_datasets(const std::string& path, const SeriesShape& shape) {
                   (dataset.number.hdf5_class == H5T_FLOAT ? "float" : "int") +
                   std::to_string(8 * dataset.number.precision));
   }
+}
+
+// The rows of an index dataset of nodes (/mesh/body_nodes, /mesh/slider_nodes): 0 if the file
+// has none (a scene without bodies or sliders). Throws unless it is one-dimensional int64 with
+// every value a node of the mesh (0 ≤ value < n_nodes), so that the vertices the XDMF draws
+// exist.
+std::int64_t node_index_rows(const std::string& path, const char* name, std::int64_t n_nodes) {
+  const FileHandle file = open_time_series(path);
+  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
+  if (exists < 0) throw_hdf5_error("H5Lexists", path, name);
+  if (exists == 0) return 0;
+  const DatasetHandle dataset(
+      checked_hdf5_id(H5Dopen2(file.get(), name, H5P_DEFAULT), "H5Dopen2", path, name));
+  const std::vector<std::int64_t> dimensions = dataset_dimensions(dataset.get(), path, name);
+  if (dimensions.size() != 1)
+    throw Error("'" + path + "' at " + name + ": shape (" + dimensions_text(dimensions) +
+                "), expected one dimension");
+  std::vector<std::int64_t> nodes(static_cast<std::size_t>(dimensions[0]));
+  if (!nodes.empty())
+    check_hdf5_status(
+        H5Dread(dataset.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, nodes.data()),
+        "H5Dread", path, name);
+  for (const std::int64_t node : nodes)
+    if (node < 0 || node >= n_nodes)
+      throw Error("'" + path + "' at " + name + ": node index " + std::to_string(node) +
+                  " is not one of the mesh's " + std::to_string(n_nodes) + " nodes");
+  return dimensions[0];
 }
 
 // Both names in one directory: the XDMF refers to the HDF5 file by its base name.
@@ -342,7 +445,9 @@ void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_
     if (times.empty()) throw Error("the run has no samples: there is nothing to show");
     for (const double t : times)
       if (!std::isfinite(t)) throw Error("a sample time is not finite: " + time_text(t));
-    const SeriesShape shape{static_cast<std::int64_t>(times.size()), n_nodes, n_elements};
+    const SeriesShape shape{static_cast<std::int64_t>(times.size()), n_nodes, n_elements,
+                            node_index_rows(hdf5_path, layout::body_nodes.path, n_nodes),
+                            node_index_rows(hdf5_path, layout::slider_nodes.path, n_nodes)};
     check_datasets(hdf5_path, shape);
     const std::string text =
         TransientXdmfText(fs::path(hdf5_path).filename().string(), shape, readers).document(times);

@@ -112,6 +112,22 @@ void write_series_file(const fs::path& path, const std::vector<double>& times,
   }
 }
 
+// A scene's rigid bodies and sliders, added to a file of write_series_file: their node
+// indices (0, 1, ...: nodes of the mesh unless `n_bodies` exceeds it) and their series.
+void add_bodies_and_sliders(const fs::path& path, hsize_t n_samples, hsize_t n_bodies,
+                            hsize_t n_sliders) {
+  const OpenId file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0) << path;
+  const hsize_t s = n_samples, b = n_bodies, r = n_sliders;
+  write_dataset<std::int64_t>(file.get(), "/mesh/body_nodes", {b}, H5T_STD_I64LE, false);
+  write_dataset<double>(file.get(), "/samples/body_orientation", {s, b, 4}, H5T_IEEE_F64LE, true);
+  write_dataset<double>(file.get(), "/samples/body_angular_velocity", {s, b, 3}, H5T_IEEE_F64LE,
+                        true);
+  write_dataset<std::int64_t>(file.get(), "/mesh/slider_nodes", {r}, H5T_STD_I64LE, false);
+  write_dataset<double>(file.get(), "/samples/slider_position", {s, r}, H5T_IEEE_F64LE, true);
+  write_dataset<double>(file.get(), "/samples/slider_speed", {s, r}, H5T_IEEE_F64LE, true);
+}
+
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);
   std::ostringstream text;
@@ -142,9 +158,10 @@ std::vector<std::int64_t> dataset_dims(hid_t file, const std::string& dataset) {
   return {dims.begin(), dims.end()};
 }
 
-// Every DataItem pointing into the HDF5 file: the base name, an existing dataset, its shape.
+// Every DataItem pointing into the HDF5 file: the base name, an existing dataset, its shape;
+// `n_expected` of them (by default the mesh grids' 13 each).
 void check_hdf_references(const std::string& xml, const fs::path& hdf5_path,
-                          const std::string& file_name_in_xml) {
+                          const std::string& file_name_in_xml, std::size_t n_expected = 0) {
   const OpenId file(H5Fopen(hdf5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   ASSERT_GE(file.get(), 0);
   const std::regex hdf_item(
@@ -161,7 +178,7 @@ void check_hdf_references(const std::string& xml, const fs::path& hdf5_path,
   // Per grid: element_nodes, positions four times (geometry, displacement, and sample k and
   // sample 0 of displacement_from_static), node_positions, velocities, slopes, axial_force,
   // node_ids, element_ids, element_kind, element_set.
-  EXPECT_EQ(n_items, 13 * count_of(xml, "GridType=\"Uniform\""));
+  EXPECT_EQ(n_items, n_expected > 0 ? n_expected : 13 * count_of(xml, "GridType=\"Uniform\""));
 }
 
 // Every HyperSlab in grid k selects row k of its dataset, all of the row, stride 1 — but
@@ -349,6 +366,70 @@ TEST_F(TransientXdmfTest, TheXdmf3FlavourSelectsTheSampleInsideTheReference) {
   EXPECT_EQ(whole, 5 * n);
 }
 
+// Bodies and sliders are nodes outside the elements: a temporal collection each of vertex
+// grids at their nodes (the node lists whole, the sampled positions and series at row k),
+// in both flavours.
+TEST_F(TransientXdmfTest, BodiesAndSlidersGetVertexGridsAtTheirNodes) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  const auto n = static_cast<hsize_t>(sample_times.size());
+  add_bodies_and_sliders(h5, n, 2, 1);
+  const OpenId file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  ASSERT_GE(file.get(), 0);
+  for (const auto readers : {legacy, catena::io::XdmfReaders::xdmf3}) {
+    const std::string xmf = catena::io::transient_xdmf_path(h5.string());
+    catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, sample_times, readers);
+    const std::string xml = read_text(xmf);
+    for (const char* collection : {"samples", "bodies", "sliders"})
+      EXPECT_EQ(count_of(xml, std::string("<Grid Name=\"") + collection +
+                                  "\" GridType=\"Collection\" CollectionType=\"Temporal\">"),
+                1u)
+          << collection;
+    EXPECT_EQ(count_of(xml, "GridType=\"Uniform\""), 3 * n);
+    EXPECT_EQ(count_of(xml,
+                       "TopologyType=\"Polyvertex\" NodesPerElement=\"1\" "
+                       "NumberOfElements=\"2\""),
+              n);
+    EXPECT_EQ(count_of(xml,
+                       "TopologyType=\"Polyvertex\" NodesPerElement=\"1\" "
+                       "NumberOfElements=\"1\""),
+              n);
+    for (const char* attribute : {"Name=\"orientation\" AttributeType=\"Matrix\" Center=\"Cell\"",
+                                  "Name=\"angular_velocity\" AttributeType=\"Vector\" "
+                                  "Center=\"Cell\"",
+                                  "Name=\"slider_position\" AttributeType=\"Scalar\" "
+                                  "Center=\"Cell\"",
+                                  "Name=\"slider_speed\" AttributeType=\"Scalar\" Center=\"Cell\""})
+      EXPECT_EQ(count_of(xml, attribute), n) << attribute;
+    // Per body grid: body_nodes, positions, velocities, slopes, orientation, angular
+    // velocity; per slider grid: slider_nodes, positions, velocities, slider position and
+    // speed.
+    if (readers == legacy) check_hdf_references(xml, h5, "run.h5", (13 + 6 + 5) * n);
+    // Grid k of each collection: its time, and every sampled reference at row k.
+    for (const std::string prefix : {"bodies_", "sliders_"}) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::string tag = "<Grid Name=\"" + prefix + std::to_string(k) + "\"";
+        const std::size_t at = xml.find(tag);
+        ASSERT_NE(at, std::string::npos) << tag;
+        const std::string grid = xml.substr(at, xml.find("</Grid>", at) - at);
+        std::smatch time;
+        ASSERT_TRUE(std::regex_search(grid, time, std::regex(R"re(<Time Value="([^"]*)"/>)re")));
+        EXPECT_EQ(std::stod(time[1]), sample_times[k]) << tag;
+        const std::string row = std::to_string(k);
+        // xdmf2: the HyperSlab's start, "k 0 ..."; xdmf3: "|k 0 ...:".
+        const std::regex start(readers == legacy ? R"re(Format="XML">([0-9]+) )re"
+                                                 : R"re(\|([0-9]+) )re");
+        std::size_t n_selections = 0;
+        for (auto m = std::sregex_iterator(grid.begin(), grid.end(), start);
+             m != std::sregex_iterator(); ++m, ++n_selections)
+          EXPECT_EQ((*m)[1], row) << tag;
+        EXPECT_EQ(n_selections, prefix == "bodies_" ? 5u : 4u) << tag;
+      }
+    }
+    fs::remove(xmf);
+  }
+}
+
 TEST_F(TransientXdmfTest, ReplacesAnOldXdmfAndEscapesTheFileName) {
   const fs::path h5 = directory_ / "a&b.h5";
   const fs::path xmf = directory_ / "a&b.xmf";
@@ -376,6 +457,20 @@ void expect_refused(const fs::path& directory, Write write, const std::vector<st
           << "'" << part << "' not in: " << error.what();
   }
   EXPECT_EQ(directory_listing(directory), files_left);
+}
+
+// A body or slider node that is not a node of the mesh: the XDMF would draw a vertex that does
+// not exist; refused, naming the dataset and the index.
+TEST_F(TransientXdmfTest, RefusesABodyNodeOutsideTheMesh) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  add_bodies_and_sliders(h5, sample_times.size(), n_nodes + 1, 1);
+  expect_refused(directory_,
+                 [&] {
+                   catena::io::write_transient_xdmf(h5.string(), (directory_ / "run.xmf").string(),
+                                                    n_nodes, n_elements, sample_times, legacy);
+                 },
+                 {"run.xmf", "/mesh/body_nodes", "node index 4", "mesh's 4 nodes"}, {"run.h5"});
 }
 
 // ParaView's XDMF Reader crashes on an empty temporal collection: no samples, no XDMF.

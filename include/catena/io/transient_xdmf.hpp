@@ -2,7 +2,8 @@
 // The XDMF descriptions of a dynamic run's time-series HDF5 file (docs/output.md, "Time
 // series"), so that ParaView can play the run: a temporal collection with one polyline grid
 // per sample, whose geometry and fields are selections of sample k of the /samples
-// datasets — written in two flavours, one for each family of ParaView's XDMF readers
+// datasets (and, in scenes with rigid bodies or sliders, a collection each of vertex grids
+// at their nodes) — written in two flavours, one for each family of ParaView's XDMF readers
 // (XdmfReaders). The XDMF only points into the HDF5 file, by its base name, so the files
 // can be moved together.
 //
