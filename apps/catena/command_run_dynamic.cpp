@@ -140,7 +140,8 @@ class OutputObserver : public solvers::TransientObserver {
     io::BodySample bodies;
     if (!system_.model().rigid_bodies.empty()) {
       assembly::BodyPoses poses = view_.body_poses(q, v);
-      bodies = {std::move(poses.orientation), std::move(poses.angular_velocity)};
+      bodies = {std::move(poses.orientation), std::move(poses.angular_velocity),
+                view_.joint_links(q)};
     }
     io::SliderSample sliders;
     if (!system_.model().sliders.empty()) {

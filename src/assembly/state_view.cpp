@@ -334,6 +334,70 @@ BodyPoses StateView::body_poses(Vec q, Vec v) const {
   return out;
 }
 
+std::vector<double> StateView::joint_links(Vec q) const {
+  const SecondOrderSystem& sys = system_;
+  const model::Model& m = *sys.model_;
+  std::vector<double> out(12 * m.joints.size(), 0.0);
+  if (m.joints.empty()) return out;
+  const int rank = mpi_rank(sys.comm_);
+  const PetscScalar* qa = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &qa));
+  const PetscInt first = sys.dofs_.first_owned();
+  // Component k of an owned node's block at q (a fixed one at its reference value).
+  auto value = [&](int n, int k) {
+    const PetscInt g = sys.dofs_.global_dof(n, k);
+    return g >= 0 ? sys.dofs_.coefficient(n, k) * qa[g - first]
+                  : sys.node_reference_[kBlock * n + k];
+  };
+  auto position = [&](int n) {
+    const int p = model::kind_info(sys.dofs_.node_kind(n)).position;
+    return Vec3(value(n, p), value(n, p + 1), value(n, p + 2));
+  };
+  // A body's node and a point fixed in the body (given by its reference position): r + Σ c_k
+  // e_k with c_k its coordinates in the body's reference axes (natural coordinates: the
+  // node's r, e1, e2, e3).
+  auto body_point = [&](int n, const Vec3& reference_point) {
+    const model::Node& node = m.nodes[static_cast<size_t>(n)];
+    const Vec3 d = reference_point - node.position;
+    const double c[3] = {node.tangent.dot(d), node.section_y.dot(d), node.section_z.dot(d)};
+    Vec3 p = position(n);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int k = 0; k < 3; ++k) p[k] += c[axis] * value(n, 3 + 3 * axis + k);
+    return p;
+  };
+  auto put = [&](size_t j, int slot, const Vec3& p) {
+    for (int k = 0; k < 3; ++k) out[12 * j + static_cast<size_t>(3 * slot + k)] = p[k];
+  };
+  for (size_t j = 0; j < m.joints.size(); ++j) {
+    const model::Joint& joint = m.joints[j];
+    const int a = m.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
+    if (sys.dofs_.node_owner(a) == rank) {
+      put(j, 0, position(a));
+      put(j, 1, body_point(a, joint.point));
+    }
+    if (joint.body_b >= 0) {
+      const int b = m.rigid_bodies[static_cast<size_t>(joint.body_b)].node;
+      if (sys.dofs_.node_owner(b) == rank) {
+        put(j, 2, body_point(b, joint.point));
+        put(j, 3, position(b));
+      }
+    } else if (joint.node_b >= 0) {
+      if (sys.dofs_.node_owner(joint.node_b) == rank) {
+        put(j, 2, position(joint.node_b));
+        put(j, 3, position(joint.node_b));
+      }
+    } else if (rank == 0) {
+      put(j, 2, joint.point);
+      put(j, 3, joint.point);
+    }
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &qa));
+  // Each point is nonzero on one rank only: a sum gathers them.
+  MPI_Allreduce(MPI_IN_PLACE, out.data(), static_cast<int>(out.size()), MPI_DOUBLE, MPI_SUM,
+                sys.comm_);
+  return out;
+}
+
 SliderTravel StateView::slider_travel(Vec q, Vec v) const {
   const SecondOrderSystem& sys = system_;
   const std::vector<model::Slider>& sliders = sys.model_->sliders;

@@ -90,6 +90,11 @@ inline constexpr Dataset body_angular_velocity{"/samples/body_angular_velocity",
 // (n_bodies,) int64: node index of each rigid body's point r (its position is that node's
 // row of /samples/positions). Only with rigid bodies.
 inline constexpr Dataset body_nodes{"/mesh/body_nodes", nullptr};
+// (n_samples, n_joints, 4, 3) float64: each joint's two links, for drawing the mechanism:
+// the points A's node, the joint's point carried by A, the joint's point carried by B, B's
+// node (B the ground or a node: the joint's point, or that node's position, twice)
+// (assembly::StateView::joint_links). Only with joints.
+inline constexpr Dataset joint_links{"/samples/joint_links", "m"};
 // ---- Rigid bodies: a group /bodies/<name> each (the scene's name), attribute `index`
 // (its row in the body datasets). ----
 inline constexpr const char* bodies_group = "/bodies";

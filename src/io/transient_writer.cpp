@@ -197,8 +197,9 @@ struct TransientWriter::Impl {
   hsize_t n_registration = 0;
   hsize_t n_bodies = 0;
   hsize_t n_sliders = 0;
+  hsize_t n_joints = 0;
   Series time, positions, velocities, slopes, axial, constraint_forces;
-  Series body_orientation, body_angular_velocity;
+  Series body_orientation, body_angular_velocity, joint_links;
   Series slider_position, slider_speed;
   Series reaction_force, reaction_moment;
   Series contact_force, contact_position, step_contact_force, step_registration_height;
@@ -214,7 +215,7 @@ struct TransientWriter::Impl {
     std::size_t n = 0;
     std::vector<double> time, positions, velocities, slopes, axial, constraint_forces;
     std::vector<double> reaction_force, reaction_moment, contact_force, contact_position;
-    std::vector<double> body_orientation, body_angular_velocity;
+    std::vector<double> body_orientation, body_angular_velocity, joint_links;
     std::vector<double> slider_position, slider_speed;
   } pending;
   void write_pending_samples();
@@ -260,7 +261,8 @@ struct TransientWriter::Impl {
         n_contacts(static_cast<hsize_t>(m.contacts.size())),
         n_registration(static_cast<hsize_t>(m.registration_nodes.size())),
         n_bodies(static_cast<hsize_t>(m.rigid_bodies.size())),
-        n_sliders(static_cast<hsize_t>(m.sliders.size())) {
+        n_sliders(static_cast<hsize_t>(m.sliders.size())),
+        n_joints(static_cast<hsize_t>(m.joints.size())) {
     MPI_Comm_rank(c, &rank);
   }
 
@@ -344,6 +346,10 @@ struct TransientWriter::Impl {
       body_orientation = series(layout::body_orientation, {n_bodies, 4}, real, samples);
       body_angular_velocity = series(layout::body_angular_velocity, {n_bodies, 3}, real, samples);
     }
+    if (n_joints > 0) {
+      require_on_resume(layout::joint_links, "the joints' links");
+      joint_links = series(layout::joint_links, {n_joints, 4, 3}, real, samples);
+    }
     if (n_sliders > 0) {
       require_on_resume(layout::slider_position, "the sliders' travel");
       slider_position = series(layout::slider_position, {n_sliders}, real, samples);
@@ -381,6 +387,7 @@ struct TransientWriter::Impl {
             &step_rejected,
             &body_orientation,
             &body_angular_velocity,
+            &joint_links,
             &slider_position,
             &slider_speed};
   }
@@ -601,6 +608,10 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
       add(b.body_orientation, bodies.orientation);
       add(b.body_angular_velocity, bodies.angular_velocity);
     }
+    if (s.n_joints > 0 && s.rank == 0) {
+      CATENA_ASSERT(bodies.joint_links.size() == 12 * s.n_joints, "four points per joint");
+      add(b.joint_links, bodies.joint_links);
+    }
     if (s.n_sliders > 0 && s.rank == 0) {
       CATENA_ASSERT(sliders.position.size() == s.n_sliders, "one arc length per slider");
       add(b.slider_position, sliders.position);
@@ -641,6 +652,11 @@ void TransientWriter::Impl::write_pending_samples() {
       from_root(pending.body_angular_velocity);
       body_orientation.append(x, n, all, pending.body_orientation.data());
       body_angular_velocity.append(x, n, all, pending.body_angular_velocity.data());
+    }
+    if (n_joints > 0) {
+      from_root(pending.joint_links);
+      joint_links.append(x, n, RowBlock{0, static_cast<std::int64_t>(n_joints)},
+                         pending.joint_links.data());
     }
     if (n_sliders > 0) {
       const RowBlock all{0, static_cast<std::int64_t>(n_sliders)};

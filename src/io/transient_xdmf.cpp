@@ -18,7 +18,8 @@
 // draw: scenes with them get a temporal collection each beside the mesh's ("bodies",
 // "sliders"), whose grids are vertices at those nodes (/mesh/body_nodes, /mesh/slider_nodes
 // index the same sampled positions) carrying the per-body and per-slider series as cell
-// values.
+// values; joints get one ("joints") of segments from each body's node to the joint's point,
+// which draws a mechanism as a stick figure.
 #include "catena/io/transient_xdmf.hpp"
 
 #include <hdf5.h>
@@ -52,6 +53,7 @@ struct SeriesShape {
   std::int64_t n_elements = 0;
   std::int64_t n_bodies = 0;   // rows of /mesh/body_nodes (0: no rigid bodies)
   std::int64_t n_sliders = 0;  // rows of /mesh/slider_nodes (0: no sliders)
+  std::int64_t n_joints = 0;   // joints of /samples/joint_links (0: no joints)
 };
 
 // How a dataset is stored, in XDMF's terms (NumberType + Precision in bytes) and HDF5's.
@@ -112,6 +114,12 @@ class TransientXdmfText {
       xml_ << "    <Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
       for (std::size_t k = 0; k < times.size(); ++k)
         body_grid(static_cast<std::int64_t>(k), times[k]);
+      xml_ << "    </Grid>\n";
+    }
+    if (shape_.n_joints > 0) {
+      xml_ << "    <Grid Name=\"joints\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (std::size_t k = 0; k < times.size(); ++k)
+        joint_grid(static_cast<std::int64_t>(k), times[k]);
       xml_ << "    </Grid>\n";
     }
     if (shape_.n_sliders > 0) {
@@ -185,6 +193,33 @@ class TransientXdmfText {
     sampled_attribute("velocities", "Vector", "Node", layout::velocities.path, {n_nodes, 3}, k);
     sampled_attribute("slider_position", "Scalar", "Cell", layout::slider_position.path, {n}, k);
     sampled_attribute("slider_speed", "Scalar", "Cell", layout::slider_speed.path, {n}, k);
+    xml_ << "      </Grid>\n";
+  }
+
+  // Sample k of the joints: two segments per joint (A's node to the joint's point on A, the
+  // joint's point on B to B's node), whose points are row k of /samples/joint_links read in
+  // order; the segments' ends and the joint each belongs to are fixed, so they are written
+  // here (a mechanism has few joints).
+  void joint_grid(std::int64_t k, double t) {
+    const std::int64_t n = shape_.n_joints;
+    xml_ << "      <Grid Name=\"joints_" << k << "\" GridType=\"Uniform\">\n"
+         << "        <Time Value=\"" << time_text(t) << "\"/>\n"
+         << "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\""
+         << 2 * n << "\">\n"
+         << indent(10) << "<DataItem Dimensions=\"" << 2 * n
+         << " 2\" NumberType=\"Int\" Precision=\"8\" Format=\"XML\">";
+    for (std::int64_t p = 0; p < 4 * n; ++p) xml_ << (p > 0 ? " " : "") << p;
+    xml_ << "</DataItem>\n"
+         << "        </Topology>\n"
+         << "        <Geometry GeometryType=\"XYZ\">\n";
+    sample_slab(10, layout::joint_links.path, {n, 4, 3}, k, "joints sample " + std::to_string(k));
+    xml_ << "        </Geometry>\n";
+    begin_attribute("joint", "Scalar", "Cell");
+    xml_ << indent(10) << "<DataItem Dimensions=\"" << 2 * n
+         << "\" NumberType=\"Int\" Precision=\"8\" Format=\"XML\">";
+    for (std::int64_t c = 0; c < 2 * n; ++c) xml_ << (c > 0 ? " " : "") << c / 2;
+    xml_ << "</DataItem>\n";
+    end_attribute();
     xml_ << "      </Grid>\n";
   }
 
@@ -344,6 +379,8 @@ void check_datasets(const std::string& path, const SeriesShape& shape) {
     expected.push_back({layout::body_orientation.path, {s, b, 4}, float64});
     expected.push_back({layout::body_angular_velocity.path, {s, b, 3}, float64});
   }
+  if (shape.n_joints > 0)
+    expected.push_back({layout::joint_links.path, {s, shape.n_joints, 4, 3}, float64});
   if (shape.n_sliders > 0) {
     const std::int64_t b = shape.n_sliders;
     expected.push_back({layout::slider_nodes.path, {b}, int64});
@@ -396,6 +433,22 @@ std::int64_t node_index_rows(const std::string& path, const char* name, std::int
   return dimensions[0];
 }
 
+// The joints of /samples/joint_links (its second dimension): 0 if the file has none.
+std::int64_t joint_rows(const std::string& path) {
+  const FileHandle file = open_time_series(path);
+  const char* name = layout::joint_links.path;
+  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
+  if (exists < 0) throw_hdf5_error("H5Lexists", path, name);
+  if (exists == 0) return 0;
+  const DatasetHandle dataset(
+      checked_hdf5_id(H5Dopen2(file.get(), name, H5P_DEFAULT), "H5Dopen2", path, name));
+  const std::vector<std::int64_t> dimensions = dataset_dimensions(dataset.get(), path, name);
+  if (dimensions.size() != 4)
+    throw Error("'" + path + "' at " + name + ": shape (" + dimensions_text(dimensions) +
+                "), expected (samples, joints, 4, 3)");
+  return dimensions[1];
+}
+
 // Both names in one directory: the XDMF refers to the HDF5 file by its base name.
 void check_paths(const fs::path& hdf5_path, const fs::path& xdmf_path) {
   const fs::path hdf5_absolute = fs::absolute(hdf5_path).lexically_normal();
@@ -445,9 +498,12 @@ void write_transient_xdmf(const std::string& hdf5_path, const std::string& xdmf_
     if (times.empty()) throw Error("the run has no samples: there is nothing to show");
     for (const double t : times)
       if (!std::isfinite(t)) throw Error("a sample time is not finite: " + time_text(t));
-    const SeriesShape shape{static_cast<std::int64_t>(times.size()), n_nodes, n_elements,
+    const SeriesShape shape{static_cast<std::int64_t>(times.size()),
+                            n_nodes,
+                            n_elements,
                             node_index_rows(hdf5_path, layout::body_nodes.path, n_nodes),
-                            node_index_rows(hdf5_path, layout::slider_nodes.path, n_nodes)};
+                            node_index_rows(hdf5_path, layout::slider_nodes.path, n_nodes),
+                            joint_rows(hdf5_path)};
     check_datasets(hdf5_path, shape);
     const std::string text =
         TransientXdmfText(fs::path(hdf5_path).filename().string(), shape, readers).document(times);

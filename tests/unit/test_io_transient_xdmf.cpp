@@ -112,16 +112,18 @@ void write_series_file(const fs::path& path, const std::vector<double>& times,
   }
 }
 
-// A scene's rigid bodies and sliders, added to a file of write_series_file: their node
-// indices (0, 1, ...: nodes of the mesh unless `n_bodies` exceeds it) and their series.
+// A scene's rigid bodies, joints and sliders, added to a file of write_series_file: their
+// node indices (0, 1, ...: nodes of the mesh unless `n_bodies` exceeds it) and their series.
 void add_bodies_and_sliders(const fs::path& path, hsize_t n_samples, hsize_t n_bodies,
-                            hsize_t n_sliders) {
+                            hsize_t n_sliders, hsize_t n_joints = 3) {
   const OpenId file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
   ASSERT_GE(file.get(), 0) << path;
   const hsize_t s = n_samples, b = n_bodies, r = n_sliders;
   write_dataset<std::int64_t>(file.get(), "/mesh/body_nodes", {b}, H5T_STD_I64LE, false);
   write_dataset<double>(file.get(), "/samples/body_orientation", {s, b, 4}, H5T_IEEE_F64LE, true);
   write_dataset<double>(file.get(), "/samples/body_angular_velocity", {s, b, 3}, H5T_IEEE_F64LE,
+                        true);
+  write_dataset<double>(file.get(), "/samples/joint_links", {s, n_joints, 4, 3}, H5T_IEEE_F64LE,
                         true);
   write_dataset<std::int64_t>(file.get(), "/mesh/slider_nodes", {r}, H5T_STD_I64LE, false);
   write_dataset<double>(file.get(), "/samples/slider_position", {s, r}, H5T_IEEE_F64LE, true);
@@ -368,6 +370,7 @@ TEST_F(TransientXdmfTest, TheXdmf3FlavourSelectsTheSampleInsideTheReference) {
 
 // Bodies and sliders are nodes outside the elements: a temporal collection each of vertex
 // grids at their nodes (the node lists whole, the sampled positions and series at row k),
+// and one of the joints' links (two segments per joint on row k of /samples/joint_links),
 // in both flavours.
 TEST_F(TransientXdmfTest, BodiesAndSlidersGetVertexGridsAtTheirNodes) {
   const fs::path h5 = directory_ / "run.h5";
@@ -380,12 +383,19 @@ TEST_F(TransientXdmfTest, BodiesAndSlidersGetVertexGridsAtTheirNodes) {
     const std::string xmf = catena::io::transient_xdmf_path(h5.string());
     catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, sample_times, readers);
     const std::string xml = read_text(xmf);
-    for (const char* collection : {"samples", "bodies", "sliders"})
+    for (const char* collection : {"samples", "bodies", "joints", "sliders"})
       EXPECT_EQ(count_of(xml, std::string("<Grid Name=\"") + collection +
                                   "\" GridType=\"Collection\" CollectionType=\"Temporal\">"),
                 1u)
           << collection;
-    EXPECT_EQ(count_of(xml, "GridType=\"Uniform\""), 3 * n);
+    EXPECT_EQ(count_of(xml, "GridType=\"Uniform\""), 4 * n);
+    // Three joints: six segments over twelve points, each segment's joint as a cell value.
+    EXPECT_EQ(count_of(xml,
+                       "TopologyType=\"Polyline\" NodesPerElement=\"2\" "
+                       "NumberOfElements=\"6\""),
+              n);
+    EXPECT_EQ(count_of(xml, "Format=\"XML\">0 1 2 3 4 5 6 7 8 9 10 11</DataItem>"), n);
+    EXPECT_EQ(count_of(xml, "Format=\"XML\">0 0 1 1 2 2</DataItem>"), n);
     EXPECT_EQ(count_of(xml,
                        "TopologyType=\"Polyvertex\" NodesPerElement=\"1\" "
                        "NumberOfElements=\"2\""),
@@ -403,10 +413,10 @@ TEST_F(TransientXdmfTest, BodiesAndSlidersGetVertexGridsAtTheirNodes) {
       EXPECT_EQ(count_of(xml, attribute), n) << attribute;
     // Per body grid: body_nodes, positions, velocities, slopes, orientation, angular
     // velocity; per slider grid: slider_nodes, positions, velocities, slider position and
-    // speed.
-    if (readers == legacy) check_hdf_references(xml, h5, "run.h5", (13 + 6 + 5) * n);
+    // speed; per joint grid: joint_links.
+    if (readers == legacy) check_hdf_references(xml, h5, "run.h5", (13 + 6 + 5 + 1) * n);
     // Grid k of each collection: its time, and every sampled reference at row k.
-    for (const std::string prefix : {"bodies_", "sliders_"}) {
+    for (const std::string prefix : {"bodies_", "joints_", "sliders_"}) {
       for (std::size_t k = 0; k < n; ++k) {
         const std::string tag = "<Grid Name=\"" + prefix + std::to_string(k) + "\"";
         const std::size_t at = xml.find(tag);
@@ -416,14 +426,17 @@ TEST_F(TransientXdmfTest, BodiesAndSlidersGetVertexGridsAtTheirNodes) {
         ASSERT_TRUE(std::regex_search(grid, time, std::regex(R"re(<Time Value="([^"]*)"/>)re")));
         EXPECT_EQ(std::stod(time[1]), sample_times[k]) << tag;
         const std::string row = std::to_string(k);
-        // xdmf2: the HyperSlab's start, "k 0 ..."; xdmf3: "|k 0 ...:".
-        const std::regex start(readers == legacy ? R"re(Format="XML">([0-9]+) )re"
-                                                 : R"re(\|([0-9]+) )re");
+        // xdmf2: the HyperSlab's start, "k 0 ..." (its selection item has 3 rows); xdmf3:
+        // "|k 0 ...:".
+        const std::regex start(
+            readers == legacy
+                ? R"re(Dimensions="3 [0-9]+" NumberType="Int" Format="XML">([0-9]+) )re"
+                : R"re(\|([0-9]+) )re");
         std::size_t n_selections = 0;
         for (auto m = std::sregex_iterator(grid.begin(), grid.end(), start);
              m != std::sregex_iterator(); ++m, ++n_selections)
           EXPECT_EQ((*m)[1], row) << tag;
-        EXPECT_EQ(n_selections, prefix == "bodies_" ? 5u : 4u) << tag;
+        EXPECT_EQ(n_selections, prefix == "bodies_" ? 5u : prefix == "joints_" ? 1u : 4u) << tag;
       }
     }
     fs::remove(xmf);

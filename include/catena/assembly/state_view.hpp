@@ -68,6 +68,14 @@ class StateView {
   BodyPoses body_poses(Vec q, Vec v) const;
   // Collective. Every slider's s and ṡ at (q, v).
   SliderTravel slider_travel(Vec q, Vec v) const;
+  // Collective. Every joint's two links at q, for drawing the mechanism (model::Joint order;
+  // identical on every rank): 12 values per joint, the points [A's node, the joint's point
+  // carried by A, the joint's point carried by B, B's node] (m, global). B the ground: its
+  // point and node both the joint's reference point; B a node (a spherical joint): both
+  // that node's position. The two carried points coincide to the Newton tolerance where the
+  // joint holds them together (spherical, revolute, fixed); along the axis they part by
+  // the slide of a prismatic or cylindrical joint.
+  std::vector<double> joint_links(Vec q) const;
   // Not collective. This rank's constraints (ascending index) and the force each applies
   // to its node A, −λ (model::multiplier_width values per constraint, padded with 0; N for a
   // node constraint), from the multiplier slots of q.

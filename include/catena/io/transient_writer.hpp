@@ -13,6 +13,7 @@
 // /pantographs/<name> each (attributes index, speed), with rigid bodies /mesh/body_nodes,
 // /samples/body_orientation (n_samples × n_bodies × 4, quaternions) and
 // /samples/body_angular_velocity (× 3) and a group /bodies/<name> each (attribute index),
+// with joints /samples/joint_links (n_samples × n_joints × 4 × 3, the mechanism's links),
 // with sliders /samples/slider_position and /samples/slider_speed (n_samples × n_sliders)
 // and a group /sliders/<name> each (attribute index), /mesh/slider_nodes,
 // /mesh/registration_nodes and root
@@ -71,6 +72,7 @@ struct ContactSample {
 struct BodySample {
   std::vector<double> orientation;       // 4 per body: unit quaternion (w, x, y, z)
   std::vector<double> angular_velocity;  // rad/s, 3 per body
+  std::vector<double> joint_links;       // m, 12 per joint (assembly::StateView::joint_links)
 };
 
 // Every slider's travel at a sample (identical on every rank; assembly::SliderTravel).
