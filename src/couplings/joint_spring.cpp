@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "catena/core/error.hpp"
 #include "catena/couplings/joint_constraint.hpp"
@@ -37,6 +38,12 @@ JointSpring::JointSpring(const model::Model& model, int joint_index) {
   damping_ = joint.damping;
   neutral_ = joint.neutral;
   actuator_ = joint.actuator;
+  neutral_velocity_ = joint.neutral_velocity;
+  neutral_amplitude_ = joint.neutral_amplitude;
+  neutral_frequency_ = joint.neutral_frequency;
+  limit_ = joint.limit;
+  friction_ = joint.friction;
+  stick_speed_ = joint.stick_speed;
   const Vec3 u = joint.axis.normalized(), n1 = JointConstraint::normal(u);
   const int node_a = model.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
   const model::Node& a = model.nodes[static_cast<size_t>(node_a)];
@@ -121,7 +128,30 @@ void JointSpring::evaluate(const CouplingState& s, double* f, std::span<const Ma
   double rate = 0.0;  // ξ̇ = ∂ξ/∂q · v
   if (!s.v.empty())
     for (int j = 0; j < n_; ++j) rate += xi.grad(j) * s.v[j];
-  const double force = stiffness_ * (xi.value() - neutral_) + damping_ * rate - actuator_;
+  // The neutral at t and its rate.
+  const double omega = 2.0 * M_PI * neutral_frequency_;
+  const double neutral =
+      neutral_ + neutral_velocity_ * s.t + neutral_amplitude_ * std::sin(omega * s.t);
+  const double neutral_rate =
+      neutral_velocity_ + neutral_amplitude_ * omega * std::cos(omega * s.t);
+  const double u =
+      stiffness_ * (xi.value() - neutral) + damping_ * (rate - neutral_rate) - actuator_;
+  // The limit: P = L tanh(u/L), P' = 1 − tanh².
+  double capped = u, slope = 1.0;
+  if (limit_ > 0.0) {
+    const double th = std::tanh(u / limit_);
+    capped = limit_ * th;
+    slope = 1.0 - th * th;
+  }
+  // Dry friction, regularised: g = μ ξ̇/√(ξ̇² + w²), g' = μ w²/(ξ̇² + w²)^{3/2}.
+  double friction = 0.0, friction_slope = 0.0;
+  if (friction_ > 0.0) {
+    const double r = std::sqrt(rate * rate + stick_speed_ * stick_speed_);
+    friction = friction_ * rate / r;
+    friction_slope = friction_ * stick_speed_ * stick_speed_ / (r * r * r);
+  }
+  const double force = capped + friction;
+  const double k_t = slope * stiffness_, c_t = slope * damping_ + friction_slope;
   if (f)
     for (int j = 0; j < n_; ++j) f[j] = force * xi.grad(j);
   if (m.empty()) return;
@@ -136,9 +166,9 @@ void JointSpring::evaluate(const CouplingState& s, double* f, std::span<const Ma
         const double gi = xi.grad(i), gj = xi.grad(j);
         double value = 0.0;
         if (r.c.c_K != 0.0)
-          value += r.c.c_K * (force * xi.hess(i, j) + stiffness_ * gi * gj +
-                              damping_ * gi * hv[static_cast<size_t>(j)]);
-        if (r.c.c_C != 0.0) value += r.c.c_C * damping_ * gi * gj;
+          value += r.c.c_K *
+                   (force * xi.hess(i, j) + k_t * gi * gj + c_t * gi * hv[static_cast<size_t>(j)]);
+        if (r.c.c_C != 0.0) value += r.c.c_C * c_t * gi * gj;
         r.out[i * n_ + j] = value;
       }
 }

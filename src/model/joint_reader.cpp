@@ -66,9 +66,9 @@ SideRef read_side(const Field& field, const SceneBuild& build) {
 }  // namespace
 
 void read_joints(const Field& joints, SceneBuild& build) {
-  static const std::vector<std::string> keys{"name",    "type",    "between",   "point",
-                                             "axis",    "motion",  "stiffness", "damping",
-                                             "neutral", "actuator"};
+  static const std::vector<std::string> keys{
+      "name",    "type",    "between",  "point", "axis",     "motion",      "stiffness",
+      "damping", "neutral", "actuator", "limit", "friction", "stick_speed", "neutral_motion"};
   Model& model = build.model;
   for (const Field& entry : joints.items()) {
     entry.expect_map("a joint {type, between, point, axis}");
@@ -139,7 +139,8 @@ void read_joints(const Field& joints, SceneBuild& build) {
     // A spring, a dashpot and an actuator on the coordinate of a revolute or prismatic joint.
     const bool revolute = joint.type == JointType::revolute;
     const bool sliding = joint.type == JointType::prismatic;
-    const char* spring_keys[] = {"stiffness", "damping", "neutral", "actuator"};
+    const char* spring_keys[] = {"stiffness", "damping",  "neutral",     "actuator",
+                                 "limit",     "friction", "stick_speed", "neutral_motion"};
     for (const char* key : spring_keys)
       if (const Field field = entry.child(key); field.present() && !revolute && !sliding)
         field.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
@@ -155,6 +156,40 @@ void read_joints(const Field& joints, SceneBuild& build) {
                                    0.0, RealRange::between(-M_PI, false, M_PI, true, unit))
                              : entry.child("neutral").real_or(0.0, RealRange::any(unit));
     joint.actuator = entry.child("actuator").real_or(0.0, RealRange::any(revolute ? "N*m" : "N"));
+    const std::string force_unit = revolute ? "N*m" : "N";
+    // A moving neutral: the spring and dashpot become a position servo tracking it.
+    if (const Field motion = entry.child("neutral_motion"); motion.present()) {
+      if (joint.stiffness == 0.0 && joint.damping == 0.0)
+        motion.fail(
+            "a moving neutral is what the spring and dashpot follow, and this joint has "
+            "neither; give stiffness (the servo's proportional gain) and/or damping (its "
+            "derivative gain), or leave neutral_motion out");
+      motion.expect_map("a moving neutral {velocity, amplitude, frequency}");
+      motion.check_keys({"velocity", "amplitude", "frequency"});
+      joint.neutral_velocity =
+          motion.child("velocity").real_or(0.0, RealRange::any(revolute ? "rad/s" : "m/s"));
+      joint.neutral_amplitude = motion.child("amplitude").real_or(0.0, RealRange::any(unit));
+      joint.neutral_frequency =
+          read_sine_frequency(motion.child("frequency"), joint.neutral_amplitude == 0.0, unit);
+    }
+    if (const Field limit = entry.child("limit"); limit.present()) {
+      if (joint.stiffness == 0.0 && joint.damping == 0.0 && joint.actuator == 0.0)
+        limit.fail(
+            "limit caps the torque (force) of the spring, dashpot and actuator, and this joint "
+            "has none of them; give one, or leave limit out");
+      joint.limit = limit.real(RealRange::positive(force_unit));
+      if (std::abs(joint.actuator) >= joint.limit)
+        limit.fail("the actuator's " + format_number(joint.actuator) + " " + force_unit +
+                   " is not below the limit " + format_number(joint.limit) + " " + force_unit +
+                   ": the limit would cut it; raise the limit or lower the actuator");
+    }
+    joint.friction = entry.child("friction").real_or(0.0, RealRange::non_negative(force_unit));
+    const Field stick = entry.child("stick_speed");
+    if (stick.present() && !(joint.friction > 0.0))
+      stick.fail(
+          "stick_speed regularises the joint's dry friction, and this joint has none; give "
+          "friction (a torque or force > 0) or leave stick_speed out");
+    joint.stick_speed = stick.real_or(1e-3, RealRange::positive(revolute ? "rad/s" : "m/s"));
     // A prescribed motion of the coordinate, as a node's: ξ(t) = velocity·t + amplitude·sin(2πft).
     if (const Field motion = entry.child("motion"); motion.present()) {
       if (!revolute && !sliding)
@@ -163,8 +198,9 @@ void read_joints(const Field& joints, SceneBuild& build) {
                     "(an angle) or prismatic (a slide) joint");
       if (joint.has_spring())
         motion.fail(
-            "a joint with a prescribed motion takes no stiffness, damping or actuator "
-            "(the motion is imposed whatever they do); remove one or the other");
+            "a joint with a prescribed motion takes no stiffness, damping, actuator or "
+            "friction (the motion is imposed whatever they do); remove one or the other "
+            "(a spring that follows a motion: neutral_motion)");
       motion.expect_map("a prescribed motion {velocity, amplitude, frequency}");
       motion.check_keys({"velocity", "amplitude", "frequency"});
       joint.driven = true;

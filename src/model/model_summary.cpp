@@ -30,6 +30,33 @@ using detail::format_number;
 using detail::format_vector;
 using detail::plural;
 
+// What acts on a revolute or prismatic joint's coordinate, for its row: "" if nothing.
+std::string joint_forces(const Joint& j) {
+  if (!j.has_spring()) return "";
+  const bool revolute = j.type == JointType::revolute;
+  const std::string torque = revolute ? " N*m" : " N", angle = revolute ? " rad" : " m";
+  std::string text;
+  auto add = [&](const std::string& part) { text += (text.empty() ? "; " : ", ") + part; };
+  if (j.stiffness != 0.0)
+    add("spring " + format_number(j.stiffness) + torque + (revolute ? "/rad" : "/m") + " about " +
+        format_number(j.neutral) + angle);
+  if (j.damping != 0.0)
+    add("dashpot " + format_number(j.damping) + torque + (revolute ? "*s/rad" : "*s/m"));
+  if (j.neutral_velocity != 0.0 || j.neutral_amplitude != 0.0)
+    add("its neutral moving (a servo): " +
+        (j.neutral_velocity != 0.0 ? format_number(j.neutral_velocity) + angle + "/s * t" : "") +
+        (j.neutral_velocity != 0.0 && j.neutral_amplitude != 0.0 ? " + " : "") +
+        (j.neutral_amplitude != 0.0 ? format_number(j.neutral_amplitude) + angle + " * sin(2 pi " +
+                                          format_number(j.neutral_frequency) + " Hz * t)"
+                                    : ""));
+  if (j.actuator != 0.0) add("actuator " + format_number(j.actuator) + torque);
+  if (j.limit > 0.0) add("limited to " + format_number(j.limit) + torque);
+  if (j.friction > 0.0)
+    add("dry friction " + format_number(j.friction) + torque + " (stick speed " +
+        format_number(j.stick_speed) + angle + "/s)");
+  return text;
+}
+
 // Counts per element kind in variant order, e.g. "cable 300, bar 12".
 std::string kind_counts(const std::vector<long long>& counts) {
   std::string text;
@@ -191,7 +218,7 @@ std::string describe(const Model& model, int n_ranks_running) {
           std::string(joint_types[static_cast<int>(j.type)]) + " between body '" +
               model.rigid_bodies[static_cast<size_t>(j.body_a)].name + "' and " + other + " at " +
               format_vector(j.point) + " m" + (has_axis ? ", axis " + format_vector(j.axis) : "") +
-              ": " + std::to_string(joint_equations(j)) + " multipliers");
+              ": " + std::to_string(joint_equations(j)) + " multipliers" + joint_forces(j));
   }
   for (const Slider& slider : model.sliders) {
     const ElementPath& path = model.paths[static_cast<size_t>(slider.path)];

@@ -138,7 +138,22 @@ struct Joint {
   double damping = 0.0;    // N·m·s/rad or N·s/m
   double neutral = 0.0;    // rad or m
   double actuator = 0.0;   // N·m or N, constant
-  bool has_spring() const { return stiffness != 0.0 || damping != 0.0 || actuator != 0.0; }
+  // The neutral may move, ξ₀(t) = neutral + neutral_velocity·t + neutral_amplitude·sin(2π·
+  // neutral_frequency·t): the spring and dashpot then act on ξ − ξ₀(t) and ξ̇ − ξ̇₀(t), a
+  // position servo with proportional (stiffness) and derivative (damping) gains.
+  double neutral_velocity = 0.0;   // rad/s or m/s
+  double neutral_amplitude = 0.0;  // rad or m
+  double neutral_frequency = 0.0;  // Hz
+  // The largest torque (force) the spring, dashpot and actuator together apply (a motor's
+  // limit), reached smoothly: P = limit·tanh(u/limit) of their sum u. 0: no limit.
+  double limit = 0.0;  // N·m or N
+  // Dry friction in the joint: a torque (force) of magnitude `friction` against ξ̇,
+  // regularised as friction·ξ̇/√(ξ̇² + stick_speed²) (as a slider's Coulomb friction).
+  double friction = 0.0;     // N·m or N
+  double stick_speed = 0.0;  // rad/s or m/s
+  bool has_spring() const {
+    return stiffness != 0.0 || damping != 0.0 || actuator != 0.0 || friction != 0.0;
+  }
   // Revolute and prismatic joints: a prescribed motion of the coordinate instead,
   //   ξ(t) = motion_velocity·t + motion_amplitude·sin(2π·motion_frequency·t)  (rad or m),
   // one more equation whose multiplier is the driving torque or force.
