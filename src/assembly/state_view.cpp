@@ -139,7 +139,8 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];
           // A linked slope's force is a reaction too: its part along the tangent, the
           // stretch's equation, sums to zero over the node's couplings.
-          if (e && e->origin() == ElementOrigin::elastic_support)
+          if (e && (e->origin() == ElementOrigin::elastic_support ||
+                    e->origin() == ElementOrigin::surface_contact))
             entry -= f_el[k];
           else if (dofs.global[k] < 0 || sys.dofs_.linked(node, comp))
             entry += f_el[k];

@@ -8,6 +8,7 @@
 #include "catena/elements/point_mass.hpp"
 #include "catena/elements/rayleigh_damped.hpp"
 #include "catena/elements/rigid_body.hpp"
+#include "catena/elements/surface_contact.hpp"
 #include "catena/elements/tension_bar.hpp"
 
 namespace catena::couplings {
@@ -108,6 +109,14 @@ std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::M
     add(std::make_unique<elements::GroundSpring>(model.nodes[s.node].position,
                                                  elements::SpringSection{s.stiffness, s.damping}),
         s.node, ElementOrigin::elastic_support, static_cast<int>(i));
+  }
+  for (size_t i = 0; i < model.surfaces.size(); ++i) {
+    const model::Surface& s = model.surfaces[i];
+    const elements::SurfaceContactLaw law{s.point,   s.normal,   s.stiffness,
+                                          s.damping, s.friction, s.stick_speed};
+    for (const int node : s.nodes)
+      add(std::make_unique<elements::SurfaceContact>(law), node, ElementOrigin::surface_contact,
+          static_cast<int>(i));
   }
   for (size_t i = 0; i < model.nodal_loads.size(); ++i) {
     const auto& l = model.nodal_loads[i];

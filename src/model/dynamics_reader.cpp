@@ -316,6 +316,12 @@ void read_dynamics(const Field& scene, Model& model) {
               " structure with rigid bodies is not available (it linearises the cables and "
               "beams about the static equilibrium; a body's frame and joints stay nonlinear "
               "constraints, which it does not take); use structure: nonlinear");
+  if (!model.surfaces.empty() && model.dynamic_options.structure == StructureModel::modal)
+    analysis.child("structure")
+        .fail(
+            "a modal structure with surfaces is not available (the modes are those of the "
+            "structure alone, and a contact that comes and goes is no mode); use structure: "
+            "linear or nonlinear");
   if (sliders && model.dynamic_options.structure != StructureModel::nonlinear)
     analysis.child("structure")
         .fail("a " + analysis.child("structure").text() +

@@ -234,6 +234,15 @@ std::string describe(const Model& model, int n_ranks_running) {
                    : std::string()) +
               "; unknowns x, y, z, s: 3 multipliers");
   }
+  for (const Surface& s : model.surfaces)
+    t.row("surface '" + s.name + "'",
+          "plane through " + format_vector(s.point) + " m, normal " + format_vector(s.normal) +
+              ", " + plural(static_cast<long long>(s.nodes.size()), "node") +
+              " may touch it: " + "stiffness " + format_number(s.stiffness) + " N/m, damping " +
+              format_number(s.damping) + " N*s/m" +
+              (s.friction > 0.0 ? ", Coulomb friction " + format_number(s.friction) +
+                                      " (stick speed " + format_number(s.stick_speed) + " m/s)"
+                                : std::string()));
   t.row("nodal loads",
         std::to_string(model.nodal_loads.size()) + " (sum " + format_vector(total_load) + " N)");
   t.row("point masses",

@@ -32,6 +32,7 @@
 #include "scene_build.hpp"
 #include "section_reader.hpp"
 #include "slider_reader.hpp"
+#include "surface_reader.hpp"
 
 namespace catena::model {
 namespace {
@@ -40,10 +41,10 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",        "gravity",      "sections",         "nodes",    "lines",
-      "elements",    "supports",     "elastic_supports", "loads",    "masses",
-      "constraints", "moving_loads", "bodies",           "sliders",  "joints",
-      "analysis",    "integrator",   "output",           "catenary", "pantographs"};
+      "name",     "gravity",          "sections", "nodes",    "lines",       "elements",
+      "supports", "elastic_supports", "loads",    "masses",   "constraints", "moving_loads",
+      "bodies",   "sliders",          "joints",   "analysis", "integrator",  "output",
+      "catenary", "pantographs",      "surfaces"};
   return keys;
 }
 
@@ -106,6 +107,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::read_joints(scene.child("joints"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
+  detail::read_surfaces(scene.child("surfaces"), build);
   detail::check_sliders_carried(scene.child("sliders"), build);
   model.analysis = detail::read_analysis(scene.child("analysis"), model.static_options);
   detail::read_output(scene.child("output"), model.output);

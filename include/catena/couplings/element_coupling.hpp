@@ -11,7 +11,14 @@
 
 namespace catena::couplings {
 
-enum class ElementOrigin { element, point_mass, rigid_body, elastic_support, nodal_load };
+enum class ElementOrigin {
+  element,
+  point_mass,
+  rigid_body,
+  elastic_support,
+  surface_contact,
+  nodal_load
+};
 
 class ElementCoupling final : public Coupling {
  public:

@@ -51,6 +51,19 @@ struct Support {
   unsigned plane_mask = 0;
 };
 
+// A rigid plane that nodes may touch (elements/surface_contact.hpp): a unilateral penalty
+// contact with damping and regularised Coulomb friction on each of `nodes`.
+struct Surface {
+  std::string name;
+  Vec3 point = Vec3::Zero();    // m, a point of the plane
+  Vec3 normal = Vec3::UnitZ();  // unit, towards the free side
+  double stiffness = 0.0;       // N/m
+  double damping = 0.0;         // N·s/m
+  double friction = 0.0;        // Coulomb coefficient
+  double stick_speed = 1e-3;    // m/s
+  std::vector<int> nodes;       // node indices, ascending
+};
+
 // Linear spring (and dashpot) from a node's position to ground.
 struct ElasticSupport {
   int node = 0;
@@ -417,6 +430,7 @@ struct Model {
   std::vector<ElementDesc> elements;
   std::vector<Support> supports;
   std::vector<ElasticSupport> elastic_supports;
+  std::vector<Surface> surfaces;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;
   std::vector<RigidBody> rigid_bodies;

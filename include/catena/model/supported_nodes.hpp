@@ -1,5 +1,6 @@
 #pragma once
-// The nodes a model holds: any fixed DOF (Model::supports) or an elastic support, except
+// The nodes a model holds: any fixed DOF (Model::supports), an elastic support or a
+// surface it may touch (whose reaction is the contact force, zero out of contact), except
 // the DOFs that only keep a 2D model in its plane (Support::plane_mask: in a 2D catenary
 // every node's y, whose reaction is zero by symmetry and would cost a row per node). The
 // reactions (assembly/state_view.hpp), their rows in the time series (io) and the couplings

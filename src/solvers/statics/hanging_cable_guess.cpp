@@ -110,7 +110,7 @@ std::optional<std::vector<NodeGuess>> hanging_cable_guess(const model::Model& m)
   const std::size_t n_nodes = m.nodes.size();
   if (m.elements.empty() || !(m.gravity.norm() > 0.0) || !m.point_masses.empty() ||
       !m.elastic_supports.empty() || !m.constraints.empty() || !m.moving_loads.empty() ||
-      !m.contacts.empty())
+      !m.contacts.empty() || !m.surfaces.empty())
     return none;
   for (const model::NodalLoad& load : m.nodal_loads)
     if (load.force != Vec3::Zero()) return none;
