@@ -123,8 +123,9 @@ void add_bodies_and_sliders(const fs::path& path, hsize_t n_samples, hsize_t n_b
   write_dataset<double>(file.get(), "/samples/body_orientation", {s, b, 4}, H5T_IEEE_F64LE, true);
   write_dataset<double>(file.get(), "/samples/body_angular_velocity", {s, b, 3}, H5T_IEEE_F64LE,
                         true);
-  write_dataset<double>(file.get(), "/samples/joint_links", {s, n_joints, 4, 3}, H5T_IEEE_F64LE,
-                        true);
+  if (n_joints > 0)
+    write_dataset<double>(file.get(), "/samples/joint_links", {s, n_joints, 4, 3}, H5T_IEEE_F64LE,
+                          true);
   write_dataset<std::int64_t>(file.get(), "/mesh/slider_nodes", {r}, H5T_STD_I64LE, false);
   write_dataset<double>(file.get(), "/samples/slider_position", {s, r}, H5T_IEEE_F64LE, true);
   write_dataset<double>(file.get(), "/samples/slider_speed", {s, r}, H5T_IEEE_F64LE, true);
@@ -470,6 +471,39 @@ void expect_refused(const fs::path& directory, Write write, const std::vector<st
           << "'" << part << "' not in: " << error.what();
   }
   EXPECT_EQ(directory_listing(directory), files_left);
+}
+
+// Bodies without joints: no joints collection (and a slider-only scene none of the bodies').
+TEST_F(TransientXdmfTest, BodiesWithoutJointsGetNoJointGrids) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  add_bodies_and_sliders(h5, sample_times.size(), 2, 1, 0);
+  const std::string xmf = catena::io::transient_xdmf_path(h5.string());
+  catena::io::write_transient_xdmf(h5.string(), xmf, n_nodes, n_elements, sample_times, legacy);
+  const std::string xml = read_text(xmf);
+  EXPECT_EQ(count_of(xml, "<Grid Name=\"bodies\" "), 1u);
+  EXPECT_EQ(count_of(xml, "<Grid Name=\"joints"), 0u);
+  EXPECT_EQ(count_of(xml, "joint_links"), 0u);
+  check_hdf_references(xml, h5, "run.h5", (13 + 6 + 5) * sample_times.size());
+}
+
+// A joint_links dataset of another rank than (samples, joints, 4, 3) is refused.
+TEST_F(TransientXdmfTest, RefusesJointLinksOfAnotherShape) {
+  const fs::path h5 = directory_ / "run.h5";
+  write_series_file(h5, sample_times);
+  add_bodies_and_sliders(h5, sample_times.size(), 2, 1, 0);
+  {
+    const OpenId file(H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    write_dataset<double>(file.get(), "/samples/joint_links", {sample_times.size(), 3, 12},
+                          H5T_IEEE_F64LE, true);
+  }
+  expect_refused(directory_,
+                 [&] {
+                   catena::io::write_transient_xdmf(h5.string(), (directory_ / "run.xmf").string(),
+                                                    n_nodes, n_elements, sample_times, legacy);
+                 },
+                 {"run.xmf", "/samples/joint_links", "expected (samples, joints, 4, 3)"},
+                 {"run.h5"});
 }
 
 // A body or slider node that is not a node of the mesh: the XDMF would draw a vertex that does
