@@ -105,29 +105,11 @@ class TransientXdmfText {
                    "the Xdmf3 readers.")
          << " -->\n"
          << "<Xdmf Version=\"3.0\">\n"
-         << "  <Domain>\n"
-         << "    <Grid Name=\"samples\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (std::size_t k = 0; k < times.size(); ++k)
-      sample_grid(static_cast<std::int64_t>(k), times[k]);
-    xml_ << "    </Grid>\n";
-    if (shape_.n_bodies > 0) {
-      xml_ << "    <Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-      for (std::size_t k = 0; k < times.size(); ++k)
-        body_grid(static_cast<std::int64_t>(k), times[k]);
-      xml_ << "    </Grid>\n";
-    }
-    if (shape_.n_joints > 0) {
-      xml_ << "    <Grid Name=\"joints\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-      for (std::size_t k = 0; k < times.size(); ++k)
-        joint_grid(static_cast<std::int64_t>(k), times[k]);
-      xml_ << "    </Grid>\n";
-    }
-    if (shape_.n_sliders > 0) {
-      xml_ << "    <Grid Name=\"sliders\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-      for (std::size_t k = 0; k < times.size(); ++k)
-        slider_grid(static_cast<std::int64_t>(k), times[k]);
-      xml_ << "    </Grid>\n";
-    }
+         << "  <Domain>\n";
+    collection("samples", times, &TransientXdmfText::sample_grid);
+    if (shape_.n_bodies > 0) collection("bodies", times, &TransientXdmfText::body_grid);
+    if (shape_.n_joints > 0) collection("joints", times, &TransientXdmfText::joint_grid);
+    if (shape_.n_sliders > 0) collection("sliders", times, &TransientXdmfText::slider_grid);
     xml_ << "  </Domain>\n"
          << "</Xdmf>\n";
     return xml_.str();
@@ -167,6 +149,16 @@ class TransientXdmfText {
     data_item(10, layout::element_set.path, {n_elements}, int32);
     end_attribute();
     xml_ << "      </Grid>\n";
+  }
+
+  // A temporal collection beside the mesh's: `grid` of each sample.
+  void collection(const char* name, const std::vector<double>& times,
+                  void (TransientXdmfText::*grid)(std::int64_t, double)) {
+    xml_ << "    <Grid Name=\"" << name
+         << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (std::size_t k = 0; k < times.size(); ++k)
+      (this->*grid)(static_cast<std::int64_t>(k), times[k]);
+    xml_ << "    </Grid>\n";
   }
 
   // Sample k of the rigid bodies: a vertex at each body's node, its orientation (the unit
