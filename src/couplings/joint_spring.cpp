@@ -134,8 +134,12 @@ void JointSpring::evaluate(const CouplingState& s, double* f, std::span<const Ma
       neutral_ + neutral_velocity_ * s.t + neutral_amplitude_ * std::sin(omega * s.t);
   const double neutral_rate =
       neutral_velocity_ + neutral_amplitude_ * omega * std::cos(omega * s.t);
-  const double u =
-      stiffness_ * (xi.value() - neutral) + damping_ * (rate - neutral_rate) - actuator_;
+  // The angle is the principal one, in (−π, π], while a moving neutral runs on: the spring
+  // acts on their difference taken the short way round (a servo turning a body on and on
+  // follows its target through ±π). The derivatives do not change.
+  double offset = xi.value() - neutral;
+  if (type_ == model::JointType::revolute) offset = std::remainder(offset, 2.0 * M_PI);
+  const double u = stiffness_ * offset + damping_ * (rate - neutral_rate) - actuator_;
   // The limit: P = L tanh(u/L), P' = 1 − tanh².
   double capped = u, slope = 1.0;
   if (limit_ > 0.0) {

@@ -55,6 +55,7 @@ void read_surfaces(const Field& surfaces, SceneBuild& build) {
     const Field listed = entry.child("nodes");
     if (listed.present())
       for (const Field& id : listed.items()) nodes.push_back(build.resolve_node(id));
+    const std::size_t n_listed = nodes.size();  // then the line's
     const Field line = entry.child("line");
     if (line.present()) {
       const std::string set = line.text();
@@ -71,19 +72,26 @@ void read_surfaces(const Field& surfaces, SceneBuild& build) {
       entry.fail(
           "a surface needs the nodes that touch it: 'nodes' (a list of node ids) and/or "
           "'line' (a line's name: all its nodes)");
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.empty()) listed.fail("the list is empty; expected at least one node id");
-    for (const int n : nodes) {
-      const Node& node = model.nodes[static_cast<size_t>(n)];
+    // Each node on the free side, a fault named where the node came from.
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const Node& node = model.nodes[static_cast<size_t>(nodes[k])];
       const double gap = (node.position - surface.point).dot(surface.normal);
       if (gap < 0.0)
-        (listed.present() ? listed : line)
+        (k < n_listed ? listed : line)
             .fail("node " + std::to_string(node.id) + " at " + format_vector(node.position) +
                   " m is " + format_number(-gap) + " m behind the plane (through " +
                   format_vector(surface.point) + " m, normal " + format_vector(surface.normal) +
                   "); a node starts on the free side, the normal pointing to it");
+      for (const RigidBody& body : model.rigid_bodies)
+        if (body.node == nodes[k])
+          (k < n_listed ? listed : line)
+              .fail("node " + std::to_string(node.id) + " is rigid body '" + body.name +
+                    "''s point: a surface acts on a node alone, not on a body's shape; give "
+                    "the body a node of its own that touches (a spherical joint to it)");
     }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     surface.nodes = std::move(nodes);
     model.surfaces.push_back(std::move(surface));
   }

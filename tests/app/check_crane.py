@@ -4,9 +4,9 @@ rank count):
   - the joints hold: the point each side carries (/samples/joint_links) is the same for the
     three hinges and the two clamps, within 1e-8 m, and a clamp's point is its pipe node;
   - the links start at the bodies' nodes (arm 1, arm 2, holder);
-  - the ground pushes, never pulls, and pushes as its law says: at each pipe node below
-    the ground the reaction's normal part is max(0, -k z - c dz/dt) (k = 1e5 N/m,
-    c = 200 N s/m) and its part along the ground at most 0.3 times that (Coulomb);
+  - the reactions written are the ground's (an output check: the same law at the sampled
+    state): at each pipe node below the ground the normal part max(0, -k z - c dz/dt)
+    (k = 1e5 N/m, c = 200 N s/m), never a pull, and along the ground at most 0.3 times it;
   - the pipe touched the ground (the crane lowers it there);
   - the other run's positions, links and reactions agree (1e-8 m, 1e-4 N).
 Usage: check_crane.py OUT.h5 [OTHER.h5]

@@ -8,7 +8,8 @@ forms (a 2 kg point mass, g = 9.81 m/s^2, a floor of penalty stiffness k = 2e5 N
             pushing k (d + A); without damping it rebounds to h.
   friction: resting on the floor (its reaction mg), launched along x at 2 m/s with Coulomb
             friction 0.3, it decelerates at 0.3 g: v = 2 - 0.3 g t, the reaction's
-            horizontal part 0.3 m g against the motion.
+            horizontal part 0.3 m g against the motion, until it stops at 2/(0.3 g) =
+            0.6796 s after 0.6796 m; then friction holds it (creep below the stick speed).
 Usage: check_surface_contact.py BOUNCE.h5 FRICTION.h5
 """
 import sys
@@ -45,12 +46,23 @@ assert abs(apex - H) < 2e-4 * H, apex
 assert np.abs(reaction[t < t1 - 1e-3]).max() == 0.0, "a force before the contact"
 
 t, x, v, reaction = read(sys.argv[2])
-speed_error = np.abs(v[:, 0] - (2.0 - MU * G * t)).max()
-travel_error = np.abs(x[:, 0] - (2.0 * t - 0.5 * MU * G * t * t)).max()
-friction_error = np.abs(reaction[1:, 0] + MU * M * G).max()
+stop = 2.0 / (MU * G)
+sliding, held = t < stop - 0.01, t > stop + 0.02
+assert held.sum() > 50, "the run ends before the mass stops"
+speed_error = np.abs(v[sliding, 0] - (2.0 - MU * G * t[sliding])).max()
+travel_error = np.abs(x[sliding, 0] - (2.0 * t[sliding] - 0.5 * MU * G * t[sliding] ** 2)).max()
+# The regularisation's share of the friction, (stick speed / v)^2 / 2, stays below 2e-7
+# of it down to v = 0.15 m/s, 0.05 s before the stop.
+fast = t < stop - 0.05
+friction_error = np.abs(reaction[1:, 0][fast[1:]] + MU * M * G).max()
+creep = np.abs(v[held, 0]).max()
+rest_error = np.abs(x[held, 0] - 0.5 * 2.0 * stop).max()
 normal_error = np.abs(reaction[:, 2] - M * G).max()
 print("friction: speed within %.3g m/s, travel %.3g m, friction force %.3g N, normal force "
       "%.3g N of the closed form" % (speed_error, travel_error, friction_error, normal_error))
+print("friction: at rest from %.4f s, creeping at most %.3g m/s, %.3g m from the stop" %
+      (stop, creep, rest_error))
+assert creep < 1e-4 and rest_error < 1e-4, (creep, rest_error)
 assert speed_error < 1e-6 and travel_error < 1e-6
 assert friction_error < 1e-5 and normal_error < 1e-5
 print("surface contact: OK")

@@ -16,7 +16,8 @@
 // DOFs [body A's node (12), body B's node (12)] (B the ground: A's only). The coordinates,
 // in the joint's reference frame (u its axis, n₁ ⊥ u, n₂ = u × n₁, each carried by its side):
 //   revolute   ξ = atan2((n₁_B × n₁_A)·u_B, n₁_A·n₁_B), the rotation of A relative to B about
-//              u, in (−π, π] (a spring must stay within half a turn of the reference)
+//              u, in (−π, π] (the spring acts on ξ − ξ₀ taken the short way round: within half a
+//              turn of its neutral)
 //   prismatic  ξ = (p_A − p_B)·u_B, A's slide along u relative to B.
 #include <vector>
 

@@ -21,7 +21,7 @@ struct StaticResult {
   std::vector<double> bending_moment;  // N·m
   std::vector<double> torsion;         // N·m
 
-  std::vector<int> support_nodes;       // owned nodes with fixed DOFs or elastic supports
+  std::vector<int> support_nodes;       // owned nodes with fixed DOFs, elastic supports or surfaces
   std::vector<double> reaction_force;   // 3 per support node, N (force of support on node)
   std::vector<double> reaction_moment;  // 3 per support node, N·m (from fixed slope DOFs)
 
