@@ -56,7 +56,7 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const model::Joint& joint = model.joints[static_cast<size_t>(j)];
     const int node = model.rigid_bodies[static_cast<size_t>(joint.body_a)].node;
-    if (joint.has_spring() && node_owner[static_cast<size_t>(node)] == rank)
+    if (joint.has_coordinate_force() && node_owner[static_cast<size_t>(node)] == rank)
       list.push_back(std::make_unique<JointSpring>(model, j));
   }
   for (int c = 0; c < static_cast<int>(model.contacts.size()); ++c) {

@@ -189,14 +189,15 @@ void read_joints(const Field& joints, SceneBuild& build) {
       stick.fail(
           "stick_speed regularises the joint's dry friction, and this joint has none; give "
           "friction (a torque or force > 0) or leave stick_speed out");
-    joint.stick_speed = stick.real_or(1e-3, RealRange::positive(revolute ? "rad/s" : "m/s"));
+    joint.stick_speed =
+        stick.real_or(joint.stick_speed, RealRange::positive(revolute ? "rad/s" : "m/s"));
     // A prescribed motion of the coordinate, as a node's: ξ(t) = velocity·t + amplitude·sin(2πft).
     if (const Field motion = entry.child("motion"); motion.present()) {
       if (!revolute && !sliding)
         motion.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
                     " joint has no coordinate to move; a prescribed motion drives a revolute "
                     "(an angle) or prismatic (a slide) joint");
-      if (joint.has_spring())
+      if (joint.has_coordinate_force())
         motion.fail(
             "a joint with a prescribed motion takes no stiffness, damping, actuator or "
             "friction (the motion is imposed whatever they do); remove one or the other "

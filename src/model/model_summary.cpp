@@ -32,7 +32,7 @@ using detail::plural;
 
 // What acts on a revolute or prismatic joint's coordinate, for its row: "" if nothing.
 std::string joint_forces(const Joint& j) {
-  if (!j.has_spring()) return "";
+  if (!j.has_coordinate_force()) return "";
   const bool revolute = j.type == JointType::revolute;
   const std::string torque = revolute ? " N*m" : " N", angle = revolute ? " rad" : " m";
   std::string text;

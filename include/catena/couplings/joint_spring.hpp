@@ -28,7 +28,7 @@ namespace catena::couplings {
 
 class JointSpring final : public Coupling {
  public:
-  // `joint`: into model.joints, a revolute or prismatic joint with has_spring().
+  // `joint`: into model.joints, a revolute or prismatic joint with has_coordinate_force().
   JointSpring(const model::Model& model, int joint);
 
   void evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,

@@ -2,10 +2,10 @@
 // The XDMF descriptions of a dynamic run's time-series HDF5 file (docs/output.md, "Time
 // series"), so that ParaView can play the run: a temporal collection with one polyline grid
 // per sample, whose geometry and fields are selections of sample k of the /samples
-// datasets (and, in scenes with rigid bodies or sliders, a collection each of vertex grids
-// at their nodes) — written in two flavours, one for each family of ParaView's XDMF readers
-// (XdmfReaders). The XDMF only points into the HDF5 file, by its base name, so the files
-// can be moved together.
+// datasets (and, in scenes with rigid bodies, joints or sliders, a collection each: vertex
+// grids at the bodies' and sliders' nodes, the joints' links as segments) — written in two
+// flavours, one for each family of ParaView's XDMF readers (XdmfReaders). The XDMF only points into
+// the HDF5 file, by its base name, so the files can be moved together.
 //
 // For the caller's rank 0, after the parallel HDF5 file is closed on every rank: these
 // functions open it with serial HDF5 (the default file access property list).

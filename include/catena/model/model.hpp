@@ -162,9 +162,10 @@ struct Joint {
   double limit = 0.0;  // N·m or N
   // Dry friction in the joint: a torque (force) of magnitude `friction` against ξ̇,
   // regularised as friction·ξ̇/√(ξ̇² + stick_speed²) (as a slider's Coulomb friction).
-  double friction = 0.0;     // N·m or N
-  double stick_speed = 0.0;  // rad/s or m/s
-  bool has_spring() const {
+  double friction = 0.0;      // N·m or N
+  double stick_speed = 1e-3;  // rad/s or m/s
+  // Whether anything above acts on the coordinate (a couplings::JointSpring to evaluate).
+  bool has_coordinate_force() const {
     return stiffness != 0.0 || damping != 0.0 || actuator != 0.0 || friction != 0.0;
   }
   // Revolute and prismatic joints: a prescribed motion of the coordinate instead,
