@@ -31,16 +31,18 @@ std::vector<double> reference_state(const model::Model& model, const std::vector
 std::unique_ptr<elements::Element> with_rayleigh(std::unique_ptr<elements::Element> e,
                                                  const model::Rayleigh& r,
                                                  const model::Model& model,
-                                                 const std::vector<int>& nodes) {
+                                                 const std::vector<int>& nodes,
+                                                 std::shared_ptr<elements::MatrixArena> arena) {
   if (!r.active()) return e;
   const std::vector<double> q_ref = reference_state(model, nodes, e->dofs_per_node());
   return std::make_unique<elements::RayleighDamped>(
-      std::move(e), elements::RayleighCoefficients{r.mass, r.stiffness}, q_ref);
+      std::move(e), elements::RayleighCoefficients{r.mass, r.stiffness}, q_ref, std::move(arena));
 }
 
 }  // namespace
 
-std::unique_ptr<elements::Element> make_element(const model::Model& model, int index) {
+std::unique_ptr<elements::Element> make_element(const model::Model& model, int index,
+                                                std::shared_ptr<elements::MatrixArena> arena) {
   const model::ElementDesc& desc = model.elements[index];
   const Vec3& xa = model.nodes[desc.nodes[0]].position;
   const Vec3& xb = model.nodes[desc.nodes[1]].position;
@@ -54,7 +56,7 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
               p.prestrain, p.tension_only, p.prestrain_with_loads, p.curvature};
           return with_rayleigh(std::make_unique<elements::AncfCable>(length, s, model.gravity,
                                                                      desc.distributed_load),
-                               p.rayleigh, model, desc.nodes);
+                               p.rayleigh, model, desc.nodes, arena);
         } else if constexpr (std::is_same_v<P, model::BarProps>) {
           const elements::BarSection s{p.EA, p.mass_per_length, p.damping, p.tension_only};
           const double l0 = p.unstretched_length > 0.0 ? p.unstretched_length : length;
@@ -75,7 +77,7 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
           return with_rayleigh(std::make_unique<elements::AncfBeam>(
                                    node_ref(desc.nodes[0]), node_ref(desc.nodes[1]), s,
                                    elements::BeamLoads{model.gravity, desc.distributed_load}),
-                               p.rayleigh, model, desc.nodes);
+                               p.rayleigh, model, desc.nodes, arena);
         }
       },
       desc.props);

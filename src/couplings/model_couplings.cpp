@@ -18,12 +18,14 @@ CouplingList make_couplings(const model::Model& model, const std::vector<int>& e
   // The kernels first, then their couplings: each kind's objects then lie together in
   // memory in the order the assembly loop visits them, which the residual's speed depends
   // on (docs/performance.md, "Couplings loop against the hand-written assembly").
+  // Their constant matrices in one arena, in the same order (elements/matrix_arena.hpp).
   std::vector<int> owned;
   std::vector<std::unique_ptr<elements::Element>> kernels;
+  const auto arena = std::make_shared<elements::MatrixArena>();
   for (int e = 0; e < static_cast<int>(model.elements.size()); ++e)
     if (element_owner[static_cast<size_t>(e)] == rank) {
       owned.push_back(e);
-      kernels.push_back(make_element(model, e));
+      kernels.push_back(make_element(model, e, arena));
     }
   for (size_t k = 0; k < owned.size(); ++k)
     list.push_back(make_element_coupling(model, owned[k], std::move(kernels[k])));

@@ -19,8 +19,8 @@ void add_product(const double* D, const double* x, double* y, int n) {
 }  // namespace
 
 RayleighDamped::RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficients c,
-                               std::span<const double> q_ref)
-    : inner_(std::move(inner)) {
+                               std::span<const double> q_ref, std::shared_ptr<MatrixArena> arena)
+    : inner_(std::move(inner)), arena_(std::move(arena)) {
   const int n = inner_->n_dofs();
   CATENA_ASSERT(static_cast<int>(q_ref.size()) == n, "RayleighDamped: q_ref size");
   const size_t nn = static_cast<size_t>(n) * static_cast<size_t>(n);
@@ -28,7 +28,13 @@ RayleighDamped::RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficie
   inner_->mass(M.data());
   inner_->evaluate(LocalState{q_ref, {}, LoadPath{}}, Request{true, true, false},
                    LocalOutput{f.data(), K.data(), nullptr});
-  D_.resize(nn);
+  if (arena_) {
+    D_ = arena_->allocate(nn);
+  } else {
+    own_.resize(nn);
+    D_ = own_.data();
+  }
+  size_ = nn;
   for (size_t k = 0; k < nn; ++k) D_[k] = c.mass * M[k] + c.stiffness * K[k];
 }
 
@@ -40,12 +46,12 @@ void RayleighDamped::evaluate(const LocalState& s, Request r, LocalOutput out) c
   // Eigen's run-time-sized kernel spent a third of its time on set-up at this size.
   if (r.force && !s.v.empty()) {
     if (n == 12)
-      add_product<12>(D_.data(), s.v.data(), out.f, n);
+      add_product<12>(D_, s.v.data(), out.f, n);
     else
-      add_product<Eigen::Dynamic>(D_.data(), s.v.data(), out.f, n);
+      add_product<Eigen::Dynamic>(D_, s.v.data(), out.f, n);
   }
   if (r.damping)
-    for (size_t k = 0; k < D_.size(); ++k) out.C[k] += D_[k];
+    for (size_t k = 0; k < size_; ++k) out.C[k] += D_[k];
 }
 
 }  // namespace catena::elements

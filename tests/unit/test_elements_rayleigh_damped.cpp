@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
+#include <span>
 
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/rayleigh_damped.hpp"
@@ -37,7 +39,7 @@ TEST(RayleighDamped, DampingMatrixIsMassPlusReferenceStiffness) {
   std::vector<double> M(144), K(144), f(12);
   inner->mass(M.data());
   inner->evaluate({q_ref, {}, {}}, {true, true, false}, {f.data(), K.data(), nullptr});
-  const std::vector<double>& D = damped.damping_matrix();
+  const std::span<const double> D = damped.damping_matrix();
   for (int k = 0; k < 144; ++k) EXPECT_NEAR(D[k], c.mass * M[k] + c.stiffness * K[k], 1e-9);
   // The tension's geometric stiffness is in K_ref: transverse rows are not zero (a
   // Kelvin–Voigt axial damper would leave them so).
@@ -56,7 +58,7 @@ TEST(RayleighDamped, ForceAddsDvAndJacobiansMatchFiniteDifferences) {
     for (double& x : v) x = 20 * u(rng);
     const std::vector<double> f = catena::test::element_force(damped, q, v, {});
     const std::vector<double> f_inner = catena::test::element_force(*inner, q, v, {});
-    const std::vector<double>& D = damped.damping_matrix();
+    const std::span<const double> D = damped.damping_matrix();
     for (int i = 0; i < 12; ++i) {
       double Dv = 0.0;
       for (int j = 0; j < 12; ++j) Dv += D[i * 12 + j] * v[j];
@@ -74,4 +76,50 @@ TEST(RayleighDamped, NoVelocityNoDampingForce) {
   const std::vector<double> q = straight();
   EXPECT_EQ(catena::test::element_force(damped, q, {}, {}),
             catena::test::element_force(*inner, q, {}, {}));
+}
+
+// The arena the element list keeps its damping matrices in (matrix_arena.hpp): blocks in
+// the order asked for, each on a cache line, zeroed, and never moved by later blocks.
+TEST(MatrixArena, BlocksFollowEachOtherOnCacheLinesAndStay) {
+  el::MatrixArena arena(1024);
+  double* first = arena.allocate(144);
+  first[0] = 1.0;
+  first[143] = 2.0;
+  double* second = arena.allocate(144);
+  EXPECT_EQ(second, first + 144);  // 144 doubles are 18 whole cache lines: no gap
+  double* odd = arena.allocate(5);
+  EXPECT_EQ(odd, second + 144);
+  double* after_odd = arena.allocate(3);
+  EXPECT_EQ(after_odd, odd + 8);  // 5 doubles take one whole line
+  for (double* p : {first, second, odd, after_odd})
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % 64, 0u);
+  for (int k = 0; k < 144; ++k) EXPECT_EQ(second[k], 0.0);
+  EXPECT_EQ(arena.chunks(), 1u);
+  double* next_chunk = arena.allocate(1000);  // does not fit in the 1024 left: a new chunk
+  EXPECT_EQ(arena.chunks(), 2u);
+  double* large = arena.allocate(5000);  // larger than a chunk: a chunk of its own
+  EXPECT_EQ(arena.chunks(), 3u);
+  large[4999] = 3.0;
+  next_chunk[999] = 4.0;
+  EXPECT_EQ(first[0], 1.0);  // earlier blocks untouched by the later ones
+  EXPECT_EQ(first[143], 2.0);
+}
+
+TEST(RayleighDamped, DampingMatrixInAnArenaIsTheElementsOwn) {
+  const el::RayleighCoefficients c{0.06, 7.6e-5};
+  const auto arena = std::make_shared<el::MatrixArena>();
+  const el::RayleighDamped own(cable(), c, straight());
+  const el::RayleighDamped a(cable(), c, straight(), arena), b(cable(), c, straight(), arena);
+  const std::span<const double> D = own.damping_matrix(), Da = a.damping_matrix(),
+                                Db = b.damping_matrix();
+  ASSERT_EQ(Da.size(), 144u);
+  EXPECT_EQ(Db.data(), Da.data() + 144);  // the list's matrices one after the other
+  for (int k = 0; k < 144; ++k) {
+    EXPECT_EQ(Da[k], D[k]);
+    EXPECT_EQ(Db[k], D[k]);
+  }
+  std::vector<double> v(12);
+  for (int k = 0; k < 12; ++k) v[k] = 0.1 * (k + 1);
+  EXPECT_EQ(catena::test::element_force(a, straight(), v, {}),
+            catena::test::element_force(own, straight(), v, {}));
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "catena/elements/element.hpp"
+#include "catena/elements/matrix_arena.hpp"
 
 namespace catena::elements {
 
@@ -27,9 +28,11 @@ struct RayleighCoefficients {
 
 class RayleighDamped final : public Element {
  public:
-  // q_ref: the element's reference state, node-major, n_dofs() values.
+  // q_ref: the element's reference state, node-major, n_dofs() values. D is kept in `arena`
+  // when given (matrix_arena.hpp: the list's matrices contiguous, in the order it is built),
+  // else in the element's own block.
   RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficients c,
-                 std::span<const double> q_ref);
+                 std::span<const double> q_ref, std::shared_ptr<MatrixArena> arena = nullptr);
 
   int n_nodes() const override { return inner_->n_nodes(); }
   int dofs_per_node() const override { return inner_->dofs_per_node(); }
@@ -40,11 +43,14 @@ class RayleighDamped final : public Element {
   }
 
   // D = α M + β K_ref, row-major n_dofs()².
-  const std::vector<double>& damping_matrix() const { return D_; }
+  std::span<const double> damping_matrix() const { return {D_, size_}; }
 
  private:
   std::unique_ptr<Element> inner_;
-  std::vector<double> D_;
+  std::shared_ptr<MatrixArena> arena_;  // holds D_ when given
+  std::vector<double> own_;             // holds D_ otherwise
+  double* D_ = nullptr;
+  std::size_t size_ = 0;
 };
 
 }  // namespace catena::elements

@@ -1,0 +1,37 @@
+#include "catena/elements/matrix_arena.hpp"
+
+#include <algorithm>
+#include <new>
+
+namespace catena::elements {
+namespace {
+
+constexpr std::size_t kAlignment = 64;                      // bytes: a cache line
+constexpr std::size_t kLine = kAlignment / sizeof(double);  // doubles per cache line
+
+}  // namespace
+
+void MatrixArena::Free::operator()(double* p) const {
+  ::operator delete[](p, std::align_val_t{kAlignment});
+}
+
+MatrixArena::MatrixArena(std::size_t chunk_values)
+    : chunk_values_(std::max<std::size_t>(chunk_values, kLine)) {}
+
+double* MatrixArena::allocate(std::size_t n) {
+  // Whole cache lines per block, so that every block starts on a line.
+  const std::size_t size = (std::max<std::size_t>(n, 1) + kLine - 1) / kLine * kLine;
+  if (chunks_.empty() || used_ + size > capacity_) {
+    capacity_ = std::max(chunk_values_, size);
+    auto* raw = static_cast<double*>(
+        ::operator new[](capacity_ * sizeof(double), std::align_val_t{kAlignment}));
+    chunks_.emplace_back(raw);
+    used_ = 0;
+  }
+  double* block = chunks_.back().get() + used_;
+  used_ += size;
+  std::fill(block, block + size, 0.0);
+  return block;
+}
+
+}  // namespace catena::elements
