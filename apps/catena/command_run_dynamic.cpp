@@ -184,6 +184,8 @@ class OutputObserver : public solvers::TransientObserver {
     hooks_.after_step();
   }
 
+  void accepted(double) override { realtime_.stepped(); }
+
   bool stop_requested() override { return StopSignal::requested(); }
 
   // Per contact (model order), how well this run's steps resolved its force.

@@ -115,8 +115,10 @@ class Driver {
       }
       if (!doubling_) {
         in_.accept();
+        observer_.accepted(in_.time());
         emit_samples_up_to(in_.time());
       } else {
+        observer_.accepted(in_.time());
         release_pending_samples();
       }
       if (c.adaptive) {

@@ -112,6 +112,9 @@ class TransientObserver {
   virtual ~TransientObserver() = default;
   // Collective. The state at an output time.
   virtual void sample(double t, Vec q, Vec v) = 0;
+  // Not collective. A step ending at t was accepted; its samples and its record (step())
+  // follow. Separates a step's own wall time from its output's (`catena run --realtime`).
+  virtual void accepted(double /*t*/) {}
   // Collective. After every accepted step (identical on every rank).
   virtual void step(const StepRecord&) {}
   // Collective (identical on every rank). A fixed step failed and is retried at half its
