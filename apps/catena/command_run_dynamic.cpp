@@ -150,6 +150,7 @@ class OutputObserver : public solvers::TransientObserver {
     }
     writer_.append_sample(t, positions, velocities, slopes, axial, constraint_forces, contacts,
                           {reactions.force, reactions.moment}, bodies, sliders);
+    realtime_.sampled();
   }
 
   void step(const solvers::StepRecord& r) override {

@@ -30,6 +30,10 @@ std::pair<double, double> mean_and_p99(const std::vector<double>& seconds) {
 
 }  // namespace
 
+void RealtimeMonitor::sampled() {
+  if (active_ && step_seconds_.empty()) last_ = MPI_Wtime();
+}
+
 void RealtimeMonitor::stepped() {
   if (active_) stepped_ = MPI_Wtime();
 }
@@ -122,16 +126,20 @@ RealtimeSummary RealtimeMonitor::summary(MPI_Comm comm) const {
 }
 
 std::vector<std::pair<std::string, double>> RealtimeMonitor::statistics(const RealtimeSummary& s) {
-  return {{"realtime_intervals", static_cast<double>(s.intervals)},
-          {"realtime_intervals_behind", static_cast<double>(s.behind)},
-          {"realtime_largest_lag_seconds", s.largest_lag},
-          {"realtime_mean_step_seconds", s.mean_step},
-          {"realtime_worst_step_seconds", s.worst_step},
-          {"realtime_step_seconds_p99", s.percentile99},
-          {"realtime_first_stepping_seconds", s.first_stepping},
-          {"realtime_mean_stepping_seconds", s.mean_stepping},
-          {"realtime_worst_stepping_seconds", s.worst_stepping},
-          {"realtime_stepping_seconds_p99", s.stepping_percentile99}};
+  std::vector<std::pair<std::string, double>> out = {
+      {"realtime_intervals", static_cast<double>(s.intervals)},
+      {"realtime_intervals_behind", static_cast<double>(s.behind)},
+      {"realtime_largest_lag_seconds", s.largest_lag},
+      {"realtime_mean_step_seconds", s.mean_step},
+      {"realtime_worst_step_seconds", s.worst_step},
+      {"realtime_step_seconds_p99", s.percentile99},
+      {"realtime_first_stepping_seconds", s.first_stepping}};
+  // The steps after the first: none measured, none recorded (zeros would read as figures).
+  if (s.steps > 1)
+    out.insert(out.end(), {{"realtime_mean_stepping_seconds", s.mean_stepping},
+                           {"realtime_worst_stepping_seconds", s.worst_stepping},
+                           {"realtime_stepping_seconds_p99", s.stepping_percentile99}});
+  return out;
 }
 
 void RealtimeMonitor::print(int rank, const RealtimeSummary& s, double interval, std::FILE* out) {

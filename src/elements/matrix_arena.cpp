@@ -22,10 +22,11 @@ double* MatrixArena::allocate(std::size_t n) {
   // Whole cache lines per block, so that every block starts on a line.
   const std::size_t size = (std::max<std::size_t>(n, 1) + kLine - 1) / kLine * kLine;
   if (chunks_.empty() || used_ + size > capacity_) {
-    capacity_ = std::max(chunk_values_, size);
-    auto* raw = static_cast<double*>(
-        ::operator new[](capacity_ * sizeof(double), std::align_val_t{kAlignment}));
-    chunks_.emplace_back(raw);
+    const std::size_t capacity = std::max(chunk_values_, size);
+    std::unique_ptr<double[], Free> chunk(static_cast<double*>(
+        ::operator new[](capacity * sizeof(double), std::align_val_t{kAlignment})));
+    chunks_.push_back(std::move(chunk));  // the arena changes only once both have succeeded
+    capacity_ = capacity;
     used_ = 0;
   }
   double* block = chunks_.back().get() + used_;

@@ -10,7 +10,8 @@
 #     adaptive steps (embedded estimates): Radau IIA on the taut string and HHT on the
 #     pantograph, np 1; step doubling (HHT on the pantograph), np 2; a linear structure
 #     (HHT on the pantograph, np 2), and with the linearly implicit step (np 1); the modal
-#     model (np 2), to round-off (its restart projects the state on the modes).
+#     model (np 2), to round-off (its restart projects the state on the modes); HHT and its
+#     linearly implicit step stopped one step before the end (np 1).
 #  B. A crash: checkpoints every 7 steps, SIGKILL after 40 (HHT on the pantograph, np 2)
 #     or 19 (Radau IIA, np 1) steps, so that the last checkpoint (step 35 or 14) is not the
 #     stop point, then --restart.
@@ -108,6 +109,12 @@ case_ hht_linear_np2 2 2 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}" \
 #    the last one travels in the checkpoint).
 case_ hht_linearly_implicit_np1 1 1 CATENA_STOP_AFTER_STEPS=130 exact "${pantograph[@]}" \
   --set analysis.structure=linear --set integrator.newton=linearly_implicit \
+  --set integrator.tangent_every=50
+#    Stopped one step before the end: the last step (t_end − t, dt but for round-off) keeps
+#    the matrix of dt, which the restart rebuilds from the saved step, not from t_end − t.
+case_ hht_last_step_np1 1 1 CATENA_STOP_AFTER_STEPS=299 exact "${pantograph[@]}"
+case_ hht_linearly_implicit_last_step_np1 1 1 CATENA_STOP_AFTER_STEPS=299 exact \
+  "${pantograph[@]}" --set analysis.structure=linear --set integrator.newton=linearly_implicit \
   --set integrator.tangent_every=50
 #    The modal model: the restart builds its modes again and projects the checkpoint's state
 #    on them (η = Φᵀ M (q − q0)): equal to round-off (1e-9 m, 1e-5 N), not bit for bit.

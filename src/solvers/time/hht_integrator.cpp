@@ -140,7 +140,9 @@ struct HhtIntegrator::Impl : StepMatrices {
     return out;
   }
 
-  // J = M + (1 + α)(γ h C + β h² K), K and C re-evaluated at the iterate if asked.
+  // J = M + (1 + α)(γ h C + β h² K) with the matrix's step h_matrix (attempt(): a step
+  // within 10⁻⁶ of it keeps the matrix, and a restart rebuilds the same matrix from the
+  // saved h_matrix), K and C re-evaluated at the iterate if asked.
   void build_matrix(Vec a, bool refresh_tangent, Mat J) {
     if (refresh_tangent) {
       kinematics(a);
@@ -148,17 +150,17 @@ struct HhtIntegrator::Impl : StepMatrices {
       ++counters.jacobian_evaluations;
       if (local) local->tangent_refreshed();
     }
-    const double s = 1.0 + options.alpha;
+    const double s = 1.0 + options.alpha, hm = h_matrix;
     CATENA_PETSC(MatCopy(mass.get(), J, SAME_NONZERO_PATTERN));
     if (const Mat damping = damping_matrix())
-      CATENA_PETSC(MatAXPY(J, s * gamma * h, damping, SAME_NONZERO_PATTERN));
+      CATENA_PETSC(MatAXPY(J, s * gamma * hm, damping, SAME_NONZERO_PATTERN));
     if (beta != 0.0)  // central differences: no stiffness in the matrix
-      CATENA_PETSC(MatAXPY(J, s * beta * h * h, K.get(), SAME_NONZERO_PATTERN));
+      CATENA_PETSC(MatAXPY(J, s * beta * hm * hm, K.get(), SAME_NONZERO_PATTERN));
     if (algebraic->active()) {
       // Multiplier columns (1 + α)Gᵀ; constraint rows, holding (1 + α)βh² G from K,
       // scaled to m̄ G like the residual's.
       CATENA_PETSC(MatAXPY(J, s, coupling.get(), SAME_NONZERO_PATTERN));
-      algebraic->scale_rows(J, algebraic->mass_scale() / (s * beta * h * h));
+      algebraic->scale_rows(J, algebraic->mass_scale() / (s * beta * hm * hm));
     }
   }
 };
