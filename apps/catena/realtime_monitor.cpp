@@ -93,35 +93,26 @@ RealtimeSummary RealtimeMonitor::summary(MPI_Comm comm) const {
     if (!stepping_seconds_.empty())
       std::tie(s.mean_stepping, s.stepping_percentile99) = mean_and_p99(stepping_seconds_);
   }
-  double values[14] = {static_cast<double>(s.intervals),
-                       static_cast<double>(s.behind),
-                       s.largest_lag,
-                       s.lag_time,
-                       s.mean_step,
-                       s.worst_step,
-                       s.worst_time,
-                       s.percentile99,
-                       static_cast<double>(s.steps),
-                       s.first_stepping,
-                       s.mean_stepping,
-                       s.worst_stepping,
-                       s.worst_stepping_time,
-                       s.stepping_percentile99};
-  MPI_Bcast(values, 14, MPI_DOUBLE, 0, comm);
-  s.intervals = static_cast<long>(values[0]);
-  s.behind = static_cast<long>(values[1]);
-  s.largest_lag = values[2];
-  s.lag_time = values[3];
-  s.mean_step = values[4];
-  s.worst_step = values[5];
-  s.worst_time = values[6];
-  s.percentile99 = values[7];
-  s.steps = static_cast<long>(values[8]);
-  s.first_stepping = values[9];
-  s.mean_stepping = values[10];
-  s.worst_stepping = values[11];
-  s.worst_stepping_time = values[12];
-  s.stepping_percentile99 = values[13];
+  // Rank 0's figures on every rank: one list of the fields serves both directions.
+  double* reals[] = {&s.largest_lag,
+                     &s.lag_time,
+                     &s.mean_step,
+                     &s.worst_step,
+                     &s.worst_time,
+                     &s.percentile99,
+                     &s.first_stepping,
+                     &s.mean_stepping,
+                     &s.worst_stepping,
+                     &s.worst_stepping_time,
+                     &s.stepping_percentile99};
+  long* counts[] = {&s.intervals, &s.behind, &s.steps};
+  std::vector<double> values;
+  for (const double* x : reals) values.push_back(*x);
+  for (const long* n : counts) values.push_back(static_cast<double>(*n));
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, comm);
+  std::size_t k = 0;
+  for (double* x : reals) *x = values[k++];
+  for (long* n : counts) *n = static_cast<long>(values[k++]);
   return s;
 }
 
