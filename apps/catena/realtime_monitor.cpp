@@ -31,7 +31,9 @@ std::pair<double, double> mean_and_p99(const std::vector<double>& seconds) {
 }  // namespace
 
 void RealtimeMonitor::sampled() {
-  if (active_ && step_seconds_.empty()) last_ = MPI_Wtime();
+  // Only the start's sample: once the first step is accepted, its own samples are its
+  // output, timed with it.
+  if (active_ && step_seconds_.empty() && stepped_ < 0.0) last_ = MPI_Wtime();
 }
 
 void RealtimeMonitor::stepped() {

@@ -43,9 +43,9 @@ class RealtimeMonitor {
   // starting at simulated time t_start with output every `interval` s.
   RealtimeMonitor(int rank, bool enabled, double t_start, double interval);
 
-  // Not collective. A field sample was written: before the first step (the start's
-  // sample), the steps' clock starts again after it, so that the first step's figures are
-  // its own.
+  // Not collective. A field sample was written: if it is the start's (no step accepted
+  // yet), the steps' clock starts again after it, so that the first step's figures are its
+  // own.
   void sampled();
   // Not collective. A step was accepted (before its output).
   void stepped();

@@ -7,7 +7,8 @@ The run's root attributes hold realtime_intervals (N_INTERVALS), realtime_interv
 (0 for this run, which keeps up), and step wall times with 0 < mean <= 99th percentile <=
 worst, all below a second; the same of the stepping alone (after the first step), each
 step's stepping no longer than the step with its output, so its worst no longer than the
-worst step, as the first step's stepping.
+worst step, as the first step's stepping, which (its set-up included) is no shorter than
+the mean.
 """
 import sys
 
@@ -34,3 +35,5 @@ print(f"check_realtime: stepping alone: first {first:.3g} s, then mean {s_mean:.
       f"p99 {s_p99:.3g} s, worst {s_worst:.3g} s")
 assert 0.0 < s_mean <= s_p99 <= s_worst <= worst, (s_mean, s_p99, s_worst, worst)
 assert 0.0 < first <= worst, (first, worst)
+# The first step sets up and factors the method's matrices: longer than the steps' mean.
+assert first >= s_mean, (first, s_mean)
