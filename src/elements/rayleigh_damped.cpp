@@ -20,21 +20,17 @@ void add_product(const double* D, const double* x, double* y, int n) {
 
 RayleighDamped::RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficients c,
                                std::span<const double> q_ref, std::shared_ptr<MatrixArena> arena)
-    : inner_(std::move(inner)), arena_(std::move(arena)) {
+    : inner_(std::move(inner)) {
   const int n = inner_->n_dofs();
   CATENA_ASSERT(static_cast<int>(q_ref.size()) == n, "RayleighDamped: q_ref size");
   const size_t nn = static_cast<size_t>(n) * static_cast<size_t>(n);
+  // Without a list's arena, one of the element's own, the matrix's size.
+  arena_ = arena ? std::move(arena) : std::make_shared<MatrixArena>(nn);
   std::vector<double> M(nn), K(nn), f(static_cast<size_t>(n));
   inner_->mass(M.data());
   inner_->evaluate(LocalState{q_ref, {}, LoadPath{}}, Request{true, true, false},
                    LocalOutput{f.data(), K.data(), nullptr});
-  if (arena_) {
-    D_ = arena_->allocate(nn);
-  } else {
-    own_.resize(nn);
-    D_ = own_.data();
-  }
-  size_ = nn;
+  D_ = arena_->allocate(nn);
   for (size_t k = 0; k < nn; ++k) D_[k] = c.mass * M[k] + c.stiffness * K[k];
 }
 
@@ -51,7 +47,7 @@ void RayleighDamped::evaluate(const LocalState& s, Request r, LocalOutput out) c
       add_product<Eigen::Dynamic>(D_, s.v.data(), out.f, n);
   }
   if (r.damping)
-    for (size_t k = 0; k < size_; ++k) out.C[k] += D_[k];
+    for (int k = 0; k < n * n; ++k) out.C[k] += D_[k];
 }
 
 }  // namespace catena::elements

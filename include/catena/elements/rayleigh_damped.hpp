@@ -14,7 +14,6 @@
 // damping forces from stiffness changes, no contribution to ∂f/∂q) — the usual choice.
 #include <memory>
 #include <span>
-#include <vector>
 
 #include "catena/elements/element.hpp"
 #include "catena/elements/matrix_arena.hpp"
@@ -30,7 +29,7 @@ class RayleighDamped final : public Element {
  public:
   // q_ref: the element's reference state, node-major, n_dofs() values. D is kept in `arena`
   // when given (matrix_arena.hpp: the list's matrices contiguous, in the order it is built),
-  // else in the element's own block.
+  // else in an arena of the element's own.
   RayleighDamped(std::unique_ptr<Element> inner, RayleighCoefficients c,
                  std::span<const double> q_ref, std::shared_ptr<MatrixArena> arena = nullptr);
 
@@ -43,14 +42,14 @@ class RayleighDamped final : public Element {
   }
 
   // D = α M + β K_ref, row-major n_dofs()².
-  std::span<const double> damping_matrix() const { return {D_, size_}; }
+  std::span<const double> damping_matrix() const {
+    return {D_, static_cast<std::size_t>(n_dofs() * n_dofs())};
+  }
 
  private:
   std::unique_ptr<Element> inner_;
-  std::shared_ptr<MatrixArena> arena_;  // holds D_ when given
-  std::vector<double> own_;             // holds D_ otherwise
+  std::shared_ptr<MatrixArena> arena_;  // holds D_
   double* D_ = nullptr;
-  std::size_t size_ = 0;
 };
 
 }  // namespace catena::elements
