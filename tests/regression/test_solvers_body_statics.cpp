@@ -5,6 +5,10 @@
 //    under gravity it turns down to k φ = m g l cos φ, and the joint carries its weight;
 //  - the same arm without the spring, released horizontal, hangs straight down (a quarter
 //    turn from the scene's configuration, reached through load steps);
+//  - a short pendulum (its centre 5 cm below the hinge, a small inertia), hanging or released
+//    horizontal, rests hanging with the hinge carrying its weight: its first tangent, unloaded,
+//    has no rotational stiffness at all, and a MUMPS scaling kept from that matrix once
+//    made the loaded one look singular;
 //  - a wheel on a vertical axle (its centre on the axis) has no equilibrium stiffness about
 //    the axle: the solve stops naming a mechanism instead of returning an arbitrary angle.
 // Bodies with the catenary: app test run_pantograph_wire_arm (the arm_en50318 pantograph's
@@ -30,18 +34,21 @@ namespace {
 
 // The arm: mass m, its point r its centre of mass, l along x from a revolute joint at the
 // origin about y, optionally with a torsion spring k (slack where the scene draws it).
-std::string arm_scene(double m, double l, double k) {
+// `hanging`: the centre of mass l below the hinge instead. `inertia`: the principal
+// moments, kg m².
+std::string arm_scene(double m, double l, double k, bool hanging = false,
+                      const char* inertia = "[0.02, 0.03, 0.04]") {
   char text[1024];
   std::snprintf(text, sizeof text,
                 "name: arm on a hinge\n"
                 "gravity: [0, 0, -9.81]\n"
-                "nodes: [{id: 1, position: [%.17g, 0, 0]}]\n"
-                "bodies: [{name: arm, node: 1, mass: %.17g, inertia: [0.02, 0.03, 0.04]}]\n"
+                "nodes: [{id: 1, position: [%.17g, 0, %.17g]}]\n"
+                "bodies: [{name: arm, node: 1, mass: %.17g, inertia: %s}]\n"
                 "joints:\n"
                 "  - {type: revolute, between: [arm, ground], point: [0, 0, 0], axis: [0, 1, 0],\n"
                 "     stiffness: %.17g}\n"
                 "analysis: {type: static}\n",
-                l, m, k);
+                hanging ? 0.0 : l, hanging ? -l : 0.0, m, inertia, k);
   return text;
 }
 
@@ -102,6 +109,20 @@ TEST(BodyStatics, ArmWithoutSpringReleasedHorizontalHangsDown) {
   EXPECT_NEAR(s.r[0], 0.0, 1e-9);
   EXPECT_NEAR(s.r[2], -l, 1e-9);
   EXPECT_NEAR(s.joint_force[2], m * g, 1e-8);
+}
+
+TEST(BodyStatics, ShortPendulumRestsHanging) {
+  catena::test::ensure_petsc();
+  const double m = 1.0, l = 0.05, g = 9.81;
+  for (const bool hanging : {true, false}) {
+    SCOPED_TRACE(hanging ? "scene hanging" : "released horizontal");
+    const Solved s = solve(arm_scene(m, l, 0.0, hanging, "[0.002, 0.002, 0.002]"),
+                           hanging ? "short_pendulum.yaml" : "short_arm.yaml");
+    EXPECT_NEAR(s.r[0], 0.0, 1e-10);
+    EXPECT_NEAR(s.r[2], -l, 1e-10);
+    EXPECT_NEAR(s.joint_force[0], 0.0, 1e-8);
+    EXPECT_NEAR(s.joint_force[2], m * g, 1e-8);
+  }
 }
 
 TEST(BodyStatics, WheelFreeAboutItsAxleIsAMechanism) {

@@ -67,7 +67,8 @@ TEST(StaticStability, HangingPendulumIsStable) {
 TEST(StaticStability, ColumnBeyondBucklingIsNotAccepted) {
   // A clamped beam column under 3× its Euler load π²EI/(4L²): the straight state is an
   // equilibrium but unstable (negative pivots in the tangent at it); it must not be
-  // reported as the solution.
+  // reported as the solution. The load path stops where it turns unstable, at a third of
+  // the load, and says so (shorter steps cannot pass a bifurcation).
   catena::test::ensure_petsc();
   model::Model m;
   m.gravity = Vec3::Zero();
@@ -88,7 +89,13 @@ TEST(StaticStability, ColumnBeyondBucklingIsNotAccepted) {
     catena::test::solve_static(MPI_COMM_WORLD, m);
     FAIL() << "expected a NumericalError";
   } catch (const catena::NumericalError& e) {
-    EXPECT_NE(std::string(e.what()).find("unstable"), std::string::npos) << e.what();
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the path turns unstable there"), std::string::npos) << what;
+    const std::string reached = "reached load factor ";
+    const std::size_t at = what.find(reached);
+    ASSERT_NE(at, std::string::npos) << what;
+    const double factor = std::stod(what.substr(at + reached.size()));
+    EXPECT_NEAR(factor, 1.0 / 3.0, 0.01) << what;
   }
 }
 

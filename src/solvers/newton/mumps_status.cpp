@@ -105,6 +105,28 @@ void enable_mumps_exact_inertia(const std::string& prefix) {
   set_default_option(prefix, "mat_mumps_icntl_13", "1");
 }
 
+void scale_mumps_at_each_factorisation(KSP ksp, const std::string& prefix) {
+  const std::string option = "-" + prefix + "mat_mumps_icntl_8";
+  PetscBool set = PETSC_FALSE;
+  CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, option.c_str(), &set));
+  if (set) return;
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  PetscBool is_lu = PETSC_FALSE, is_cholesky = PETSC_FALSE;
+  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &is_lu));
+  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &is_cholesky));
+  if (!is_lu && !is_cholesky) return;
+  MatSolverType type = nullptr;
+  CATENA_PETSC(PCFactorGetMatSolverType(pc, &type));
+  if (!type || std::strcmp(type, MATSOLVERMUMPS) != 0) return;
+  // The factor made now keeps the setting for the PC's later factorisations (as in
+  // enlarge_mumps_workspace).
+  CATENA_PETSC(PCFactorSetUpMatSolverType(pc));
+  Mat factor = nullptr;
+  CATENA_PETSC(PCFactorGetMatrix(pc, &factor));
+  CATENA_PETSC(MatMumpsSetIcntl(factor, 8, 7));
+}
+
 void discard_mumps_factors(const std::string& prefix) {
   set_default_option(prefix, "mat_mumps_icntl_31", "1");
 }

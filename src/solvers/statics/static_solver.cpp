@@ -32,9 +32,8 @@ struct StaticSolver::Impl {
   // An LDLᵀ factorisation of the tangent at each accepted state, independent of the
   // solver the user chose for Newton, for its inertia (stability) and null pivots; its
   // factors are discarded as MUMPS computes them (never solved with). Not Newton's MUMPS
-  // instance even when Newton's is MUMPS LDLᵀ: MUMPS keeps the scaling its analysis
-  // computed from the first matrix's values, and a singular tangent's (a rigid body's
-  // unloaded swing) left Newton's regularised matrices badly scaled (Newton stalled).
+  // instance even when Newton's is MUMPS LDLᵀ: with rigid bodies Newton factors a
+  // regularised matrix (below), and the stability check needs the tangent itself.
   KspHandle stability_ksp;
   int n_jacobians = 0;  // in the current SNESSolve: only then has MUMPS factored
   // Rigid bodies: a body's rotations have no stiffness of their own (natural coordinates:
@@ -115,6 +114,16 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
                                  options.max_newton_iterations, 100000));
   // The static tangent is symmetric: LDLᵀ halves the factorisation.
   configure_direct_newton(s.snes.get(), "static_", JacobianSymmetry::symmetric);
+  if (s.regularise) {
+    // With rigid bodies the matrices change in kind along the load path (a body's rotations
+    // gain stiffness only as loads come on): MUMPS scales each one afresh rather than keep
+    // the first one's scaling. Not without bodies, where the default serves and a null
+    // pivot's fixed step keeps Newton where it is (a mechanism is then reported).
+    KSP ksp = nullptr;
+    CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
+    CATENA_PETSC(KSPSetOperators(ksp, s.jacobian.get(), s.jacobian.get()));
+    scale_mumps_at_each_factorisation(ksp, "static_");
+  }
   CATENA_PETSC(SNESGetTolerances(s.snes.get(), &s.base_atol, &s.base_rtol, &s.base_stol,
                                  &s.base_max_it, &s.base_max_f));
 
@@ -122,6 +131,9 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   discard_mumps_factors("static_stability_");
   s.stability_ksp =
       create_direct_ksp(system.comm(), "static_stability_", JacobianSymmetry::symmetric);
+  // Its first tangent is that of the unloaded structure (every accepted state is factored).
+  CATENA_PETSC(KSPSetOperators(s.stability_ksp.get(), s.jacobian.get(), s.jacobian.get()));
+  scale_mumps_at_each_factorisation(s.stability_ksp.get(), "static_stability_");
 }
 
 StaticSolver::~StaticSolver() = default;
@@ -215,12 +227,13 @@ StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec s
   // Accept only stable equilibria: Newton may converge to an unstable branch (a slack
   // cable's inverted arch, a column beyond buckling), whose tangent has negative
   // eigenvalues. The tangent is factored at the converged state itself.
-  Attempt result{reason > 0, static_cast<int>(its)};
+  Attempt result{reason > 0, false, static_cast<int>(its)};
   if (result.accepted) {
     const MumpsStatus tangent = s.tangent_status(trial);
     check_factorisation(tangent, describe_path(target, tau_end));
     if (tangent.negative_pivots > 0) {
       result.accepted = false;
+      result.unstable = true;
       ++report.n_unstable_rejections;
     } else if (tangent.null_pivots > 0 && target >= tau_end) {
       // Neutral directions are normal before the loads are on (an unloaded pendulum);
@@ -248,6 +261,7 @@ StaticReport StaticSolver::solve(Vec q, Vec guess) {
   double step = initial_step;
   double last_attempt = 0.0;
   int attempts = 0;  // steps that needed Newton iterations, or were rejected
+  bool last_rejection_unstable = false;
   if (guess != nullptr) {
     // The whole load at once from the guess; if Newton does not reach a stable
     // equilibrium from there, the path from q as if there had been none.
@@ -288,6 +302,7 @@ StaticReport StaticSolver::solve(Vec q, Vec guess) {
     } else {
       ++attempts;
       ++report.n_rejected_steps;
+      last_rejection_unstable = tried.unstable;
       step *= 0.5;
     }
     if (s.progress)
@@ -319,7 +334,16 @@ StaticReport StaticSolver::solve(Vec q, Vec guess) {
        << ". " << report.n_unstable_rejections
        << " steps converged to unstable equilibria (negative tangent stiffness) and were "
           "retried. ";
-    if (singular)
+    if (last_rejection_unstable)
+      // Newton converges, but every step, however short, ends on an unstable equilibrium:
+      // the path from the reference reaches a limit or bifurcation point there.
+      os << "Newton converged at the last attempt, to an unstable equilibrium: the path turns "
+            "unstable there (a limit or bifurcation point: a column buckling, a body pushed "
+            "against a surface or a support so that it would tip or slide, which statics, "
+            "with no friction at rest, cannot hold). Shorter load steps cannot pass it; "
+            "support the structure where it would move, or start the dynamic run from the "
+            "reference (analysis.initial.from: reference).";
+    else if (singular)
       os << "The stiffness matrix at the last equilibrium is singular (" << tangent.null_pivots
          << " null pivots): the structure is probably a mechanism; check its supports.";
     else

@@ -62,6 +62,7 @@ class StaticSolver {
  private:
   struct Attempt {
     bool accepted = false;  // converged to a stable equilibrium
+    bool unstable = false;  // converged, to an unstable equilibrium
     int iterations = 0;
   };
   Attempt attempt(double target, double tau_end, Vec start, Vec trial, StaticReport& report);
