@@ -12,6 +12,7 @@
 #include "catena/io/hdf5_writer.hpp"
 #include "catena/io/output_lock.hpp"
 #include "catena/io/run_files.hpp"
+#include "catena/model/catenary_ends.hpp"
 #include "catena/model/model_summary.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
@@ -124,6 +125,8 @@ void command_run(MPI_Comm comm, const CommandLine& cl) {
   shape_catenary(comm, m, stdout,
                  cl.progress_seconds);  // a `catenary` scene: dropper lengths before any analysis
   if (m.analysis == model::AnalysisType::dynamic) {
+    if (const int ends = model::absorb_catenary_ends(m); ends > 0 && rank == 0)
+      std::printf("catenary: the wires' %d end supports become absorbing ends for the run\n", ends);
     run_dynamic(comm, cl, m);
     if (cl.error_bar) run_error_bar(comm, cl, m);
     return;

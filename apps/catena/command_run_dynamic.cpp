@@ -440,15 +440,32 @@ OutputError output_failure(const OutputError& failure, bool failed_closing,
 void solve_initial_statics(assembly::SecondOrderSystem& system, Vec q, const CommandLine& cl,
                            int rank) {
   const bool sliders = !system.model().sliders.empty();
+  const bool ends = !system.model().absorbing_ends.empty();
   const solvers::StaticReport report =
-      sliders ? solve_statics_holding_sliders(system, q, cl) : solve_statics(system, q, cl);
+      sliders || ends ? solve_statics_holding(system, q, cl) : solve_statics(system, q, cl);
   if (rank != 0) return;
   if (sliders)
     std::printf("initial static equilibrium: each slider held at its start, released at t = 0\n");
+  if (ends)
+    std::printf(
+        "initial static equilibrium: each absorbing end held where it is, released at t = 0\n");
   std::printf("initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
               report.n_load_steps, report.n_newton_iterations, report.residual_norm);
   if (const std::string guess = solvers::describe_guess(report.guess); !guess.empty())
     std::printf("%s\n", guess.c_str());
+}
+
+// Collective. The absorbing ends' laws from the run's initial state q0 (before initial
+// displacements and velocities), with a line saying what they are.
+void calibrate_absorbing_ends(assembly::SecondOrderSystem& system, Vec q0, int rank) {
+  const model::Model& m = system.model();
+  if (m.absorbing_ends.empty()) return;
+  system.calibrate_absorbing_ends(q0);
+  if (rank == 0)
+    std::printf(
+        "absorbing ends: %zu line ends pulled by their force at the start, with dashpots of "
+        "their lines' wave impedances\n",
+        m.absorbing_ends.size());
 }
 
 // Collective. analysis.structure: linear — every cable and beam element except the
@@ -531,13 +548,16 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
               " s is not beyond the checkpoint's t = " + std::to_string(resumed->facts.time) +
               " s: nothing to continue; raise it, e.g. --set analysis.duration=" +
               std::to_string(2 * resumed->facts.time));
-    if (dyn.structure == model::StructureModel::linear) {
-      // The linearisation point is the static equilibrium, which the checkpoint does not
-      // hold: solved again (the same scene gives the same equilibrium).
+    const bool linear = dyn.structure == model::StructureModel::linear;
+    if (linear || !m.absorbing_ends.empty()) {
+      // The linearisation point and the absorbing ends' laws come from the run's initial
+      // state (the static equilibrium, which a linear structure needs), which the checkpoint
+      // does not hold: solved again (the same scene gives the same state).
       VecHandle q0 = system.create_vector();
       system.reference_state(q0.get());
-      solve_initial_statics(system, q0.get(), cl, rank);
-      linearize_structure(system, q0.get(), rank);
+      if (dyn.initial.from_static) solve_initial_statics(system, q0.get(), cl, rank);
+      if (linear) linearize_structure(system, q0.get(), rank);
+      calibrate_absorbing_ends(system, q0.get(), rank);
     }
     VecHandle a = system.create_vector();
     const std::vector<double> no_multipliers(
@@ -566,6 +586,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
       if (dyn.structure == model::StructureModel::linear)
         linearize_structure(system, q.get(), rank);
     }
+    calibrate_absorbing_ends(system, q.get(), rank);
     apply_initial_conditions(system, q.get(), v.get());
     // Velocities that pull joined parts apart (a crank's speed given alone) would be an
     // impulse in the first step; projected here instead, and said.

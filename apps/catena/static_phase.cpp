@@ -20,18 +20,24 @@ solvers::StaticReport solve_statics(assembly::SecondOrderSystem& system, Vec q,
   return solver.solve(q, guess.get());
 }
 
-solvers::StaticReport solve_statics_holding_sliders(assembly::SecondOrderSystem& system, Vec q,
-                                                    const CommandLine& cl) {
+solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system, Vec q,
+                                            const CommandLine& cl) {
   model::Model held = system.model();
-  for (const model::Slider& slider : held.sliders) {
-    constexpr unsigned kSlide = 1u << 3u;  // the slider node's s (model::UnknownKind::slider)
+  const auto hold = [&](int node, unsigned mask) {
     const auto it = std::find_if(held.supports.begin(), held.supports.end(),
-                                 [&](const model::Support& s) { return s.node == slider.node; });
+                                 [&](const model::Support& s) { return s.node == node; });
     if (it != held.supports.end())
-      it->fixed_mask |= kSlide;
+      it->fixed_mask |= mask;
     else
-      held.supports.push_back({slider.node, kSlide, false, 0u});
+      held.supports.push_back({node, mask, false, 0u});
+  };
+  for (const model::Slider& slider : held.sliders)
+    hold(slider.node, 1u << 3u);  // the slider node's s (model::UnknownKind::slider)
+  for (const model::AbsorbingEnd& end : held.absorbing_ends) {
+    const int position = model::kind_info(system.dof_map().node_kind(end.node)).position;
+    hold(end.node, 7u << static_cast<unsigned>(position));
   }
+  held.absorbing_ends.clear();
   assembly::SecondOrderSystem statics(system.comm(), held);
   const VecHandle q_held = statics.create_vector();
   statics.reference_state(q_held.get());

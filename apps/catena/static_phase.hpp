@@ -14,13 +14,16 @@ namespace catena::app {
 solvers::StaticReport solve_statics(assembly::SecondOrderSystem& system, Vec q,
                                     const CommandLine& cl);
 
-// Collective. The same for a model with sliders, each held at its start: a slider's travel
-// along a straight path has no stiffness, so the equilibrium with it free is singular at the
-// first Newton step (and, on a sagging wire, is the trolley run to the lowest point). The
-// equilibrium is solved on a copy of the model whose sliders' s are supported, and copied
-// into q, laid out as `system`'s (whose sliders are free): a dynamic run then releases them
-// at t = 0.
-solvers::StaticReport solve_statics_holding_sliders(assembly::SecondOrderSystem& system, Vec q,
-                                                    const CommandLine& cl);
+// Collective. The same for a model with what a dynamic run's static start holds:
+//  - each slider at its start: a slider's travel along a straight path has no stiffness, so
+//    the equilibrium with it free is singular at the first Newton step (and, on a sagging
+//    wire, is the trolley run to the lowest point);
+//  - each absorbing end where it is (model::AbsorbingEnd: in the run the line beyond holds
+//    it, which statics does not model).
+// The equilibrium is solved on a copy of the model where these are supported, and copied
+// into q, laid out as `system`'s (where they are free): a dynamic run then releases them at
+// t = 0.
+solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system, Vec q,
+                                            const CommandLine& cl);
 
 }  // namespace catena::app

@@ -138,12 +138,13 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           if (row < 0) continue;
           double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];
           // A linked slope's force is a reaction too: its part along the tangent, the
-          // stretch's equation, sums to zero over the node's couplings. An elastic support's
-          // or a surface's force is a reaction where the DOF is free; at a fixed DOF the
-          // support's reaction already balances it, and the two are one (nothing added).
+          // stretch's equation, sums to zero over the node's couplings. An elastic support's,
+          // a surface's or an absorbing end's force is a reaction where the DOF is free; at a fixed
+          // DOF the support's reaction already balances it, and the two are one (nothing added).
           const bool fixed = dofs.global[k] < 0 || sys.dofs_.linked(node, comp);
           if (e && (e->origin() == ElementOrigin::elastic_support ||
-                    e->origin() == ElementOrigin::surface_contact)) {
+                    e->origin() == ElementOrigin::surface_contact ||
+                    e->origin() == ElementOrigin::absorbing_end)) {
             if (!fixed) entry -= f_el[k];
           } else if (fixed) {
             entry += f_el[k];

@@ -31,6 +31,13 @@ ElementCoupling::ElementCoupling(std::unique_ptr<elements::Element> element, std
     for (int k = 0; k < dpn; ++k) dofs_.push_back(DofKey::node(n, k));
 }
 
+void ElementCoupling::replace_element(std::unique_ptr<elements::Element> element) {
+  CATENA_ASSERT(element->n_nodes() == element_->n_nodes() &&
+                    element->dofs_per_node() == element_->dofs_per_node(),
+                "replace_element: the same nodes and DOFs");
+  element_ = std::move(element);
+}
+
 void ElementCoupling::evaluate(const CouplingState& s, double* f, std::span<const MatrixRequest> m,
                                Scratch& scratch) const {
   const size_t n = dofs_.size();

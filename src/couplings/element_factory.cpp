@@ -2,6 +2,7 @@
 
 #include <type_traits>
 
+#include "catena/elements/absorbing_end.hpp"
 #include "catena/elements/ancf_beam.hpp"
 #include "catena/elements/ancf_cable.hpp"
 #include "catena/elements/linear_spring.hpp"
@@ -112,6 +113,10 @@ std::vector<std::unique_ptr<ElementCoupling>> make_node_couplings(const model::M
                                                  elements::SpringSection{s.stiffness, s.damping}),
         s.node, ElementOrigin::elastic_support, static_cast<int>(i));
   }
+  // Without force or dashpot until assembly::SecondOrderSystem::calibrate_absorbing_ends.
+  for (size_t i = 0; i < model.absorbing_ends.size(); ++i)
+    add(std::make_unique<elements::AbsorbingEnd>(elements::AbsorbingEndLaw{}),
+        model.absorbing_ends[i].node, ElementOrigin::absorbing_end, static_cast<int>(i));
   for (size_t i = 0; i < model.surfaces.size(); ++i) {
     const model::Surface& s = model.surfaces[i];
     const elements::SurfaceContactLaw law{s.point,   s.normal,   s.stiffness,

@@ -120,6 +120,46 @@ void read_elastic_supports(const Field& elastic_supports, SceneBuild& build) {
   }
 }
 
+void read_absorbing_ends(const Field& absorbing_ends, SceneBuild& build) {
+  static const std::vector<std::string> keys{"node"};
+  Model& model = build.model;
+  for (const Field& entry : absorbing_ends.items()) {
+    entry.expect_map("an absorbing end {node}");
+    entry.check_keys(keys);
+    const Field node_field = entry.child("node");
+    AbsorbingEnd end;
+    end.node = build.resolve_node(node_field);
+    const std::string id = std::to_string(model.nodes[static_cast<std::size_t>(end.node)].id);
+    std::vector<int> attached;
+    for (std::size_t e = 0; e < model.elements.size(); ++e)
+      for (const int n : model.elements[e].nodes)
+        if (n == end.node) attached.push_back(static_cast<int>(e));
+    const auto* cable = attached.size() == 1
+                            ? std::get_if<CableProps>(&model.elements[attached[0]].props)
+                            : nullptr;
+    if (!cable || cable->tension_only)
+      node_field.fail("node " + id + " is the end of " + std::to_string(attached.size()) +
+                      " elements" +
+                      (attached.size() == 1 ? " (not a cable line, or a tension-only one)" : "") +
+                      "; an absorbing end is the cut end of one cable line (a wire), "
+                      "where the line would go on");
+    end.element = attached[0];
+    for (const Support& s : model.supports)
+      if (s.node == end.node)
+        node_field.fail("node " + id +
+                        " has a support; an absorbing end replaces the support at a cut line "
+                        "end (held in statics, free in the run): remove one of them");
+    for (const Constraint& c : model.constraints)
+      if (c.node_a == end.node || c.node_b == end.node)
+        node_field.fail("node " + id +
+                        " has a constraint or joint; an absorbing end takes a line's free cut "
+                        "end only");
+    for (const AbsorbingEnd& other : model.absorbing_ends)
+      if (other.node == end.node) node_field.fail("node " + id + " is listed twice");
+    model.absorbing_ends.push_back(end);
+  }
+}
+
 void read_loads(const Field& loads, SceneBuild& build) {
   static const std::vector<std::string> keys{"node", "force"};
   for (const Field& entry : loads.items()) {

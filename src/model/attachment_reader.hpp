@@ -16,6 +16,8 @@ void read_supports(const Field& supports, const std::vector<UnknownKind>& node_k
 
 // Not collective. Read `elastic_supports`, `loads` and `masses` (several per node add up).
 void read_elastic_supports(const Field& elastic_supports, SceneBuild& build);
+// `absorbing_ends`: after the supports, constraints and joints (which it checks against).
+void read_absorbing_ends(const Field& absorbing_ends, SceneBuild& build);
 void read_loads(const Field& loads, SceneBuild& build);
 void read_masses(const Field& masses, SceneBuild& build);
 

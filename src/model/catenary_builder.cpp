@@ -161,6 +161,7 @@ class CatenaryAssembler {
     add_nodes();
     CatenaryLayout layout;
     layout.dimension = d_.dimension;
+    layout.absorbing_ends = d_.absorbing_ends;
     layout.support_x = support_x_;
     layout.system_height = d_.system_height;
     layout.auto_spans = d_.auto_spans;

@@ -97,6 +97,7 @@ struct CatenaryDesign {
   std::optional<StitchDesign> stitch;                   // none: no stitch wires
   std::optional<std::pair<int, int>> evaluation_spans;  // 1-based, first ≤ last
   std::optional<AutoSpanCount> auto_spans;              // `spans: auto` (else the scene's count)
+  bool absorbing_ends = false;                          // `ends: absorbing`
 };
 
 // Stiffness of the spring that joins the two nodes of a wire at a staggered support (and a

@@ -20,11 +20,25 @@ constexpr double max_catenary_elements = 10'000'000.0;  // per wire, as for line
 constexpr std::int64_t kDefaultRunOutSpans = 2;
 
 const std::vector<std::string>& catenary_keys() {
-  static const std::vector<std::string> keys{
-      "dimension",     "spans",          "span_length", "span_lengths",       "system_height",
-      "presag",        "presag_between", "stagger",     "element_length",     "contact_wire",
-      "messenger",     "droppers",       "steady_arms", "messenger_supports", "evaluation_spans",
-      "run_out_spans", "stitch",         "acceptance"};
+  static const std::vector<std::string> keys{"dimension",
+                                             "spans",
+                                             "span_length",
+                                             "span_lengths",
+                                             "system_height",
+                                             "presag",
+                                             "presag_between",
+                                             "stagger",
+                                             "element_length",
+                                             "contact_wire",
+                                             "messenger",
+                                             "droppers",
+                                             "steady_arms",
+                                             "messenger_supports",
+                                             "evaluation_spans",
+                                             "run_out_spans",
+                                             "stitch",
+                                             "acceptance",
+                                             "ends"};
   return keys;
 }
 
@@ -394,6 +408,15 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   CatenaryDesign d;
   d.dimension =
       static_cast<int>(catenary.child("dimension").integer_or(3, IntRange::between(2, 3)));
+  if (const Field ends = catenary.child("ends"); ends.present()) {
+    static const std::vector<std::string> accepted{"anchored", "absorbing"};
+    const std::string text = ends.text();
+    if (text != "anchored" && text != "absorbing")
+      ends.fail("unknown ends '" + text + "';" + did_you_mean(text, accepted) +
+                " expected anchored (the wires held at the first and last supports) or "
+                "absorbing (cut ends of a longer line: absorbing ends in a dynamic run)");
+    d.absorbing_ends = text == "absorbing";
+  }
   d.span_lengths = read_span_lengths(catenary, scene, d.auto_spans);
   const Field height = catenary.child("system_height");
   d.system_height = height.real(RealRange::positive("m"));

@@ -247,13 +247,25 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
           4);
     arm_mass = *std::max_element(mass.begin(), mass.end());
   }
-  t.row("anchors", "both wires pinned (x, y, z) at the first and last support", 4);
+  if (c.absorbing_ends)
+    t.row("ends",
+          "absorbing: both wires pinned at the first and last support for shape finding and the "
+          "static start, then cut ends of a longer line (an absorbing end each: waves leave)",
+          4);
+  else
+    t.row("anchors", "both wires pinned (x, y, z) at the first and last support", 4);
 
   if (c.stitch_wires.empty() && !c.registrations.empty())
     notes.left_out.push_back("stitch wires (catenary.stitch not given)");
-  notes.left_out.push_back(
-      "anchor spans and balance weights: the wire ends are pinned, their tensions set "
-      "through the prestrain");
+  if (c.absorbing_ends)
+    notes.left_out.push_back(
+        "the line beyond the cut ends: waves that leave never come back (its supports, "
+        "droppers and other trains do not reflect them), and the absorbing ends match the "
+        "wires' bending only approximately (short waves)");
+  else
+    notes.left_out.push_back(
+        "anchor spans and balance weights: the wire ends are pinned, their tensions set "
+        "through the prestrain");
   notes.left_out.push_back(
       "steady-arm rotation: a steady arm is a vertical spring (with a point mass) on the "
       "contact wire");

@@ -292,6 +292,13 @@ void read_dynamics(const Field& scene, Model& model) {
         "a static analysis with sliders is not available (a slider's travel along a straight "
         "path has no stiffness, and the first Newton matrix is singular); run analysis.type: "
         "dynamic, whose static start holds each slider at its start and releases it at t = 0");
+  // The scene's absorbing ends, or a catenary's (`ends: absorbing`, made after shape finding).
+  const bool absorbing =
+      !model.absorbing_ends.empty() || (model.catenary && model.catenary->absorbing_ends);
+  if (absorbing && model.analysis != AnalysisType::dynamic)
+    analysis.child("type").fail(
+        "absorbing ends act in dynamic runs only (statics would hold them where they are: use "
+        "supports); run analysis.type: dynamic, whose static start holds them");
   if (model.analysis != AnalysisType::dynamic) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);
@@ -322,6 +329,11 @@ void read_dynamics(const Field& scene, Model& model) {
             "a modal structure with surfaces is not available (the modes are those of the "
             "structure alone, and a contact that comes and goes is no mode); use structure: "
             "linear or nonlinear");
+  if (absorbing && model.dynamic_options.structure == StructureModel::modal)
+    analysis.child("structure")
+        .fail(
+            "a modal structure with absorbing ends is not available (an end's dashpot couples "
+            "the modes, which the modal model steps apart); use structure: linear or nonlinear");
   if (sliders && model.dynamic_options.structure != StructureModel::nonlinear)
     analysis.child("structure")
         .fail("a " + analysis.child("structure").text() +

@@ -58,6 +58,9 @@ void check_no_free_body(const SceneBuild& build) {
   for (const Support& s : model.supports) held[parts.find(static_cast<std::size_t>(s.node))] = true;
   for (const ElasticSupport& s : model.elastic_supports)
     held[parts.find(static_cast<std::size_t>(s.node))] = true;
+  // Held in statics; in dynamics the line beyond holds it.
+  for (const AbsorbingEnd& a : model.absorbing_ends)
+    held[parts.find(static_cast<std::size_t>(a.node))] = true;
   // A rigid body's frame constraints hold its axes to each other, not the body to ground.
   for (const Constraint& c : model.constraints)
     if (c.node_b < 0 && c.type != ConstraintType::frame_lengths &&

@@ -12,19 +12,19 @@
 namespace catena::model::detail {
 namespace {
 
-const std::vector<std::string>& type_names() {
+const std::vector<std::string>& joint_type_names() {
   static const std::vector<std::string> names{"spherical", "revolute", "cylindrical", "prismatic",
                                               "fixed"};
   return names;
 }
 
-JointType read_type(const Field& type) {
+JointType read_joint_type(const Field& type) {
   if (!type.present())
     type.fail(
         "missing required key; expected one of spherical, revolute, cylindrical, "
         "prismatic, fixed");
   const std::string name = type.text();
-  const std::vector<std::string>& names = type_names();
+  const std::vector<std::string>& names = joint_type_names();
   for (size_t k = 0; k < names.size(); ++k)
     if (name == names[k]) return static_cast<JointType>(k);
   type.fail("unknown joint type '" + name + "';" + did_you_mean(name, names) +
@@ -75,7 +75,7 @@ void read_joints(const Field& joints, SceneBuild& build) {
     entry.check_keys(keys);
     Joint joint;
     joint.name = entry.child("name").text_or("joint " + std::to_string(model.joints.size() + 1));
-    joint.type = read_type(entry.child("type"));
+    joint.type = read_joint_type(entry.child("type"));
     const Field between = entry.child("between");
     if (!between.present())
       between.fail(
@@ -98,7 +98,7 @@ void read_joints(const Field& joints, SceneBuild& build) {
     joint.node_b = b.node;
     if (b.node >= 0 && joint.type != JointType::spherical)
       sides[1].fail("a node has no axes of its own: a " +
-                    type_names()[static_cast<size_t>(joint.type)] +
+                    joint_type_names()[static_cast<size_t>(joint.type)] +
                     " joint needs a body or ground there (a node takes a spherical joint)");
 
     const Field point = entry.child("point");
@@ -132,7 +132,7 @@ void read_joints(const Field& joints, SceneBuild& build) {
       if (!(joint.axis.norm() > 0.0)) axis.fail("the axis is zero; expected a nonzero vector");
       joint.axis.normalize();
     } else if (axis.present()) {
-      axis.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+      axis.fail("a " + joint_type_names()[static_cast<size_t>(joint.type)] +
                 " joint has no axis; remove 'axis'");
     }
 
@@ -143,7 +143,7 @@ void read_joints(const Field& joints, SceneBuild& build) {
                                  "limit",     "friction", "stick_speed", "neutral_motion"};
     for (const char* key : spring_keys)
       if (const Field field = entry.child(key); field.present() && !revolute && !sliding)
-        field.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+        field.fail("a " + joint_type_names()[static_cast<size_t>(joint.type)] +
                    " joint has no coordinate for '" + key +
                    "'; springs, dampers and actuators act on revolute (an angle) and prismatic "
                    "(a slide) joints");
@@ -194,7 +194,7 @@ void read_joints(const Field& joints, SceneBuild& build) {
     // A prescribed motion of the coordinate, as a node's: ξ(t) = velocity·t + amplitude·sin(2πft).
     if (const Field motion = entry.child("motion"); motion.present()) {
       if (!revolute && !sliding)
-        motion.fail("a " + type_names()[static_cast<size_t>(joint.type)] +
+        motion.fail("a " + joint_type_names()[static_cast<size_t>(joint.type)] +
                     " joint has no coordinate to move; a prescribed motion drives a revolute "
                     "(an angle) or prismatic (a slide) joint");
       if (joint.has_coordinate_force())

@@ -178,6 +178,11 @@ std::string describe(const Model& model, int n_ranks_running) {
   t.row("free DOFs", std::to_string(dofs.total - dofs.fixed));
   t.row("supports", std::to_string(model.supports.size()));
   t.row("elastic supports", std::to_string(model.elastic_supports.size()));
+  if (!model.absorbing_ends.empty())
+    t.row("absorbing ends",
+          std::to_string(model.absorbing_ends.size()) +
+              " (held in statics; in the run pulled by their initial force, with dashpots "
+              "matched to the line's wave impedances)");
   if (!model.constraints.empty()) {
     int by_type[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     for (const Constraint& c : model.constraints) ++by_type[static_cast<int>(c.type)];

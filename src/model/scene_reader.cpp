@@ -41,10 +41,10 @@ using detail::Field;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",     "gravity",          "sections", "nodes",    "lines",       "elements",
-      "supports", "elastic_supports", "loads",    "masses",   "constraints", "moving_loads",
-      "bodies",   "sliders",          "joints",   "analysis", "integrator",  "output",
-      "catenary", "pantographs",      "surfaces"};
+      "name",     "gravity",          "sections", "nodes",         "lines",       "elements",
+      "supports", "elastic_supports", "loads",    "masses",        "constraints", "moving_loads",
+      "bodies",   "sliders",          "joints",   "analysis",      "integrator",  "output",
+      "catenary", "pantographs",      "surfaces", "absorbing_ends"};
   return keys;
 }
 
@@ -105,6 +105,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::add_body_frame_constraints(scene.child("bodies"), build);
   detail::add_slider_constraints(build);
   detail::read_joints(scene.child("joints"), build);
+  detail::read_absorbing_ends(scene.child("absorbing_ends"), build);
   detail::read_loads(scene.child("loads"), build);
   detail::read_masses(scene.child("masses"), build);
   detail::read_surfaces(scene.child("surfaces"), build);

@@ -143,6 +143,13 @@ class SecondOrderSystem {
   // linearised.
   int linearize_elements(Vec q0, const std::function<bool(int)>& linearize);
 
+  // Collective. Makes each absorbing end (model::AbsorbingEnd) pull as the line beyond it
+  // would about q0, the run's initial state (v = 0, t = 0, the load path's end): with the
+  // force that holds its node there (f at the node, the absorbing ends left out) and the
+  // dashpot of its line's wave impedances (elements/absorbing_end.hpp). Until then they
+  // do nothing. Throws NumericalError naming the node if its line is not in tension there.
+  void calibrate_absorbing_ends(Vec q0);
+
   // Collective. The structure without its moving contacts and moving loads, linearised
   // about q0 (v = 0, t = 0, the end of the load path): K = ∂f/∂q, C = ∂f/∂v, M and
   // f0 = f(q0, 0) over every other coupling (elements, masses, supports, dead loads), so

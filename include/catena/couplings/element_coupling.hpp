@@ -17,7 +17,8 @@ enum class ElementOrigin {
   rigid_body,
   elastic_support,
   surface_contact,
-  nodal_load
+  nodal_load,
+  absorbing_end
 };
 
 class ElementCoupling final : public Coupling {
@@ -36,6 +37,9 @@ class ElementCoupling final : public Coupling {
   // Not collective. From now on the element linearised about its local state q0
   // (elements/linearized.hpp): constant stiffness and damping, force f0 + K0 Δq + C0 v.
   void linearize_about(std::span<const double> q0);
+  // Not collective. From now on `element` in place of the present one, on the same nodes
+  // and DOFs (asserted): an absorbing end's law, known once the run's initial state is.
+  void replace_element(std::unique_ptr<elements::Element> element);
   const std::vector<int>& nodes() const { return nodes_; }
   ElementOrigin origin() const { return origin_; }
   int source() const { return source_; }

@@ -84,6 +84,9 @@ struct CatenaryLayout {
   std::vector<CatenaryDropper> droppers;            // in x order
   std::vector<CatenaryRegistration> registrations;  // intermediate supports, in x order
   std::optional<AutoSpanCount> auto_spans;          // set when the run chose the span count
+  // `ends: absorbing`: the wires' end supports become absorbing ends in a dynamic run, after
+  // shape finding (model/catenary_ends.hpp); the model holds them as supports until then.
+  bool absorbing_ends = false;
 };
 
 }  // namespace catena::model

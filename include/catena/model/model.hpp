@@ -64,6 +64,14 @@ struct Surface {
   std::vector<int> nodes;       // node indices, ascending
 };
 
+// The end of a cable line cut from a longer line (elements/absorbing_end.hpp): held where
+// it is in statics; in a dynamic run free, pulled by its force at the run's initial state
+// and by dashpots matched to the line's wave impedances, so that waves leave the model.
+struct AbsorbingEnd {
+  int node = 0;     // model node index: the end of exactly one element, a cable
+  int element = 0;  // that element's index
+};
+
 // Linear spring (and dashpot) from a node's position to ground.
 struct ElasticSupport {
   int node = 0;
@@ -431,6 +439,7 @@ struct Model {
   std::vector<ElementDesc> elements;
   std::vector<Support> supports;
   std::vector<ElasticSupport> elastic_supports;
+  std::vector<AbsorbingEnd> absorbing_ends;
   std::vector<Surface> surfaces;
   std::vector<NodalLoad> nodal_loads;
   std::vector<PointMass> point_masses;

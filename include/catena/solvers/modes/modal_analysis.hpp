@@ -30,7 +30,8 @@ struct Modes {
   int n_iterations = 0;          // Krylov–Schur restarts
 };
 
-// Throws InputError when the model has Lagrange multipliers (modes are of K and M alone):
+// Throws InputError when the model has Lagrange multipliers (modes are of K and M alone)
+// or absorbing ends (dashpots, which undamped modes leave out, on nodes free without them):
 // callers check before the shape finding and static solve that precede the modes.
 void refuse_constraints_for_modes(const model::Model& model);
 

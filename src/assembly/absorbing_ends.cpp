@@ -1,0 +1,75 @@
+// SecondOrderSystem, part: the law of each absorbing end from the run's initial state (the
+// class: include/catena/assembly/second_order_system.hpp).
+#include <sstream>
+#include <variant>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/assembly/second_order_system.hpp"
+#include "catena/core/error.hpp"
+#include "catena/couplings/element_coupling.hpp"
+#include "catena/elements/absorbing_end.hpp"
+#include "catena/model/unknown_kinds.hpp"
+
+namespace catena::assembly {
+
+void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
+  const model::Model& m = *model_;
+  const std::size_t n = m.absorbing_ends.size();
+  if (n == 0) return;
+  // f(q0) without the absorbing ends: at an end node, the force the line beyond must supply.
+  std::vector<std::size_t> others;
+  for (std::size_t i = 0; i < couplings_.size(); ++i) {
+    const auto* e = dynamic_cast<const couplings::ElementCoupling*>(couplings_[i].get());
+    if (!e || e->origin() != couplings::ElementOrigin::absorbing_end) others.push_back(i);
+  }
+  VecHandle f = create_vector();
+  sum_forces(EvalPoint{q0, nullptr, {}, 0.0}, others, f.get(), nullptr);
+  std::vector<double> local(3 * n, 0.0), end_force(3 * n, 0.0);
+  {
+    const PetscScalar* values = nullptr;
+    CATENA_PETSC(VecGetArrayRead(f.get(), &values));
+    for (std::size_t i = 0; i < n; ++i) {
+      const int node = m.absorbing_ends[i].node;
+      const int position = model::kind_info(dofs_.node_kind(node)).position;
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt g = dofs_.global_dof(node, position + d);
+        if (g >= dofs_.first_owned() && g < dofs_.first_owned() + dofs_.n_owned())
+          local[3 * i + static_cast<std::size_t>(d)] = values[g - dofs_.first_owned()];
+      }
+    }
+    CATENA_PETSC(VecRestoreArrayRead(f.get(), &values));
+  }
+  MPI_Allreduce(local.data(), end_force.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+
+  std::vector<elements::AbsorbingEndLaw> laws;
+  for (std::size_t i = 0; i < n; ++i) {
+    const model::AbsorbingEnd& a = m.absorbing_ends[i];
+    const Vec3 F(end_force[3 * i], end_force[3 * i + 1], end_force[3 * i + 2]);
+    // Outwards: from the element's other node to this one (reference positions).
+    const model::ElementDesc& element = m.elements[static_cast<std::size_t>(a.element)];
+    const int other = element.nodes[0] == a.node ? element.nodes[1] : element.nodes[0];
+    const Vec3 outwards = (m.nodes[static_cast<std::size_t>(a.node)].position -
+                           m.nodes[static_cast<std::size_t>(other)].position)
+                              .normalized();
+    if (!(F.dot(outwards) > 0.0)) {
+      std::ostringstream os;
+      os << "absorbing end at node " << m.nodes[static_cast<std::size_t>(a.node)].id
+         << ": its line is not in tension there at the run's start (the force the line beyond "
+            "would have to supply is ["
+         << F[0] << ", " << F[1] << ", " << F[2]
+         << "] N, not outwards along the line); an absorbing end needs a taut line";
+      throw NumericalError(os.str());
+    }
+    const auto& cable = std::get<model::CableProps>(element.props);
+    laws.push_back(elements::cable_end_law(F, cable.EA, cable.mass_per_length));
+  }
+  for (auto& c : couplings_) {
+    auto* e = dynamic_cast<couplings::ElementCoupling*>(c.get());
+    if (e && e->origin() == couplings::ElementOrigin::absorbing_end)
+      e->replace_element(
+          std::make_unique<elements::AbsorbingEnd>(laws[static_cast<std::size_t>(e->source())]));
+  }
+}
+
+}  // namespace catena::assembly

@@ -1,0 +1,34 @@
+#include "catena/elements/absorbing_end.hpp"
+
+#include <cmath>
+
+namespace catena::elements {
+
+AbsorbingEndLaw cable_end_law(const Vec3& end_force, double EA, double mass_per_length) {
+  const double T = end_force.norm();
+  const Vec3 t = end_force / T;
+  const double stretch = 1.0 + T / EA;
+  const double axial = std::sqrt(EA * mass_per_length);
+  const double transverse = std::sqrt(T * mass_per_length / stretch);
+  const Mat3 along = t * t.transpose();
+  return {end_force, axial * along + transverse * (Mat3::Identity() - along)};
+}
+
+void AbsorbingEnd::evaluate(const LocalState& s, Request r, LocalOutput out) const {
+  if (r.force) {
+    Vec3 f = -law_.force;
+    if (!s.v.empty()) f += law_.damping * Vec3(s.v[0], s.v[1], s.v[2]);
+    for (int k = 0; k < 3; ++k) out.f[k] = f[k];
+  }
+  if (r.stiffness)
+    for (int k = 0; k < 9; ++k) out.K[k] = 0.0;
+  if (r.damping)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) out.C[i * 3 + j] = law_.damping(i, j);
+}
+
+void AbsorbingEnd::mass(double* M) const {
+  for (int k = 0; k < 9; ++k) M[k] = 0.0;
+}
+
+}  // namespace catena::elements
