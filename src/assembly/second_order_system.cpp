@@ -9,7 +9,9 @@
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/couplings/constraint_coupling.hpp"
+#include "catena/couplings/element_coupling.hpp"
 #include "catena/couplings/model_couplings.hpp"
+#include "catena/couplings/slider_constraint.hpp"
 #include "catena/model/supported_nodes.hpp"
 #include "local_array.hpp"
 #include "visit_forces.hpp"
@@ -98,6 +100,16 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   offset_.push_back(0);
   for (const auto& c : couplings_) {
     bool linked = false;
+    // Whether the coupling enters a support reaction (StateView::reactions): its force on a
+    // supported node's fixed or linked DOF, or the force of a support-like element (an
+    // elastic support, a surface, an absorbing end) on its node, or a slider's, whose
+    // active DOFs move along its path. Elements at a supported node whose DOFs are all free
+    // (a pipe on a surface) add nothing there and are not evaluated for it.
+    bool reacts = dynamic_cast<const couplings::SliderConstraint*>(c.get()) != nullptr;
+    if (const auto* e = dynamic_cast<const couplings::ElementCoupling*>(c.get()))
+      reacts = reacts || e->origin() == couplings::ElementOrigin::elastic_support ||
+               e->origin() == couplings::ElementOrigin::surface_contact ||
+               e->origin() == couplings::ElementOrigin::absorbing_end;
     for (const couplings::DofKey& key : c->dofs()) {
       PetscInt local = -1, global = -1;
       double fixed = 0.0, coefficient = 1.0;
@@ -112,7 +124,9 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
         local = dofs_.local_dof(key.index, key.component);
         global = dofs_.global_dof(key.index, key.component);
         coefficient = dofs_.coefficient(key.index, key.component);
-        linked = linked || dofs_.linked(key.index, key.component);
+        const bool linked_dof = dofs_.linked(key.index, key.component);
+        linked = linked || linked_dof;
+        reacts = reacts || (supported[key.index] && (global < 0 || linked_dof));
       }
       CATENA_ASSERT(global < 0 || local >= 0, "a coupling's free DOF is on this rank");
       local_index_.push_back(local);
@@ -125,7 +139,8 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     acts_on_all_.push_back(c->acts_on_all() ? 1 : 0);
     if (c->patch_role() == couplings::PatchRole::at_patch_time)
       timed_.push_back(acts_on_all_.size() - 1);
-    if (std::any_of(c->dofs().begin(), c->dofs().end(), [&](const couplings::DofKey& key) {
+    if (reacts &&
+        std::any_of(c->dofs().begin(), c->dofs().end(), [&](const couplings::DofKey& key) {
           return key.kind != couplings::DofKey::Kind::multiplier && supported[key.index];
         }))
       at_supports_.push_back(acts_on_all_.size() - 1);

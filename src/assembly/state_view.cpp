@@ -109,19 +109,40 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   const SecondOrderSystem& sys = system_;
   const model::Model& m = *sys.model_;
   const std::vector<int> supported = model::supported_nodes(m);  // replicated, ascending
-  // The node's row, or −1 for a node that is no support (a neighbour of one, held only in a
-  // 2D line's plane: its reaction is not reported).
-  auto slot = [&](int node) -> std::ptrdiff_t {
-    const auto at = std::lower_bound(supported.begin(), supported.end(), node);
-    return at != supported.end() && *at == node ? at - supported.begin() : -1;
-  };
+  // The sums live with the supported nodes' owners: kBlock rows per owned supported node, in
+  // ascending node order on each rank, the ranks' blocks in rank order. Each rank adds what
+  // its couplings put on a node (another rank's too: a ghost node's elements), and only
+  // those parts cross ranks (PETSc's assembly), not every node's block.
+  const int rank = mpi_rank(sys.comm_), size = mpi_size(sys.comm_);
+  std::vector<PetscInt> per_rank(static_cast<size_t>(size), 0);
+  for (const int node : supported) ++per_rank[static_cast<size_t>(sys.partition_.node_owner[node])];
+  std::vector<PetscInt> first_row(static_cast<size_t>(size) + 1, 0);
+  for (int r = 0; r < size; ++r)
+    first_row[static_cast<size_t>(r) + 1] =
+        first_row[static_cast<size_t>(r)] +
+        static_cast<PetscInt>(kBlock) * per_rank[static_cast<size_t>(r)];
+  // The node's first row, or −1 for a node that is no support (a neighbour of one, held
+  // only in a 2D line's plane: its reaction is not reported).
+  std::vector<PetscInt> row_of(m.nodes.size(), -1);
+  {
+    std::vector<PetscInt> next(first_row.begin(), first_row.end() - 1);
+    for (const int node : supported) {
+      PetscInt& at = next[static_cast<size_t>(sys.partition_.node_owner[node])];
+      row_of[static_cast<size_t>(node)] = at;
+      at += static_cast<PetscInt>(kBlock);
+    }
+  }
+  VecHandle sums;
+  CATENA_PETSC(VecCreateMPI(
+      sys.comm_, first_row[static_cast<size_t>(rank) + 1] - first_row[static_cast<size_t>(rank)],
+      PETSC_DETERMINE, sums.out()));
 
-  // Partial sums of the support force on each nodal DOF, completed by an allreduce. The
-  // element couplings carry it: R = f_int − f_ext at a fixed DOF, and an elastic support
-  // pulls its node back. So does a slider's constraint, the one constraint that acts on
-  // fixed DOFs (the supported nodes of its path): the wheel load a trolley next to a mast
-  // puts on it.
-  std::vector<double> partial(kBlock * supported.size(), 0.0), total(partial.size(), 0.0);
+  // The element couplings carry the support force: R = f_int − f_ext at a fixed DOF, and
+  // an elastic support pulls its node back. So does a slider's constraint, the one
+  // constraint that acts on fixed DOFs (the supported nodes of its path): the wheel load a
+  // trolley next to a mast puts on it.
+  std::vector<PetscInt> rows;
+  std::vector<PetscScalar> values;
   sys.visit_forces(
       p,
       [&](size_t i, const SecondOrderSystem::ActiveDofs& dofs, std::span<const double> f_el) {
@@ -134,33 +155,42 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           const couplings::DofKey& key = keys[dofs.position(k)];
           if (key.kind == couplings::DofKey::Kind::multiplier) continue;
           const int node = key.index, comp = key.component;
-          const std::ptrdiff_t row = slot(node);
+          const PetscInt row = row_of[static_cast<size_t>(node)];
           if (row < 0) continue;
-          double& entry = partial[kBlock * static_cast<size_t>(row) + static_cast<size_t>(comp)];
           // A linked slope's force is a reaction too: its part along the tangent, the
           // stretch's equation, sums to zero over the node's couplings. An elastic support's,
-          // a surface's or an absorbing end's force is a reaction where the DOF is free; at a fixed
-          // DOF the support's reaction already balances it, and the two are one (nothing added).
+          // a surface's or an absorbing end's force is a reaction where the DOF is free;
+          // at a fixed DOF the support's reaction already balances it, and the two are one
+          // (nothing added).
           const bool fixed = dofs.global[k] < 0 || sys.dofs_.linked(node, comp);
+          double value = 0.0;
           if (e && (e->origin() == ElementOrigin::elastic_support ||
                     e->origin() == ElementOrigin::surface_contact ||
                     e->origin() == ElementOrigin::absorbing_end)) {
-            if (!fixed) entry -= f_el[k];
+            if (!fixed) value = -f_el[k];
           } else if (fixed) {
-            entry += f_el[k];
+            value = f_el[k];
           }
+          if (value == 0.0) continue;
+          rows.push_back(row + comp);
+          values.push_back(value);
         }
       },
-      &sys.at_supports_);  // only the couplings at supported nodes contribute
-  MPI_Allreduce(partial.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM,
-                sys.comm_);
+      &sys.at_supports_);  // only the couplings that enter a reaction
+  if (!rows.empty())
+    CATENA_PETSC(VecSetValues(sums.get(), static_cast<PetscInt>(rows.size()), rows.data(),
+                              values.data(), ADD_VALUES));
+  CATENA_PETSC(VecAssemblyBegin(sums.get()));
+  CATENA_PETSC(VecAssemblyEnd(sums.get()));
 
   Reactions r;
-  const int rank = mpi_rank(sys.comm_);
   const LocalArrayRead q(sys.q_work_.get());
+  const PetscScalar* total = nullptr;
+  CATENA_PETSC(VecGetArrayRead(sums.get(), &total));
   for (int node : supported) {
     if (sys.partition_.node_owner[node] != rank) continue;
-    const double* R = &total[kBlock * static_cast<size_t>(slot(node))];
+    const double* R =
+        total + (row_of[static_cast<size_t>(node)] - first_row[static_cast<size_t>(rank)]);
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(node));
     r.nodes.push_back(node);
     for (int d = 0; d < 3; ++d) r.force.push_back(R[kind.position + d]);
@@ -178,6 +208,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
     }
     for (int d = 0; d < 3; ++d) r.moment.push_back(moment[d]);
   }
+  CATENA_PETSC(VecRestoreArrayRead(sums.get(), &total));
   return r;
 }
 

@@ -255,7 +255,8 @@ class SecondOrderSystem {
   std::vector<size_t> offset_;
   std::vector<char> acts_on_all_;    // per coupling: Coupling::acts_on_all(), cached
   std::vector<size_t> timed_;        // the couplings with PatchRole::at_patch_time
-  std::vector<size_t> at_supports_;  // the couplings acting on a supported node
+  // The couplings that enter a supported node's reaction (the constructor says which).
+  std::vector<size_t> at_supports_;
   std::vector<size_t> evaluated_;    // the couplings evaluated one by one: all but linear_'s
   std::vector<size_t> constraints_;  // the constraint couplings (ConstraintCoupling)
   std::unique_ptr<LinearBlock> linear_;
