@@ -253,8 +253,8 @@ class SecondOrderSystem {
   DofMap dofs_;
   // Per coupling: offset into the flat per-DOF arrays below (its dofs() resolved).
   std::vector<size_t> offset_;
-  std::vector<char> acts_on_all_;    // per coupling: Coupling::acts_on_all(), cached
-  std::vector<size_t> timed_;        // the couplings with PatchRole::at_patch_time
+  std::vector<char> acts_on_all_;  // per coupling: Coupling::acts_on_all(), cached
+  std::vector<size_t> timed_;      // the couplings with PatchRole::at_patch_time
   // The couplings that enter a supported node's reaction (the constructor says which).
   std::vector<size_t> at_supports_;
   std::vector<size_t> evaluated_;    // the couplings evaluated one by one: all but linear_'s
