@@ -6,21 +6,38 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
 #include "catena/core/error.hpp"
+#include "catena/couplings/bilateral_contact.hpp"
 #include "catena/couplings/element_coupling.hpp"
+#include "catena/couplings/moving_load.hpp"
+#include "catena/couplings/pantograph_contact.hpp"
+#include "catena/couplings/slider_constraint.hpp"
 #include "catena/elements/absorbing_end.hpp"
 #include "catena/model/unknown_kinds.hpp"
 
 namespace catena::assembly {
+namespace {
+// The least strain T/EA of a line an absorbing end accepts.
+constexpr double kTautStrain = 1.0e-7;
+}  // namespace
 
 void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
   const model::Model& m = *model_;
   const std::size_t n = m.absorbing_ends.size();
   if (n == 0) return;
-  // f(q0) without the absorbing ends: at an end node, the force the line beyond must supply.
+  // f(q0) of the structure at an end node: the force the line beyond must supply. Without
+  // the absorbing ends themselves, and without what moves along the line (a pantograph's
+  // contact, a moving load, a slider): a pantograph standing on the end element at the
+  // start is not part of the line's force, and would otherwise stay in it when it leaves.
   std::vector<std::size_t> others;
   for (std::size_t i = 0; i < couplings_.size(); ++i) {
-    const auto* e = dynamic_cast<const couplings::ElementCoupling*>(couplings_[i].get());
-    if (!e || e->origin() != couplings::ElementOrigin::absorbing_end) others.push_back(i);
+    const couplings::Coupling* c = couplings_[i].get();
+    const auto* e = dynamic_cast<const couplings::ElementCoupling*>(c);
+    const bool moving = dynamic_cast<const couplings::PantographContact*>(c) ||
+                        dynamic_cast<const couplings::MovingLoad*>(c) ||
+                        dynamic_cast<const couplings::BilateralContact*>(c) ||
+                        dynamic_cast<const couplings::SliderConstraint*>(c);
+    if (!moving && (!e || e->origin() != couplings::ElementOrigin::absorbing_end))
+      others.push_back(i);
   }
   VecHandle f = create_vector();
   sum_forces(EvalPoint{q0, nullptr, {}, 0.0}, others, f.get(), nullptr);
@@ -52,16 +69,19 @@ void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
     const Vec3 outwards = (m.nodes[static_cast<std::size_t>(a.node)].position -
                            m.nodes[static_cast<std::size_t>(other)].position)
                               .normalized();
-    if (!(F.dot(outwards) > 0.0)) {
+    // Taut: pulled outwards with at least kTautStrain·EA (1.8 N on a contact wire). Below,
+    // the direction of F is round-off and the transverse impedance √(T m') nearly nothing.
+    const auto& cable = std::get<model::CableProps>(element.props);
+    if (!(F.dot(outwards) > kTautStrain * cable.EA)) {
       std::ostringstream os;
       os << "absorbing end at node " << m.nodes[static_cast<std::size_t>(a.node)].id
-         << ": its line is not in tension there at the run's start (the force the line beyond "
+         << ": its line is not taut there at the run's start (the force the line beyond "
             "would have to supply is ["
-         << F[0] << ", " << F[1] << ", " << F[2]
-         << "] N, not outwards along the line); an absorbing end needs a taut line";
+         << F[0] << ", " << F[1] << ", " << F[2] << "] N; it must pull outwards along the line "
+         << "with at least " << kTautStrain * cable.EA
+         << " N, 1e-7 of EA); an absorbing end needs a taut line";
       throw NumericalError(os.str());
     }
-    const auto& cable = std::get<model::CableProps>(element.props);
     laws.push_back(elements::cable_end_law(F, cable.EA, cable.mass_per_length));
   }
   for (auto& c : couplings_) {

@@ -297,8 +297,10 @@ void read_dynamics(const Field& scene, Model& model) {
       !model.absorbing_ends.empty() || (model.catenary && model.catenary->absorbing_ends);
   if (absorbing && model.analysis != AnalysisType::dynamic)
     analysis.child("type").fail(
-        "absorbing ends act in dynamic runs only (statics would hold them where they are: use "
-        "supports); run analysis.type: dynamic, whose static start holds them");
+        std::string("absorbing ends act in dynamic runs only (statics would hold them where "
+                    "they are: use ") +
+        (model.absorbing_ends.empty() ? "catenary.ends: anchored" : "supports") +
+        "); run analysis.type: dynamic, whose static start holds them");
   if (model.analysis != AnalysisType::dynamic) {
     const std::string why = " applies to analysis.type: dynamic only";
     fail_if_present(analysis.child("duration"), "'duration'" + why);

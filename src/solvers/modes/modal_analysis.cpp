@@ -158,12 +158,12 @@ void refuse_constraints_for_modes(const model::Model& model) {
                      "rigid bodies' frames, joints, sliders, bilateral contacts) are not "
                      "computed: their mass matrix is singular in the multipliers. Hold the "
                      "nodes with supports ('fix') instead");
-  if (!model.absorbing_ends.empty())
+  if (!model.absorbing_ends.empty() || (model.catenary && model.catenary->absorbing_ends))
     throw InputError({model.source_file, 0, "absorbing_ends"},
                      "modes of a scene with absorbing ends are not computed: an absorbing end "
                      "is a dashpot, which undamped modes leave out, and its node is free "
                      "without it. For the modes of the cut line, hold its ends with supports "
-                     "('fix: pinned') instead");
+                     "('fix: pinned'; a catenary: ends: anchored) instead");
 }
 
 Modes compute_modes(assembly::SecondOrderSystem& system, Vec q, const ModalOptions& options) {

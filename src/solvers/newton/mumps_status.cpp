@@ -105,7 +105,11 @@ void enable_mumps_exact_inertia(const std::string& prefix) {
   set_default_option(prefix, "mat_mumps_icntl_13", "1");
 }
 
-void scale_mumps_at_each_factorisation(KSP ksp, const std::string& prefix) {
+void scale_mumps_at_each_factorisation(const std::string& prefix) {
+  set_default_option(prefix, "mat_mumps_icntl_8", "7");
+}
+
+void scale_mumps_factor_at_each_factorisation(KSP ksp, const std::string& prefix) {
   const std::string option = "-" + prefix + "mat_mumps_icntl_8";
   PetscBool set = PETSC_FALSE;
   CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, option.c_str(), &set));
@@ -120,7 +124,11 @@ void scale_mumps_at_each_factorisation(KSP ksp, const std::string& prefix) {
   CATENA_PETSC(PCFactorGetMatSolverType(pc, &type));
   if (!type || std::strcmp(type, MATSOLVERMUMPS) != 0) return;
   // The factor made now keeps the setting for the PC's later factorisations (as in
-  // enlarge_mumps_workspace).
+  // enlarge_mumps_workspace). It takes its options prefix from the matrix, which other
+  // solvers may share (the stability check's): set to this solver's first.
+  Mat A = nullptr, P = nullptr;
+  CATENA_PETSC(KSPGetOperators(ksp, &A, &P));
+  CATENA_PETSC(MatSetOptionsPrefixFactor(P, prefix.c_str()));
   CATENA_PETSC(PCFactorSetUpMatSolverType(pc));
   Mat factor = nullptr;
   CATENA_PETSC(PCFactorGetMatrix(pc, &factor));

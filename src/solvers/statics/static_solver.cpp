@@ -122,18 +122,18 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
     KSP ksp = nullptr;
     CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
     CATENA_PETSC(KSPSetOperators(ksp, s.jacobian.get(), s.jacobian.get()));
-    scale_mumps_at_each_factorisation(ksp, "static_");
+    scale_mumps_factor_at_each_factorisation(ksp, "static_");
   }
   CATENA_PETSC(SNESGetTolerances(s.snes.get(), &s.base_atol, &s.base_rtol, &s.base_stol,
                                  &s.base_max_it, &s.base_max_f));
 
   enable_mumps_exact_inertia("static_stability_");
   discard_mumps_factors("static_stability_");
+  // Its first tangent is that of the unloaded structure (every accepted state is factored),
+  // with or without bodies.
+  scale_mumps_at_each_factorisation("static_stability_");
   s.stability_ksp =
       create_direct_ksp(system.comm(), "static_stability_", JacobianSymmetry::symmetric);
-  // Its first tangent is that of the unloaded structure (every accepted state is factored).
-  CATENA_PETSC(KSPSetOperators(s.stability_ksp.get(), s.jacobian.get(), s.jacobian.get()));
-  scale_mumps_at_each_factorisation(s.stability_ksp.get(), "static_stability_");
 }
 
 StaticSolver::~StaticSolver() = default;
@@ -289,6 +289,7 @@ StaticReport StaticSolver::solve(Vec q, Vec guess) {
     const Attempt tried = attempt(target, tau_end, q, q_trial.get(), report);
     const int its = tried.iterations;
     if (tried.accepted) {
+      last_rejection_unstable = false;
       CATENA_PETSC(VecCopy(q_trial.get(), q));
       tau = target;
       ++report.n_load_steps;
@@ -341,8 +342,8 @@ StaticReport StaticSolver::solve(Vec q, Vec guess) {
             "unstable there (a limit or bifurcation point: a column buckling, a body pushed "
             "against a surface or a support so that it would tip or slide, which statics, "
             "with no friction at rest, cannot hold). Shorter load steps cannot pass it; "
-            "support the structure where it would move, or start the dynamic run from the "
-            "reference (analysis.initial.from: reference).";
+            "support the structure where it would move (a dynamic run may instead start "
+            "from the reference: analysis.initial.from: reference).";
     else if (singular)
       os << "The stiffness matrix at the last equilibrium is singular (" << tangent.null_pivots
          << " null pivots): the structure is probably a mechanism; check its supports.";

@@ -58,17 +58,23 @@ void enable_mumps_null_pivot_detection(const std::string& prefix);
 // for the solver with options prefix `prefix`, unless the user set it.
 void enable_mumps_exact_inertia(const std::string& prefix);
 
-// Collective on ksp, whose operators must be set. If ksp factors with MUMPS, makes MUMPS
-// compute its row and column scaling from each matrix it factors (ICNTL(8) = 7, iterative
-// scaling at factorisation), unless the user set -<prefix>mat_mumps_icntl_8. By default
-// (ICNTL(8) = 77) MUMPS may compute the scaling of a symmetric indefinite matrix in its
-// analysis, from the first matrix's values, and PETSc analyses once per nonzero pattern:
-// matrices that change in kind after the first keep a scaling that no longer fits. The
-// static load path with rigid bodies does so: its first tangent is that of the unloaded
-// structure, where a body's rotations have no stiffness at all (a pendulum hung 5 cm below
-// its hinge came out with 22 null pivots of 23 at full load, and a crane's Newton stalled).
-// Set on ksp's factor, not in the options database, which would outlive this solver.
-void scale_mumps_at_each_factorisation(KSP ksp, const std::string& prefix);
+// Not collective. Makes MUMPS compute its row and column scaling from each matrix it
+// factors (ICNTL(8) = 7, iterative scaling at factorisation) for the solver with options
+// prefix `prefix`, unless the user set it. By default (ICNTL(8) = 77) MUMPS may compute the
+// scaling of a symmetric indefinite matrix in its analysis, from the first matrix's
+// values, and PETSc analyses once per nonzero pattern: matrices that change in kind after
+// the first keep a scaling that no longer fits. The static load path with rigid bodies
+// does so: its first tangent is that of the unloaded structure, where a body's rotations
+// have no stiffness at all (a pendulum hung 5 cm below its hinge came out with 22 null
+// pivots of 23 at full load, and a crane's Newton stalled). In the options database, as
+// the other defaults here: for a prefix whose every solver wants it.
+void scale_mumps_at_each_factorisation(const std::string& prefix);
+
+// Collective on ksp, whose operators must be set. The same for ksp alone, on its factor
+// (made now, with `prefix` as its options prefix, and kept for the PC's later
+// factorisations), for a prefix whose other solvers do not want it: Newton's static solve
+// only when the scene has rigid bodies.
+void scale_mumps_factor_at_each_factorisation(KSP ksp, const std::string& prefix);
 
 // Not collective. For a factorisation read only for its statistics (the inertia INFOG(12),
 // the null pivots INFOG(28)), never solved with: MUMPS discards the factors as it computes
