@@ -10,7 +10,10 @@ m' = 1.35 kg/m, EA = 1.8e7 N, driven at its left end, an absorbing end at its ri
   pinned:     the same wire pinned at the right: a standing wave (|r| near 1), the contrast.
   axial:      driven along the wire at 0.1 mm, 200 Hz: |r| the same way from the axial motion.
   NP2:        the transverse run on 2 ranks: the same motion.
-Usage: check_absorbing_end.py TRANSVERSE.h5 PINNED.h5 AXIAL.h5 NP2.h5
+  RESTARTED:  the transverse run stopped at 1 s and continued with --restart (which solves
+              the static start again for the end's force): the same motion.
+  CUT, CUT2:  a catenary with catenary.ends: absorbing on 1 and 2 ranks: the same motion.
+Usage: check_absorbing_end.py TRANSVERSE.h5 PINNED.h5 AXIAL.h5 NP2.h5 RESTARTED.h5 CUT.h5 CUT2.h5
 """
 import math
 import sys
@@ -76,5 +79,14 @@ check(r_ax < 1e-3, f"axial: reflection |r| = {r_ax:.2e} (< 1e-3)")
 _, motion_np2, _ = read(sys.argv[4])
 gap = np.abs(motion_np2 - motion).max()
 check(gap < 1e-9, f"np 2 against np 1: largest difference {gap:.1e} m (< 1e-9)")
+
+t_restarted, motion_restarted, _ = read(sys.argv[5])
+gap = np.abs(motion_restarted - motion).max() if motion_restarted.shape == motion.shape else np.inf
+check(gap < 1e-9, f"restarted at 1 s against the straight run: largest difference {gap:.1e} m")
+
+_, cut, _ = read(sys.argv[6])
+_, cut2, _ = read(sys.argv[7])
+gap = np.abs(cut2 - cut).max()
+check(gap < 1e-9, f"cut catenary, np 2 against np 1: largest difference {gap:.1e} m (< 1e-9)")
 
 sys.exit(1 if failures else 0)
