@@ -107,9 +107,7 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     // (a pipe on a surface) add nothing there and are not evaluated for it.
     bool reacts = dynamic_cast<const couplings::SliderConstraint*>(c.get()) != nullptr;
     if (const auto* e = dynamic_cast<const couplings::ElementCoupling*>(c.get()))
-      reacts = reacts || e->origin() == couplings::ElementOrigin::elastic_support ||
-               e->origin() == couplings::ElementOrigin::surface_contact ||
-               e->origin() == couplings::ElementOrigin::absorbing_end;
+      reacts = reacts || couplings::acts_as_support(e->origin());
     for (const couplings::DofKey& key : c->dofs()) {
       PetscInt local = -1, global = -1;
       double fixed = 0.0, coefficient = 1.0;

@@ -114,28 +114,31 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   // its couplings put on a node (another rank's too: a ghost node's elements), and only
   // those parts cross ranks (PETSc's assembly), not every node's block.
   const int rank = mpi_rank(sys.comm_), size = mpi_size(sys.comm_);
-  std::vector<PetscInt> per_rank(static_cast<size_t>(size), 0);
-  for (const int node : supported) ++per_rank[static_cast<size_t>(sys.partition_.node_owner[node])];
+  const auto owner = [&](int node) { return static_cast<size_t>(sys.partition_.node_owner[node]); };
   std::vector<PetscInt> first_row(static_cast<size_t>(size) + 1, 0);
-  for (int r = 0; r < size; ++r)
-    first_row[static_cast<size_t>(r) + 1] =
-        first_row[static_cast<size_t>(r)] +
-        static_cast<PetscInt>(kBlock) * per_rank[static_cast<size_t>(r)];
-  // The node's first row, or −1 for a node that is no support (a neighbour of one, held
-  // only in a 2D line's plane: its reaction is not reported).
-  std::vector<PetscInt> row_of(m.nodes.size(), -1);
+  for (const int node : supported) first_row[owner(node) + 1] += static_cast<PetscInt>(kBlock);
+  for (size_t r = 1; r < first_row.size(); ++r) first_row[r] += first_row[r - 1];
+  // Per supported node (in `supported`'s order) its first row.
+  std::vector<PetscInt> node_row(supported.size());
   {
     std::vector<PetscInt> next(first_row.begin(), first_row.end() - 1);
-    for (const int node : supported) {
-      PetscInt& at = next[static_cast<size_t>(sys.partition_.node_owner[node])];
-      row_of[static_cast<size_t>(node)] = at;
-      at += static_cast<PetscInt>(kBlock);
+    for (size_t i = 0; i < supported.size(); ++i) {
+      node_row[i] = next[owner(supported[i])];
+      next[owner(supported[i])] += static_cast<PetscInt>(kBlock);
     }
   }
+  // The node's first row, or −1 for a node that is no support (a neighbour of one, held
+  // only in a 2D line's plane: its reaction is not reported).
+  const auto row_of = [&](int node) -> PetscInt {
+    const auto at = std::lower_bound(supported.begin(), supported.end(), node);
+    return at != supported.end() && *at == node
+               ? node_row[static_cast<size_t>(at - supported.begin())]
+               : -1;
+  };
+  const PetscInt first_owned_row = first_row[static_cast<size_t>(rank)];
   VecHandle sums;
-  CATENA_PETSC(VecCreateMPI(
-      sys.comm_, first_row[static_cast<size_t>(rank) + 1] - first_row[static_cast<size_t>(rank)],
-      PETSC_DETERMINE, sums.out()));
+  CATENA_PETSC(VecCreateMPI(sys.comm_, first_row[static_cast<size_t>(rank) + 1] - first_owned_row,
+                            PETSC_DETERMINE, sums.out()));
 
   // The element couplings carry the support force: R = f_int − f_ext at a fixed DOF, and
   // an elastic support pulls its node back. So does a slider's constraint, the one
@@ -155,7 +158,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           const couplings::DofKey& key = keys[dofs.position(k)];
           if (key.kind == couplings::DofKey::Kind::multiplier) continue;
           const int node = key.index, comp = key.component;
-          const PetscInt row = row_of[static_cast<size_t>(node)];
+          const PetscInt row = row_of(node);
           if (row < 0) continue;
           // A linked slope's force is a reaction too: its part along the tangent, the
           // stretch's equation, sums to zero over the node's couplings. An elastic support's,
@@ -164,9 +167,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
           // (nothing added).
           const bool fixed = dofs.global[k] < 0 || sys.dofs_.linked(node, comp);
           double value = 0.0;
-          if (e && (e->origin() == ElementOrigin::elastic_support ||
-                    e->origin() == ElementOrigin::surface_contact ||
-                    e->origin() == ElementOrigin::absorbing_end)) {
+          if (e && couplings::acts_as_support(e->origin())) {
             if (!fixed) value = -f_el[k];
           } else if (fixed) {
             value = f_el[k];
@@ -187,10 +188,10 @@ Reactions StateView::reactions(const EvalPoint& p) const {
   const LocalArrayRead q(sys.q_work_.get());
   const PetscScalar* total = nullptr;
   CATENA_PETSC(VecGetArrayRead(sums.get(), &total));
-  for (int node : supported) {
+  for (size_t i = 0; i < supported.size(); ++i) {
+    const int node = supported[i];
     if (sys.partition_.node_owner[node] != rank) continue;
-    const double* R =
-        total + (row_of[static_cast<size_t>(node)] - first_row[static_cast<size_t>(rank)]);
+    const double* R = total + (node_row[i] - first_owned_row);
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(node));
     r.nodes.push_back(node);
     for (int d = 0; d < 3; ++d) r.force.push_back(R[kind.position + d]);

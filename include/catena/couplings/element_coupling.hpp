@@ -21,6 +21,13 @@ enum class ElementOrigin {
   absorbing_end
 };
 
+// Whether an item of this origin acts as a support: its force on its node is a reaction
+// (an elastic support, a surface, an absorbing end; StateView::reactions).
+inline bool acts_as_support(ElementOrigin origin) {
+  return origin == ElementOrigin::elastic_support || origin == ElementOrigin::surface_contact ||
+         origin == ElementOrigin::absorbing_end;
+}
+
 class ElementCoupling final : public Coupling {
  public:
   // `source` indexes the model vector named by `origin`.

@@ -9,17 +9,26 @@
 
 namespace catena::solvers {
 
+namespace {
+// Not collective. Whether pc factors with MUMPS (LU or Cholesky), and if so whether Cholesky.
+bool factors_with_mumps(PC pc, bool* cholesky = nullptr) {
+  PetscBool is_lu = PETSC_FALSE, is_cholesky = PETSC_FALSE;
+  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &is_lu));
+  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &is_cholesky));
+  if (cholesky) *cholesky = is_cholesky;
+  if (!is_lu && !is_cholesky) return false;
+  MatSolverType type = nullptr;
+  CATENA_PETSC(PCFactorGetMatSolverType(pc, &type));
+  return type && std::strcmp(type, MATSOLVERMUMPS) == 0;
+}
+}  // namespace
+
 MumpsStatus mumps_status(KSP ksp) {
   MumpsStatus status;
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp, &pc));
-  PetscBool is_lu = PETSC_FALSE, is_cholesky = PETSC_FALSE;
-  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &is_lu));
-  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &is_cholesky));
-  if (!is_lu && !is_cholesky) return status;
-  MatSolverType type = nullptr;
-  CATENA_PETSC(PCFactorGetMatSolverType(pc, &type));
-  if (!type || std::strcmp(type, MATSOLVERMUMPS) != 0) return status;
+  bool is_cholesky = false;
+  if (!factors_with_mumps(pc, &is_cholesky)) return status;
   Mat factor = nullptr;
   CATENA_PETSC(PCFactorGetMatrix(pc, &factor));
   PetscInt v1 = 0, v2 = 0, v12 = 0, v28 = 0;
@@ -116,13 +125,7 @@ void scale_mumps_factor_at_each_factorisation(KSP ksp, const std::string& prefix
   if (set) return;
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp, &pc));
-  PetscBool is_lu = PETSC_FALSE, is_cholesky = PETSC_FALSE;
-  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &is_lu));
-  CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &is_cholesky));
-  if (!is_lu && !is_cholesky) return;
-  MatSolverType type = nullptr;
-  CATENA_PETSC(PCFactorGetMatSolverType(pc, &type));
-  if (!type || std::strcmp(type, MATSOLVERMUMPS) != 0) return;
+  if (!factors_with_mumps(pc)) return;
   // The factor made now keeps the setting for the PC's later factorisations (as in
   // enlarge_mumps_workspace). It takes its options prefix from the matrix, which other
   // solvers may share (the stability check's): set to this solver's first.
