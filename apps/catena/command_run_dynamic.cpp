@@ -54,9 +54,14 @@
 #include "stop_signal.hpp"
 #include "test_hooks.hpp"
 #include "wall_clock_schedule.hpp"
+#include "window_mover.hpp"
+#include "window_statics.hpp"
 
 namespace catena::app {
 namespace {
+
+// The checkpoint's record of how often a catenary.window had moved.
+constexpr const char* kWindowMovesKey = "window.moves";
 
 // Streams samples and step records to the output file; flushes and checkpoints on the wall
 // clock (wall_clock_schedule.hpp: one decision for all ranks).
@@ -104,11 +109,14 @@ class OutputObserver : public solvers::TransientObserver {
     std::vector<double> forces;
     view_.owned_constraint_forces(integrator_.q(), share.constraints, forces);
     share.resume = resume_rows(system_, integrator_, driver_);
+    if (window_) share.resume.integers[kWindowMovesKey] = window_->moves();
     io::write_checkpoint(system_.comm(), io::checkpoint_path(output_.file), system_.model(), facts,
                          share);
     last_checkpoint_time_ = facts.time;
   }
   void set_last_dt(double dt) { last_dt_ = dt; }
+  // catenary.window: samples and steps say where the window is on the line.
+  void set_window(const WindowMover* window) { window_ = window; }
   void set_driver_state(const std::optional<solvers::DriverState>& d) { driver_ = d; }
   // A restarted run: the checkpoint it started from is there until it writes its own.
   void set_last_checkpoint_time(double t) { last_checkpoint_time_ = t; }
@@ -136,6 +144,11 @@ class OutputObserver : public solvers::TransientObserver {
     // The modal model's forces are its own (its q leaves out the static correction).
     if (std::vector<double> own; integrator_.contact_forces_at(t, own)) contacts.force = own;
     travel_.move(contacts.position, positions);
+    if (window_) {  // the window's positions and contact points as the line's
+      for (std::size_t i = 0; i < positions.size(); i += 3) positions[i] += window_->x_offset();
+      for (double& s : contacts.position) s += window_->arc_offset();
+      contacts.window_moves = window_->moves();
+    }
     const assembly::Reactions reactions = view_.reactions({q, v, {}, t});
     io::BodySample bodies;
     if (!system_.model().rigid_bodies.empty()) {
@@ -161,6 +174,7 @@ class OutputObserver : public solvers::TransientObserver {
            view_.contact_states({integrator_.q(), integrator_.v(), {}, integrator_.time()}))
         record.contact_force.push_back(c.force);
     registration_heights(record.registration_height);
+    if (window_) record.window_moves = window_->moves();
     refuse_not_finite(r, record);
     resolution_.resize(record.contact_force.size());
     for (std::size_t c = 0; c < record.contact_force.size(); ++c)
@@ -272,6 +286,7 @@ class OutputObserver : public solvers::TransientObserver {
   std::vector<post::ContactResolution> resolution_;
   solvers::StateGuard guard_;                   // on the state a checkpoint saves
   std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
+  const WindowMover* window_ = nullptr;
   TestHooks hooks_ = TestHooks::from_environment();
 };
 
@@ -455,6 +470,15 @@ void solve_initial_statics(assembly::SecondOrderSystem& system, Vec q, const Com
     std::printf("%s\n", guess.c_str());
 }
 
+// Collective. A catenary window's static start into q (the reference state on entry), and
+// its mover, which the catenary's own static state is given to for the spans that enter.
+std::unique_ptr<WindowMover> start_window(assembly::SecondOrderSystem& system, Vec q,
+                                          const CommandLine& cl) {
+  VecHandle q_line = system.create_vector();
+  solve_window_statics(system, q, q_line.get(), cl);
+  return std::make_unique<WindowMover>(system, q_line.get());
+}
+
 // Collective. The absorbing ends' laws from the run's initial state q0 (before initial
 // displacements and velocities), with a line saying what they are.
 void calibrate_absorbing_ends(assembly::SecondOrderSystem& system, Vec q0, int rank) {
@@ -523,6 +547,9 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     }
   }
 
+  // catenary.window: the state moves back a span as the pantographs cross one.
+  const bool windowed = m.catenary && m.catenary->window;
+  std::unique_ptr<WindowMover> window;
   std::optional<io::Checkpoint> resumed;
   if (cl.restart) {
     try {
@@ -550,12 +577,19 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
               std::to_string(2 * resumed->facts.time));
     const bool linear = dyn.structure == model::StructureModel::linear;
     if (linear || !m.absorbing_ends.empty()) {
-      // The linearisation point and the absorbing ends' laws come from the run's initial
-      // state (the static equilibrium, which a linear structure needs), which the checkpoint
-      // does not hold: solved again (the same scene gives the same state).
+      // The linearisation point, the absorbing ends' laws and the state a window's entering
+      // spans take come from the run's initial state (the static equilibrium, which a
+      // linear structure needs), which the checkpoint does not hold: solved again (the same
+      // scene gives the same state).
       VecHandle q0 = system.create_vector();
       system.reference_state(q0.get());
-      if (dyn.initial.from_static) solve_initial_statics(system, q0.get(), cl, rank);
+      if (windowed) {
+        window = start_window(system, q0.get(), cl);
+        const auto moves = resumed->resume.integers.find(kWindowMovesKey);
+        window->restore(moves == resumed->resume.integers.end() ? 0 : moves->second);
+      } else if (dyn.initial.from_static) {
+        solve_initial_statics(system, q0.get(), cl, rank);
+      }
       if (linear) linearize_structure(system, q0.get(), rank);
       calibrate_absorbing_ends(system, q0.get(), rank);
     }
@@ -581,6 +615,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   } else {
     if (modal_q0) {
       CATENA_PETSC(VecCopy(modal_q0.get(), q.get()));
+    } else if (windowed) {
+      window = start_window(system, q.get(), cl);
+      if (dyn.structure == model::StructureModel::linear)
+        linearize_structure(system, q.get(), rank);
     } else if (dyn.initial.from_static) {
       solve_initial_statics(system, q.get(), cl, rank);
       if (dyn.structure == model::StructureModel::linear)
@@ -659,6 +697,8 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   OutputObserver observer(
       system, *writer, m.output, *integrator, run_id,
       DynamicProgress(rank, integrator->time(), options.t_end, cl.progress_seconds), realtime);
+  observer.set_window(window.get());
+  options.boundary = window.get();
   if (resumed) {
     observer.set_last_dt(resumed->facts.last_dt);
     observer.set_last_checkpoint_time(resumed->facts.time);

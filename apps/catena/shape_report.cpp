@@ -60,6 +60,10 @@ void print_report(std::FILE* out, const model::Model& m, const catenary::ShapeFi
     std::snprintf(text, sizeof text, "%s%g", offsets.empty() ? "" : ", ", s);
     offsets += text;
   }
+  if (m.catenary->window)
+    std::fprintf(out,
+                 "  window: every span takes the middle span's dropper lengths (found with the "
+                 "window's ends anchored, the end spans hang otherwise)\n");
   std::fprintf(out, "  dropper unstretched lengths (m) per span%s%s%s:\n",
                offsets.empty() ? "" : ", droppers at ", offsets.c_str(),
                offsets.empty() ? "" : " m from the span's start");

@@ -21,7 +21,7 @@ solvers::StaticReport solve_statics(assembly::SecondOrderSystem& system, Vec q,
 }
 
 solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system, Vec q,
-                                            const CommandLine& cl) {
+                                            const CommandLine& cl, const StaticHolds& holds) {
   model::Model held = system.model();
   const auto hold = [&](int node, unsigned mask) {
     const auto it = std::find_if(held.supports.begin(), held.supports.end(),
@@ -38,6 +38,25 @@ solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system,
     hold(end.node, 7u << static_cast<unsigned>(position));
   }
   held.absorbing_ends.clear();
+  for (const StaticHolds::End& end : holds.ends_at) {
+    const int slope = model::kind_info(system.dof_map().node_kind(end.node)).gradients;
+    hold(end.node, 7u << static_cast<unsigned>(slope));
+    for (model::Support& support : held.supports)
+      if (support.node == end.node) {
+        support.held_at = end.position;
+        support.held_slope = end.slope;
+      }
+  }
+  if (holds.catenary_alone) {
+    // As shape finding does (catenary/shape_finding.hpp): lumped stages stand on their
+    // springs; a mechanism's arm, which the wire held, by the height of its last body.
+    for (const model::MovingContact& c : system.model().contacts)
+      if (c.mechanism) hold(c.mechanism_nodes.back(), 0b100u);
+    held.contacts.clear();
+    std::erase_if(held.constraints, [](const model::Constraint& c) {
+      return c.type == model::ConstraintType::contact;
+    });
+  }
   assembly::SecondOrderSystem statics(system.comm(), held);
   const VecHandle q_held = statics.create_vector();
   statics.reference_state(q_held.get());
@@ -62,10 +81,22 @@ solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system,
     for (int k = 0; k < to.node_dofs(n); ++k) copy(to.global_dof(n, k), from.global_dof(n, k));
   }
   const int rank = mpi_rank(system.comm());
-  for (int c = 0; c < to.n_constraints(); ++c)
+  // The multipliers (the same constraints unless a contact's went with the pantographs).
+  for (int c = 0; c < to.n_constraints() && !holds.catenary_alone; ++c)
     if (to.constraint_owner(c) == rank)
       for (int k = 0; k < to.n_multipliers(c); ++k)
         copy(to.multiplier_dof(c, k), from.multiplier_dof(c, k));
+  // Where they are held, in q too (free there).
+  for (const StaticHolds::End& end : holds.ends_at) {
+    if (to.node_owner(end.node) != rank) continue;
+    const model::UnknownKindInfo& kind = model::kind_info(to.node_kind(end.node));
+    for (int d = 0; d < 3; ++d) {
+      if (const PetscInt g = to.global_dof(end.node, kind.position + d); g >= 0)
+        y[g - to.first_owned()] = end.position[d];
+      if (const PetscInt g = to.global_dof(end.node, kind.gradients + d); g >= 0)
+        y[g - to.first_owned()] = end.slope[d];
+    }
+  }
   CATENA_PETSC(VecRestoreArray(q, &y));
   CATENA_PETSC(VecRestoreArrayRead(q_held.get(), &x));
   return report;

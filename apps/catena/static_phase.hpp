@@ -4,7 +4,11 @@
 // applies (solvers/statics/hanging_cable_guess.hpp), as the "Statics" log stage.
 #include <petscvec.h>
 
+#include <utility>
+#include <vector>
+
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/core/vec3.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
 #include "cli.hpp"
 
@@ -23,7 +27,18 @@ solvers::StaticReport solve_statics(assembly::SecondOrderSystem& system, Vec q,
 // The equilibrium is solved on a copy of the model where these are supported, and copied
 // into q, laid out as `system`'s (where they are free): a dynamic run then releases them at
 // t = 0.
+// A catenary window's static start (window_statics.hpp) also holds its absorbing ends
+// elsewhere than at their reference positions, and solves the catenary alone:
+struct StaticHolds {
+  struct End {
+    int node = 0;
+    Vec3 position, slope;  // m, 1: where it is held (in q too), position and slope r_x
+  };
+  std::vector<End> ends_at;  // absorbing ends held there
+  // Without the pantographs' contacts (what the pantographs do alone is of no use then).
+  bool catenary_alone = false;
+};
 solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system, Vec q,
-                                            const CommandLine& cl);
+                                            const CommandLine& cl, const StaticHolds& holds = {});
 
 }  // namespace catena::app

@@ -41,17 +41,19 @@ void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
   }
   VecHandle f = create_vector();
   sum_forces(EvalPoint{q0, nullptr, {}, 0.0}, others, f.get(), nullptr);
-  std::vector<double> local(3 * n, 0.0), end_force(3 * n, 0.0);
+  // Per end: f at its position (3), then at its slope (3).
+  std::vector<double> local(6 * n, 0.0), end_force(6 * n, 0.0);
   {
     const PetscScalar* values = nullptr;
     CATENA_PETSC(VecGetArrayRead(f.get(), &values));
     for (std::size_t i = 0; i < n; ++i) {
       const int node = m.absorbing_ends[i].node;
-      const int position = model::kind_info(dofs_.node_kind(node)).position;
-      for (int d = 0; d < 3; ++d) {
-        const PetscInt g = dofs_.global_dof(node, position + d);
+      const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(node));
+      for (int d = 0; d < 6; ++d) {
+        const int component = d < 3 ? kind.position + d : kind.gradients + d - 3;
+        const PetscInt g = dofs_.global_dof(node, component);
         if (g >= dofs_.first_owned() && g < dofs_.first_owned() + dofs_.n_owned())
-          local[3 * i + static_cast<std::size_t>(d)] = values[g - dofs_.first_owned()];
+          local[6 * i + static_cast<std::size_t>(d)] = values[g - dofs_.first_owned()];
       }
     }
     CATENA_PETSC(VecRestoreArrayRead(f.get(), &values));
@@ -62,7 +64,7 @@ void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
   std::vector<elements::AbsorbingEndLaw> laws;
   for (std::size_t i = 0; i < n; ++i) {
     const model::AbsorbingEnd& a = m.absorbing_ends[i];
-    const Vec3 F(end_force[3 * i], end_force[3 * i + 1], end_force[3 * i + 2]);
+    const Vec3 F(end_force[6 * i], end_force[6 * i + 1], end_force[6 * i + 2]);
     // Outwards: from the element's other node to this one (reference positions).
     const model::ElementDesc& element = m.elements[static_cast<std::size_t>(a.element)];
     const int other = element.nodes[0] == a.node ? element.nodes[1] : element.nodes[0];
@@ -83,6 +85,8 @@ void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
       throw NumericalError(os.str());
     }
     laws.push_back(elements::cable_end_law(F, cable.EA, cable.mass_per_length));
+    laws.back().slope_force =
+        Vec3(end_force[6 * i + 3], end_force[6 * i + 4], end_force[6 * i + 5]);
   }
   for (auto& c : couplings_) {
     auto* e = dynamic_cast<couplings::ElementCoupling*>(c.get());

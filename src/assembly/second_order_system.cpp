@@ -93,6 +93,16 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   // A slider's arc length along its path (the fourth slot of its node, model::Slider).
   for (const model::Slider& slider : model.sliders)
     node_reference_[kBlock * static_cast<size_t>(slider.node) + 3] = slider.start;
+  // A support that holds its node elsewhere (model::Support::held_at, held_slope).
+  for (const model::Support& support : model.supports) {
+    const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(support.node));
+    double* block = &node_reference_[kBlock * static_cast<size_t>(support.node)];
+    for (int d = 0; d < 3; ++d) {
+      if (support.held_at && kind.position >= 0) block[kind.position + d] = (*support.held_at)[d];
+      if (support.held_slope && kind.gradients >= 0)
+        block[kind.gradients + d] = (*support.held_slope)[d];
+    }
+  }
 
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   std::vector<char> supported(model.nodes.size(), 0);

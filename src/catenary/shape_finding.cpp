@@ -229,6 +229,25 @@ bool tensions_converged(const CatenaryLayout& layout, const Errors& e, double rt
   return converged;
 }
 
+// A window (model::CatenaryWindow) stands for a line that repeats span after span, but its
+// shape was found with its ends anchored, where the spans hang otherwise (the end supports
+// are rigid, the others elastic: the first and last spans' droppers come out up to 4 %
+// longer on EN 50318's line). Every span takes the middle span's droppers, and every
+// steady arm and stitch wire the middle one's values, so that the state can move from span
+// to span as the window moves.
+void repeat_middle_span(const CatenaryLayout& layout, Unknowns& u) {
+  const auto spans = static_cast<std::size_t>(layout.window->spans);
+  const std::size_t per_span = u.lengths.size() / spans, middle = spans / 2;
+  for (std::size_t i = 0; i < u.lengths.size(); ++i)
+    u.lengths[i] = u.lengths[middle * per_span + i % per_span];
+  // One per intermediate support each.
+  const auto repeat = [](std::vector<double>& values) {
+    if (!values.empty()) values.assign(values.size(), values[values.size() / 2]);
+  };
+  repeat(u.preloads);
+  repeat(u.stitch_prestrains);
+}
+
 // The iteration on `model`, which ends with the unknowns found applied to it.
 ShapeFindingReport find_shape(MPI_Comm comm, model::Model& model,
                               const ShapeFindingOptions& options, Unknowns& found) {
@@ -347,6 +366,10 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
   bare.moving_loads.clear();
   Unknowns found;
   ShapeFindingReport report = find_shape(comm, bare, options, found);
+  if (model.catenary->window) {
+    repeat_middle_span(*model.catenary, found);
+    report.dropper_lengths = found.lengths;  // as the run uses them
+  }
   apply(found, model);
   return report;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -123,7 +124,59 @@ std::vector<post::PantographRecord> pantograph_list(const Reader& r, hsize_t n_c
 
 }  // namespace
 
-ContactRun read_contact_run(const std::string& path, UnfinishedRuns unfinished) {
+namespace {
+
+// catenary.window: how often the window had moved by each row of `dataset` (samples or
+// steps) and how far it moves each time (m along x); none for a run without a window.
+struct WindowMoves {
+  std::vector<std::int64_t> moves;
+  double shift_x = 0.0;
+};
+std::optional<WindowMoves> window_moves(const Reader& r, const char* dataset, hsize_t rows) {
+  if (!r.has_attribute(r.root(), root_attribute::window_shift_x)) return std::nullopt;
+  WindowMoves w;
+  w.shift_x = r.number_attribute<double>(r.root(), root_attribute::window_shift_x,
+                                         root_attribute::window_shift_x);
+  if (!(w.shift_x > 0.0)) r.fail(root_attribute::window_shift_x, "not a positive length");
+  if (!r.has_link(dataset)) r.fail(dataset, "missing: a window's run records its moves");
+  if (r.dims(dataset) != std::vector<hsize_t>{rows}) r.fail(dataset, "not one row per record");
+  w.moves = r.integers(dataset, {rows});
+  return w;
+}
+
+// A window's registration nodes stand, at each row, for the points of the line they are at:
+// x = reference x + moves × shift. Per point of the line any node reached, its height where a
+// node stood on it, else its static height (row 0 of a node one whole number of periods
+// from it): the line ahead of the window is at rest; behind it the point's motion is not
+// known, but the statistics use a point only while the pantograph is between its
+// neighbouring points, which the window holds.
+std::vector<post::RegistrationPoint> on_line(const std::vector<post::RegistrationPoint>& nodes,
+                                             const WindowMoves& w) {
+  const auto key = [](double x) { return std::llround(x * 1e4); };  // 0.1 mm
+  std::map<long long, post::RegistrationPoint> points;
+  const std::size_t rows = w.moves.size();
+  for (const post::RegistrationPoint& node : nodes)
+    for (std::size_t k = 0; k < rows; ++k) {
+      const double x = node.reference_x + static_cast<double>(w.moves[k]) * w.shift_x;
+      points[key(x)].reference_x = x;
+    }
+  for (auto& [unused, point] : points) {
+    const auto same_phase = std::find_if(nodes.begin(), nodes.end(), [&](const auto& node) {
+      const double periods = (point.reference_x - node.reference_x) / w.shift_x;
+      return std::abs(periods - std::round(periods)) < 1e-6;
+    });
+    point.z.assign(rows, same_phase == nodes.end() ? 0.0 : same_phase->z.front());
+  }
+  for (const post::RegistrationPoint& node : nodes)
+    for (std::size_t k = 0; k < rows; ++k)
+      points[key(node.reference_x + static_cast<double>(w.moves[k]) * w.shift_x)].z[k] = node.z[k];
+  std::vector<post::RegistrationPoint> out;
+  for (auto& [unused, point] : points) out.push_back(std::move(point));
+  return out;
+}
+
+// The run's records as written, with a window's registration nodes as they are.
+ContactRun read_run(const std::string& path, UnfinishedRuns unfinished) {
   const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
   layout::require_transient_format(r.root(), path);
@@ -201,6 +254,17 @@ ContactRun read_contact_run(const std::string& path, UnfinishedRuns unfinished) 
   return run;
 }
 
+}  // namespace
+
+ContactRun read_contact_run(const std::string& path, UnfinishedRuns unfinished) {
+  ContactRun run = read_run(path, unfinished);
+  const Hdf5ErrorPrintingSuppressed quiet;
+  const Reader r(path);
+  if (const auto w = window_moves(r, layout::window_moves.path, run.n_samples))
+    run.registration_points = on_line(run.registration_points, *w);
+  return run;
+}
+
 namespace {
 
 // y (sampled at the ascending times t) at time x: linear between samples, extended by the
@@ -216,7 +280,7 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& y, d
 }  // namespace
 
 ContactRun read_contact_run_steps(const std::string& path, UnfinishedRuns unfinished) {
-  ContactRun run = read_contact_run(path, unfinished);
+  ContactRun run = read_run(path, unfinished);
   const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
   const std::vector<double> sample_times = r.doubles(time_name, {run.n_samples});
@@ -291,6 +355,15 @@ ContactRun read_contact_run_steps(const std::string& path, UnfinishedRuns unfini
                  ? interpolate(sample_times, point.z, t[k])
                  : step_heights[(rows[k] - 1) * n_columns + column[j]];
     point.z = std::move(z);
+  }
+  // A window's moves at each row: the first sample's, then each step's.
+  if (auto w = window_moves(r, layout::window_moves.path, run.n_samples)) {
+    const std::int64_t first = w->moves.front();
+    const std::vector<std::int64_t> steps =
+        window_moves(r, layout::step_window_moves.path, n_steps)->moves;
+    w->moves.assign(n, first);
+    for (std::size_t k = 1; k < n; ++k) w->moves[k] = steps[rows[k] - 1];
+    run.registration_points = on_line(run.registration_points, *w);
   }
   run.n_samples = n;
   run.time = std::move(t);

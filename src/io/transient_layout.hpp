@@ -81,6 +81,11 @@ inline constexpr Dataset step_contact_force{"/steps/contact_force", "N"};
 // registration_nodes, in that order) at the step's end, for the uplift at the supports
 // from every step. Only with registration nodes.
 inline constexpr Dataset step_registration_height{"/steps/registration_height", "m"};
+// (n_samples,) and (n_steps,) int32: catenary.window only, how many times the window had
+// moved by the sample or the step's end; the mesh's nodes are then window_shift_x × that
+// further along x on the line (the samples' positions are the line's already).
+inline constexpr Dataset window_moves{"/samples/window_moves", nullptr};
+inline constexpr Dataset step_window_moves{"/steps/window_moves", nullptr};
 
 // (n_samples, n_bodies, 4) float64: each rigid body's orientation, the unit quaternion
 // (w, x, y, z) of its axes [e1 e2 e3] (w ≥ 0); (n_samples, n_bodies, 3): its angular
@@ -138,6 +143,8 @@ inline constexpr const char* evaluation_start = "evaluation_start";  // float64,
 inline constexpr const char* evaluation_end = "evaluation_end";      // float64, m
 // string: the acceptance ranges of the statistics ("en50318"); absent: none
 inline constexpr const char* acceptance = "acceptance";
+// float64, m: catenary.window only, how far along x the window moves each time
+inline constexpr const char* window_shift_x = "window_shift_x";
 // After the run, the work statistics (float64) the caller of TransientWriter::close names.
 }  // namespace root_attribute
 inline constexpr const char* analysis_dynamic = "dynamic";

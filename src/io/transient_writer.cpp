@@ -195,6 +195,7 @@ struct TransientWriter::Impl {
   bool has_supports = false;
   hsize_t n_contacts = 0;
   hsize_t n_registration = 0;
+  bool has_window = false;  // catenary.window: the moves per sample and step
   hsize_t n_bodies = 0;
   hsize_t n_sliders = 0;
   hsize_t n_joints = 0;
@@ -204,6 +205,7 @@ struct TransientWriter::Impl {
   Series reaction_force, reaction_moment;
   Series contact_force, contact_position, step_contact_force, step_registration_height;
   Series step_time, step_dt, step_iterations, step_error, step_rejected;
+  Series window_moves, step_window_moves;
   std::vector<StepRecord> pending_steps;
   // Samples buffered until kSamplesPerWrite of them, or flush(): one H5Dwrite per dataset
   // for many rows instead of one per row, each call paying HDF5's selection and MPI-IO
@@ -217,6 +219,7 @@ struct TransientWriter::Impl {
     std::vector<double> reaction_force, reaction_moment, contact_force, contact_position;
     std::vector<double> body_orientation, body_angular_velocity, joint_links;
     std::vector<double> slider_position, slider_speed;
+    std::vector<std::int32_t> window_moves;
   } pending;
   void write_pending_samples();
   // Collective. Rows whose values every rank holds alike (time, contact, bodies, sliders,
@@ -260,6 +263,7 @@ struct TransientWriter::Impl {
         has_supports(!supported.empty()),
         n_contacts(static_cast<hsize_t>(m.contacts.size())),
         n_registration(static_cast<hsize_t>(m.registration_nodes.size())),
+        has_window(m.catenary && m.catenary->window),
         n_bodies(static_cast<hsize_t>(m.rigid_bodies.size())),
         n_sliders(static_cast<hsize_t>(m.sliders.size())),
         n_joints(static_cast<hsize_t>(m.joints.size())) {
@@ -355,6 +359,10 @@ struct TransientWriter::Impl {
       slider_position = series(layout::slider_position, {n_sliders}, real, samples);
       slider_speed = series(layout::slider_speed, {n_sliders}, real, samples);
     }
+    if (has_window) {
+      window_moves = series(layout::window_moves, {}, count, samples);
+      step_window_moves = series(layout::step_window_moves, {}, count, steps);
+    }
     time = series(layout::time, {}, real, samples);
     positions = series(layout::positions, {n_nodes, 3}, real, samples);
     velocities = series(layout::velocities, {n_nodes, 3}, real, samples);
@@ -389,7 +397,9 @@ struct TransientWriter::Impl {
             &body_angular_velocity,
             &joint_links,
             &slider_position,
-            &slider_speed};
+            &slider_speed,
+            &window_moves,
+            &step_window_moves};
   }
 
   // Collective. Closes every dataset, then the file.
@@ -543,6 +553,8 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
     write_double_attribute(root, attribute::evaluation_end, model.evaluation_end);
     if (!model.acceptance.empty())
       write_string_attribute(root, attribute::acceptance, model.acceptance);
+    if (model.catenary && model.catenary->window)
+      write_double_attribute(root, attribute::window_shift_x, model.catenary->window->shift_x());
   });
   flush();
 }
@@ -603,6 +615,8 @@ void TransientWriter::append_sample(double t, const std::vector<double>& positio
       add(b.contact_force, contacts.force);
       add(b.contact_position, contacts.position);
     }
+    if (s.has_window && s.rank == 0)
+      b.window_moves.push_back(static_cast<std::int32_t>(contacts.window_moves));
     if (s.n_bodies > 0 && s.rank == 0) {
       CATENA_ASSERT(bodies.orientation.size() == 4 * s.n_bodies, "one quaternion per body");
       add(b.body_orientation, bodies.orientation);
@@ -658,6 +672,10 @@ void TransientWriter::Impl::write_pending_samples() {
       joint_links.append(x, n, RowBlock{0, static_cast<std::int64_t>(n_joints)},
                          pending.joint_links.data());
     }
+    if (has_window) {
+      from_root(pending.window_moves);
+      window_moves.append(x, n, RowBlock{0, 1}, pending.window_moves.data());
+    }
     if (n_sliders > 0) {
       const RowBlock all{0, static_cast<std::int64_t>(n_sliders)};
       from_root(pending.slider_position);
@@ -700,6 +718,13 @@ void TransientWriter::flush() {
       s.step_iterations.append(x, n, rows, iterations.data());
       s.step_error.append(x, n, rows, error.data());
       s.step_rejected.append(x, n, rows, rejected.data());
+      if (s.has_window) {
+        std::vector<std::int32_t> moves;
+        for (const StepRecord& r : s.pending_steps)
+          moves.push_back(static_cast<std::int32_t>(r.window_moves));
+        s.from_root(moves);
+        s.step_window_moves.append(x, n, rows, moves.data());
+      }
       if (s.n_contacts > 0) {
         std::vector<double> forces;
         for (const StepRecord& r : s.pending_steps)

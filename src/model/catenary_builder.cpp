@@ -147,7 +147,7 @@ class CatenaryAssembler {
  public:
   CatenaryAssembler(const CatenaryDesign& d, const Field& entry, SceneBuild& build)
       : d_(d), entry_(entry), build_(build), model_(build.model) {
-    support_x_.push_back(0.0);
+    support_x_.push_back(d.x_origin);
     for (const double length : d.span_lengths) support_x_.push_back(support_x_.back() + length);
     const std::vector<std::vector<double>> none(d.span_lengths.size());
     const std::vector<std::vector<double>> clamps = stitch_clamp_stations(d);

@@ -98,6 +98,7 @@ struct CatenaryDesign {
   std::optional<std::pair<int, int>> evaluation_spans;  // 1-based, first ≤ last
   std::optional<AutoSpanCount> auto_spans;              // `spans: auto` (else the scene's count)
   bool absorbing_ends = false;                          // `ends: absorbing`
+  double x_origin = 0.0;  // m, x of the first support (a window's place on its line)
 };
 
 // Stiffness of the spring that joins the two nodes of a wire at a staggered support (and a

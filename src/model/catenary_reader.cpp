@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "catenary_builder.hpp"
+#include "catenary_window_reader.hpp"
 #include "did_you_mean.hpp"
 #include "physical_bounds.hpp"
 #include "rayleigh_reader.hpp"
@@ -38,7 +39,8 @@ const std::vector<std::string>& catenary_keys() {
                                              "run_out_spans",
                                              "stitch",
                                              "acceptance",
-                                             "ends"};
+                                             "ends",
+                                             "window"};
   return keys;
 }
 
@@ -470,7 +472,11 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
     build.model.acceptance = acceptance.text();
   }
 
+  const std::optional<CatenaryWindow> window = read_catenary_window(catenary, scene, d);
+  const std::optional<std::pair<int, int>> evaluation_spans = d.evaluation_spans;
+  if (window) cut_design_to_window(*window, d);
   build_catenary(d, catenary, build);
+  if (window) place_window(*window, evaluation_spans, build.model);
 }
 
 }  // namespace catena::model::detail

@@ -143,7 +143,7 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   t.row("catenary",
         cat(std::to_string(c.dimension), "D simple catenary, ",
             plural(static_cast<long long>(n_spans), "span"), " over ",
-            format_number(c.support_x.back()), " m, ",
+            format_number(c.support_x.back() - c.support_x.front()), " m, ",
             plural(static_cast<long long>(c.droppers.size()), "dropper"), ", ",
             plural(static_cast<long long>(c.registrations.size()), "steady arm"), ", ",
             c.stitch_wires.empty()
@@ -152,6 +152,17 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   double stagger = 0.0;
   for (const int n : m.registration_nodes)
     stagger = std::max(stagger, std::abs(m.nodes[static_cast<std::size_t>(n)].position.y()));
+  if (c.window) {
+    const CatenaryWindow& w = *c.window;
+    t.row("window",
+          cat(plural(w.spans, "span"), " of a line of ", plural(w.line_spans, "span"), " (",
+              format_number(w.line_spans * w.span_length), " m), starting at span ",
+              std::to_string(w.origin_span + 1), " of the line; it moves ",
+              plural(w.period, "span"), " ahead whenever the first pantograph passes span ",
+              std::to_string(w.behind + w.period + 1), " of it (", plural(w.behind, "span"),
+              " kept behind); every span takes the middle span's dropper lengths"),
+          4);
+  }
   if (c.auto_spans) {
     const AutoSpanCount& a = *c.auto_spans;
     t.row("span count",
@@ -257,6 +268,11 @@ void describe_catenary(const Model& m, SummaryTable& t, SummaryNotes& notes) {
 
   if (c.stitch_wires.empty() && !c.registrations.empty())
     notes.left_out.push_back("stitch wires (catenary.stitch not given)");
+  if (c.window)
+    notes.left_out.push_back(
+        "the line outside the window: waves that leave it never come back, the spans "
+        "entering ahead start at rest (the waves that ran ahead of the window are lost), the "
+        "line's anchors, sections and other trains beyond the window are not modelled");
   if (c.absorbing_ends)
     notes.left_out.push_back(
         "the line beyond the cut ends: waves that leave never come back (its supports, "

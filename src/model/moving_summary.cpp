@@ -4,6 +4,7 @@
 // before the analysis ends or does not cross the evaluation section in time.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,12 @@ void warn_path_end(const std::string& what, double start, double speed, double t
 }
 
 // Warning when a pantograph on the evaluation section's path does not cover
-// [evaluation_start, evaluation_end] within the analysis.
-void warn_evaluation(const Model& m, const MovingContact& c, double t_end, SummaryNotes& notes) {
+// [evaluation_start, evaluation_end] within the analysis; `start` is its start on the line
+// (the window's path start is not the line's).
+void warn_evaluation(const Model& m, const MovingContact& c, double start, double t_end,
+                     SummaryNotes& notes) {
   const double a = m.evaluation_start, b = m.evaluation_end;
-  const double s0 = c.start, s1 = c.start + c.speed * t_end;
+  const double s0 = start, s1 = start + c.speed * t_end;
   if (std::min(s0, s1) <= a && std::max(s0, s1) >= b) return;
   std::string text =
       cat("pantograph '", c.name, "' does not traverse the evaluation section (", format_number(a),
@@ -147,15 +150,20 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
   for (std::size_t i = 0; i < m.contacts.size(); ++i) {
     const MovingContact& c = m.contacts[i];
     const ElementPath& path = m.paths[static_cast<std::size_t>(c.path)];
-    const double length = path_stations(m, path.elements).length();
+    // With a window, where it is on the line (the window is a few spans of it).
+    const std::optional<CatenaryWindow>& window =
+        m.catenary ? m.catenary->window : std::optional<CatenaryWindow>();
+    const double length =
+        window ? window->line_spans * window->span_arc : path_stations(m, path.elements).length();
+    const double start = c.start + (window ? window->origin_arc() : 0.0);
     const double uplift = c.static_force + c.aerodynamic_coefficient * c.speed * c.speed;
     // A path the reader made from `line:` is named after the pantograph: show its lines.
     const std::string path_text = path.name == cat("pantograph ", c.name)
                                       ? cat("lines ", path_sets(m, path.elements))
                                       : cat("path ", path.name);
     t.row(c.name,
-          cat(path_text, " (", format_number(length), " m), ", speed_text(c.speed), ", start ",
-              format_number(c.start), " m"),
+          cat(path_text, " (", format_number(length), window ? " m of line), " : " m), ",
+              speed_text(c.speed), ", start ", format_number(start), " m"),
           4);
     if (c.mechanism) {
       t.row("",
@@ -179,20 +187,20 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
                             format_number(c.damping), " N*s/m"),
           4);
     if (!dynamic) {
-      t.row("", cat("standing at ", format_number(c.start), " m (static analysis)"), 4);
+      t.row("", cat("standing at ", format_number(start), " m (static analysis)"), 4);
       continue;
     }
-    const OnPath o = on_path(c.start, c.speed, 0.0, t_end, length);
-    t.row("", on_path_text(o, c.start, c.speed, 0.0), 4);
+    const OnPath o = on_path(start, c.speed, 0.0, t_end, length);
+    t.row("", on_path_text(o, start, c.speed, 0.0), 4);
     const std::string who = cat("pantograph '", c.name, "'");
     if (!o.ever)
       notes.warnings.push_back(cat(who, " is never on its path (", format_number(length),
                                    " m) within the analysis (0 to ", format_number(t_end),
                                    " s): it touches nothing"));
     else
-      warn_path_end(who, c.start, c.speed, 0.0, t_end, length, notes);
+      warn_path_end(who, start, c.speed, 0.0, t_end, length, notes);
     if (m.evaluation_end > m.evaluation_start && c.path == m.contacts.front().path)
-      warn_evaluation(m, c, t_end, notes);
+      warn_evaluation(m, c, start, t_end, notes);
     if (c.aerodynamic_coefficient == 0.0)
       notes.left_out.push_back(cat(who, ": aerodynamic uplift (aerodynamic_coefficient 0)"));
     if (c.damping == 0.0 && !c.bilateral)

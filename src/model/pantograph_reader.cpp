@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "catena/model/integrator_catalogue.hpp"
+#include "catenary_window_reader.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
 #include "pantograph_mechanism.hpp"
@@ -176,6 +177,7 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
     // A start outside [0, path length] is a pantograph that reaches (or has left) the wire
     // later: no contact while it is off the path. Its nodes are drawn at the nearest end.
     c.start = entry.child("start").real_or(0.0, RealRange::any("m"));
+    place_pantograph_in_window(entry, m, c);  // the line's start to the window's
     const Vec3 contact_point = path_point(m, m.paths[static_cast<size_t>(c.path)],
                                           std::clamp(c.start, 0.0, path_length), path_length);
     const double static_force = entry.child("static_force").real(RealRange::positive("N"));

@@ -53,7 +53,16 @@ PathReach contact_reach(const Model& model, const MovingContact& contact,
   constexpr double kMargin = 1.0;  // m: far above round-off in start + speed·t
   const double t_end =
       model.analysis == AnalysisType::dynamic ? model.dynamic_options.duration : 0.0;
-  const double s0 = contact.start, s1 = contact.start + contact.speed * t_end;
+  double s0 = contact.start, s1 = contact.start + contact.speed * t_end;
+  if (model.catenary && model.catenary->window && !model.contacts.empty()) {
+    // A window moves its pantographs back a period whenever the first passes span
+    // behind + period: they stay within a period of where they are then, plus the travel of
+    // the step that takes the first past it (at most a span).
+    const CatenaryWindow& w = *model.catenary->window;
+    const double d = contact.start - model.contacts.front().start;
+    s0 = w.behind * w.span_arc + d;
+    s1 = (w.behind + w.period + 1) * w.span_arc + d;
+  }
   const double low = std::min(s0, s1) - kMargin, high = std::max(s0, s1) + kMargin;
   PathReach r;
   if (stations.start.size() < 2 || high < 0.0 || low > stations.length()) return r;

@@ -17,6 +17,7 @@
 #include "catena/core/error.hpp"
 #include "catena/model/node_kinds.hpp"
 #include "catenary_reader.hpp"
+#include "catenary_window_reader.hpp"
 #include "constraint_reader.hpp"
 #include "dynamics_reader.hpp"
 #include "element_reader.hpp"
@@ -115,6 +116,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::read_dynamics(scene, model);
   detail::read_moving_loads(scene.child("moving_loads"), build);
   detail::read_pantographs(scene.child("pantographs"), build);
+  detail::check_window_scene(scene, model);
   detail::check_no_free_body(build);
   detail::check_model_fits(scene, build, budget);
 }

@@ -35,12 +35,18 @@ TEST(AbsorbingEnd, DashpotHasTheLineImpedancesAlongAndAcrossTheEndForce) {
 }
 
 TEST(AbsorbingEnd, ForceIsDashpotMinusEndForceAndJacobiansMatchDifferences) {
-  const Vec3 F(1.9e4, 300.0, -2500.0);
-  const AbsorbingEnd end(cable_end_law(F, kEA, kMass));
-  const std::vector<double> q{60.0, 0.1, -0.2}, v{0.3, -1.2, 0.7};
+  const Vec3 F(1.9e4, 300.0, -2500.0), G(0.0, 0.4, -1.5);
+  elements::AbsorbingEndLaw law = cable_end_law(F, kEA, kMass);
+  law.slope_force = G;
+  const AbsorbingEnd end(law);
+  // [r, r_x]: the slope's velocity meets no dashpot.
+  const std::vector<double> q{60.0, 0.1, -0.2, 1.0, 0.01, -0.02}, v{0.3, -1.2, 0.7, 0.5, -0.4, 0.2};
   const std::vector<double> f = test::element_force(end, q, v, 1.0);
   const Vec3 expected = end.law().damping * Vec3(v[0], v[1], v[2]) - F;
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(f[k], expected[k], 1e-9 * F.norm()) << k;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(f[k], expected[k], 1e-9 * F.norm()) << k;
+    EXPECT_DOUBLE_EQ(f[3 + k], -G[k]) << k;
+  }
   const std::vector<double> at_rest = test::element_force(end, q, {}, 1.0);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(at_rest[k], -F[k]) << k;
   const test::JacobianCheck check = test::check_element_jacobians(end, q, v, 1.0);
@@ -51,8 +57,9 @@ TEST(AbsorbingEnd, ForceIsDashpotMinusEndForceAndJacobiansMatchDifferences) {
 TEST(AbsorbingEnd, WithoutItsLawItDoesNothing) {
   // Until the system calibrates it from the run's initial state.
   const AbsorbingEnd end(elements::AbsorbingEndLaw{});
-  const std::vector<double> f = test::element_force(end, {1.0, 2.0, 3.0}, {4.0, 5.0, 6.0}, 1.0);
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(f[k], 0.0);
+  const std::vector<double> f =
+      test::element_force(end, {1.0, 2.0, 3.0, 1.0, 0.0, 0.0}, {4.0, 5.0, 6.0, 0.1, 0.2, 0.3}, 1.0);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(f[k], 0.0);
   EXPECT_TRUE(end.has_damping());  // asked once, at the system's construction
 }
 

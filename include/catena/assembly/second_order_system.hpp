@@ -150,6 +150,11 @@ class SecondOrderSystem {
   // do nothing. Throws NumericalError naming the node if its line is not in tension there.
   void calibrate_absorbing_ends(Vec q0);
 
+  // Not collective (call on every rank alike). A moving window (model::CatenaryWindow) moved
+  // the line's state back by `ds` m along the contact wire: every pantograph's contact
+  // point moves back with it.
+  void move_contacts_back(double ds);
+
   // Collective. The structure without its moving contacts and moving loads, linearised
   // about q0 (v = 0, t = 0, the end of the load path): K = ∂f/∂q, C = ∂f/∂v, M and
   // f0 = f(q0, 0) over every other coupling (elements, masses, supports, dead loads), so

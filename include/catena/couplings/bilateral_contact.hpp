@@ -36,6 +36,8 @@ class BilateralContact final : public ConstraintCoupling {
   // Index into model.contacts.
   int contact() const { return contact_; }
   double position(double t) const { return path_.position(t); }
+  // The wire's state moved back by ds along the path (ContactPath::move_back).
+  void move_back_along_path(double ds) { path_.move_back(ds); }
 
   static constexpr int kActive = 1 + ContactPath::kActive;
 

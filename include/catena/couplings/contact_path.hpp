@@ -26,6 +26,9 @@ class ContactPath {
               std::vector<DofKey>& dofs);
 
   double position(double t) const { return contact_.start + contact_.speed * t; }
+  // A moving window (model::CatenaryWindow) moved the wire's state back by `ds` along the
+  // path: the contact point moves back with it.
+  void move_back(double ds) { contact_.start -= ds; }
   bool on_path(double t) const { return stations_.contains(position(t)); }
   // The positions in dofs of the 12 wire DOFs of the element holding s(t) (on the path),
   // appended to `positions`.

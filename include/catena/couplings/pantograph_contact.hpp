@@ -41,6 +41,8 @@ class PantographContact final : public Coupling {
   // Contact point's arc length along its path at t, m.
   double position(double t) const { return path_.position(t); }
   bool on_path(double t) const { return path_.on_path(t); }
+  // The wire's state moved back by ds along the path (ContactPath::move_back).
+  void move_back_along_path(double ds) { path_.move_back(ds); }
   // Force (N, ≥ 0) and penetration δ (m) at s (its active DOFs; on the path).
   double force(const CouplingState& s, double* penetration = nullptr) const;
 

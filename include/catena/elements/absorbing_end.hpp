@@ -11,16 +11,20 @@
 // √(T/(λ m')) in unstretched length). Exact for the axial and transverse waves of a taut
 // string; a wire's bending stiffness makes short waves dispersive, which the dashpot does not
 // match (docs/formulation.md, "Absorbing ends"). K = 0: the rest of the line adds no
-// stiffness to first order beyond what the dashpot gives.
-// Units: N, N·s/m. Local DOFs: the node's position only.
+// stiffness to first order beyond what the dashpot gives. The end's slope r_x is held by
+// the constant generalised force G₀ the rest of the structure put on it at the start (zero
+// where the static start left the slope free; a catenary window's ends hold it where the
+// line has it: apps/catena/window_statics.hpp), and is otherwise free.
+// Units: N, N·s/m, N·m (G₀). Local DOFs: the node's position and slope [r, r_x].
 #include "catena/core/vec3.hpp"
 #include "catena/elements/element.hpp"
 
 namespace catena::elements {
 
 struct AbsorbingEndLaw {
-  Vec3 force = Vec3::Zero();    // F₀, N: the force on the end node (the line beyond pulls)
-  Mat3 damping = Mat3::Zero();  // C, N·s/m
+  Vec3 force = Vec3::Zero();        // F₀, N: the force on the end node (the line beyond pulls)
+  Mat3 damping = Mat3::Zero();      // C, N·s/m
+  Vec3 slope_force = Vec3::Zero();  // G₀, N·m: on r_x (the line beyond holds the slope)
 };
 
 // The law of a cable end with end force `end_force` (pulling outwards: the line is in
@@ -31,7 +35,7 @@ class AbsorbingEnd final : public Element {
  public:
   explicit AbsorbingEnd(const AbsorbingEndLaw& law) : law_(law) {}
   int n_nodes() const override { return 1; }
-  int dofs_per_node() const override { return 3; }
+  int dofs_per_node() const override { return 6; }
   void evaluate(const LocalState& s, Request r, LocalOutput out) const override;
   // Always: the system asks once, at its construction, before the law is known.
   bool has_damping() const override { return true; }

@@ -53,6 +53,7 @@ struct StepRecord {
   std::vector<double> contact_force;  // N, one per model::MovingContact, at the step end
   // m, z of each model::Model::registration_nodes entry (in order) at the step end.
   std::vector<double> registration_height;
+  std::int64_t window_moves = 0;  // catenary.window: how often it had moved by the step's end
 };
 
 // Reactions at a sample: 3 values each per owned supported node, ascending (the order of
@@ -64,8 +65,9 @@ struct SupportSample {
 
 // Contact state of every pantograph at a sample (identical on every rank).
 struct ContactSample {
-  std::vector<double> force;     // N
-  std::vector<double> position;  // m along the path
+  std::vector<double> force;      // N
+  std::vector<double> position;   // m along the path (with catenary.window: the line's)
+  std::int64_t window_moves = 0;  // catenary.window: how often it had moved by the sample
 };
 
 // Every rigid body's pose at a sample (identical on every rank; assembly::BodyPoses).

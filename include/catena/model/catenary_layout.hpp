@@ -70,6 +70,26 @@ struct AutoSpanCount {
   int run_out_spans = 0;   // whole spans added beyond the span that holds `reach`
 };
 
+// `catenary.window`: the model holds `spans` spans of a longer line that repeats every
+// `period` spans, and follows the pantographs along it (model/catenary_window.hpp): when
+// the first pantograph passes the start of span behind + period (0-based, in the
+// window), the state moves back by `period` spans and the spans that enter at the front
+// start from the static state. Both ends of the window are absorbing ends.
+struct CatenaryWindow {
+  int spans = 0;             // spans modelled
+  int behind = 0;            // whole spans kept behind the span of the first pantograph
+  int period = 1;            // spans after which the line repeats (2 with stagger)
+  int line_spans = 0;        // spans of the line the scene describes
+  double span_length = 0.0;  // m
+  double span_arc = 0.0;     // m of contact-wire path per span (x unless staggered)
+  int origin_span = 0;       // the line's span the window's first span is at t = 0
+  // m of x and of contact-wire path one shift moves the window along the line
+  double shift_x() const { return period * span_length; }
+  double shift_arc() const { return period * span_arc; }
+  // m, the line's path position of the window's path start at t = 0
+  double origin_arc() const { return origin_span * span_arc; }
+};
+
 struct CatenaryLayout {
   int dimension = 3;              // 2: x–z plane (out-of-plane DOFs fixed), 3
   std::vector<double> support_x;  // m, the n_spans + 1 support (mast) positions
@@ -87,6 +107,7 @@ struct CatenaryLayout {
   // `ends: absorbing`: the wires' end supports become absorbing ends in a dynamic run, after
   // shape finding (model/catenary_ends.hpp); the model holds them as supports until then.
   bool absorbing_ends = false;
+  std::optional<CatenaryWindow> window;  // `window`: a moving window of the line
 };
 
 }  // namespace catena::model

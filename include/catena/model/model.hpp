@@ -49,6 +49,10 @@ struct Support {
   // catenary's nodes): a modelling restriction, not a support, so a node held by them alone
   // has no reaction output (model/supported_nodes.hpp).
   unsigned plane_mask = 0;
+  // Where the fixed position DOFs (and slope DOFs r_x) hold the node, if not at its
+  // reference: the static start of a catenary window holds its ends where the line has
+  // them (set by the run, never by a scene: the elements keep the reference geometry).
+  std::optional<Vec3> held_at, held_slope;
 };
 
 // A rigid plane that nodes may touch (elements/surface_contact.hpp): a unilateral penalty

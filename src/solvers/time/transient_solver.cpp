@@ -88,6 +88,7 @@ class Driver {
         report_.interrupted = true;
         break;
       }
+      if (options_.boundary) options_.boundary->before_step(in_);
       const double t = in_.time();
       double step = std::min({h, c.dt_max > 0 ? c.dt_max : h, stable});
       // Land on t_end; avoid a sliver of a last step.

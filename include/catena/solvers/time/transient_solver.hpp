@@ -73,6 +73,17 @@ struct DriverState {
 void save_driver_state(const DriverState& state, ResumeState& out);
 std::optional<DriverState> restore_driver_state(const ResumeState& in);
 
+// Collective. Before each step, may put an equivalent state in the integrator's place:
+// a moving window moves the line's state back a span when the pantograph has crossed one
+// (apps/catena/window_mover.hpp). Called with the integrator's accepted state, after its
+// samples and step record are out, so that the state a checkpoint saves is the one a
+// restart continues from.
+class StepBoundary {
+ public:
+  virtual ~StepBoundary() = default;
+  virtual void before_step(TimeIntegrator& integrator) = 0;
+};
+
 struct TransientOptions {
   double t_end = 0.0;            // s
   double sample_interval = 0.0;  // s, 0: sample every accepted step
@@ -86,6 +97,7 @@ struct TransientOptions {
   // next step; the counters continue). None (an older checkpoint): the first step is
   // step.dt and the counters start at 0.
   std::optional<DriverState> resume_driver;
+  StepBoundary* boundary = nullptr;  // none: the state is the integrator's alone
 };
 
 // One accepted step, for statistics output.

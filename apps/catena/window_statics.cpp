@@ -1,0 +1,115 @@
+#include "window_statics.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "catena/assembly/petsc_call.hpp"
+#include "catena/core/error.hpp"
+#include "catena/core/mpi_comm.hpp"
+#include "catena/model/catenary_window.hpp"
+#include "catena/model/unknown_kinds.hpp"
+#include "static_phase.hpp"
+
+namespace catena::app {
+namespace {
+
+constexpr double kAgreement = 1e-6;  // m (a slope's: the same over 1 m of wire)
+constexpr int kMaxRounds = 20;
+
+// Collective. The position and slope r_x of `nodes` in q (free there), on every rank.
+std::vector<StaticHolds::End> ends_of(const assembly::SecondOrderSystem& system, Vec q,
+                                      const std::vector<int>& nodes) {
+  const assembly::DofMap& dofs = system.dof_map();
+  const int rank = mpi_rank(system.comm());
+  std::vector<double> values(6 * nodes.size(), 0.0);
+  const PetscScalar* x = nullptr;
+  CATENA_PETSC(VecGetArrayRead(q, &x));
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (dofs.node_owner(nodes[i]) != rank) continue;
+    const model::UnknownKindInfo& kind = model::kind_info(dofs.node_kind(nodes[i]));
+    const model::Node& node = system.model().nodes[static_cast<std::size_t>(nodes[i])];
+    for (int d = 0; d < 6; ++d) {
+      const int component = d < 3 ? kind.position + d : kind.gradients + d - 3;
+      const PetscInt g = dofs.global_dof(nodes[i], component);
+      // A fixed component (the plane of a 2D catenary) is the reference's.
+      values[6 * i + static_cast<std::size_t>(d)] = g >= 0  ? x[g - dofs.first_owned()]
+                                                    : d < 3 ? node.position[d]
+                                                            : node.tangent[d - 3];
+    }
+  }
+  CATENA_PETSC(VecRestoreArrayRead(q, &x));
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                system.comm());
+  std::vector<StaticHolds::End> out;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    out.push_back({nodes[i], Vec3(values[6 * i], values[6 * i + 1], values[6 * i + 2]),
+                   Vec3(values[6 * i + 3], values[6 * i + 4], values[6 * i + 5])});
+  return out;
+}
+
+}  // namespace
+
+void solve_window_statics(assembly::SecondOrderSystem& system, Vec q, Vec q_line,
+                          const CommandLine& cl) {
+  const model::Model& m = system.model();
+  const model::CatenaryWindow& w = *m.catenary->window;
+  const std::vector<int> ahead = model::window_state_sources(m, model::WindowImage::ahead);
+  const std::vector<int> behind = model::window_state_sources(m, model::WindowImage::behind);
+  // Each absorbing end and its image inside the window, and the move between them.
+  std::vector<int> ends, images;
+  std::vector<double> dx;
+  for (const model::AbsorbingEnd& end : m.absorbing_ends) {
+    const int a = ahead[static_cast<std::size_t>(end.node)];
+    const int b = behind[static_cast<std::size_t>(end.node)];
+    ends.push_back(end.node);
+    images.push_back(a != model::kWindowEnters ? a : b);
+    dx.push_back(a != model::kWindowEnters ? -w.shift_x() : w.shift_x());
+    if (images.back() == model::kWindowEnters)
+      throw Error("catenary.window: an end of the window has no image inside it");
+  }
+  StaticHolds holds;
+  holds.catenary_alone = true;
+  for (const int end : ends) {  // first where the builder put them
+    const model::Node& node = m.nodes[static_cast<std::size_t>(end)];
+    holds.ends_at.push_back({end, node.position, node.tangent});
+  }
+  double moved = 0.0;
+  int round = 0;
+  for (double change = 1.0; change > kAgreement; ++round) {
+    if (round == kMaxRounds)
+      throw NumericalError(
+          "catenary.window: the window's ends did not settle where the line "
+          "has them in " +
+          std::to_string(kMaxRounds) + " static solves (last change " + std::to_string(change) +
+          " m)");
+    system.reference_state(q_line);
+    solve_statics_holding(system, q_line, cl, holds);
+    const std::vector<StaticHolds::End> at = ends_of(system, q_line, images);
+    change = 0.0;
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      StaticHolds::End& end = holds.ends_at[i];
+      const Vec3 position = at[i].position + Vec3(dx[i], 0.0, 0.0);
+      // A slope's change as the displacement it makes over a metre of wire.
+      change =
+          std::max({change, (position - end.position).norm(), (at[i].slope - end.slope).norm()});
+      moved =
+          std::max(moved, (position - m.nodes[static_cast<std::size_t>(end.node)].position).norm());
+      end.position = position;
+      end.slope = at[i].slope;
+    }
+  }
+  holds.catenary_alone = false;
+  const solvers::StaticReport report = solve_statics_holding(system, q, cl, holds);
+  if (mpi_rank(system.comm()) == 0) {
+    std::printf(
+        "window: its ends held where the line has them (%d static solves of the catenary "
+        "alone; they moved up to %.3g mm from where the builder put them)\n",
+        round, 1e3 * moved);
+    std::printf("initial static equilibrium: %d load steps, %d Newton iterations, |f| = %.3e N\n",
+                report.n_load_steps, report.n_newton_iterations, report.residual_norm);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace catena::app
