@@ -29,27 +29,41 @@ WindowMover::WindowMover(assembly::SecondOrderSystem& system, Vec q_line) : syst
   v_ = system.create_vector();
   a_ = system.create_vector();
   std::vector<PetscInt> from, to;
-  const auto id = [&](int node) {
-    return std::to_string(m.nodes[static_cast<std::size_t>(node)].id);
-  };
+  std::string mismatch;  // this rank's, agreed on before any collective call
   for (const int n : dofs.owned_nodes()) {
     const int image = images[static_cast<std::size_t>(n)];
     if (image == model::kWindowEnters) continue;
-    if (dofs.node_dofs(image) != dofs.node_dofs(n))
-      throw Error("catenary.window: nodes " + id(n) + " and " + id(image) +
-                  ", one period apart, have different unknowns");
-    const int x = model::kind_info(dofs.node_kind(n)).position;
+    if (dofs.node_kind(image) != dofs.node_kind(n)) {
+      mismatch = "nodes " + std::to_string(m.nodes[static_cast<std::size_t>(n)].id) + " and " +
+                 std::to_string(m.nodes[static_cast<std::size_t>(image)].id) +
+                 ", one period apart, have different unknowns";
+      continue;
+    }
+    const model::UnknownKindInfo& kind = model::kind_info(dofs.node_kind(n));
+    const model::Node& at = m.nodes[static_cast<std::size_t>(image)];
     for (int k = 0; k < dofs.node_dofs(n); ++k) {
       const PetscInt row = dofs.global_dof(n, k), image_row = dofs.global_dof(image, k);
       if (row < 0) continue;
-      if (image_row < 0)
-        throw Error("catenary.window: node " + id(image) + " holds a component that node " + id(n) +
-                    ", one period behind it, leaves free");
-      from.push_back(image_row);
-      to.push_back(row);
-      if (k == x && image != n) x_rows_.push_back(row - dofs.first_owned());
+      const bool x = k == kind.position && image != n;
+      if (image_row >= 0) {
+        from.push_back(image_row);
+        to.push_back(row);
+        if (x) x_rows_.push_back(row - dofs.first_owned());
+        continue;
+      }
+      // The image holds the component (a registration's y, a fixed messenger support's z)
+      // where this node, a window's end, is free: the held (reference) value, at rest.
+      const bool slope = kind.gradients >= 0 && k >= kind.gradients;
+      const int d = k - (slope ? kind.gradients : kind.position);
+      const double held = slope ? at.tangent[d] : at.position[d];
+      fixed_rows_.push_back(row - dofs.first_owned());
+      fixed_values_.push_back(x ? held - window_of(m).shift_x() : held);
     }
   }
+  if (any_rank(system.comm(), !mismatch.empty()))
+    throw Error("catenary.window: " +
+                (mismatch.empty() ? std::string("a node and its image differ (another rank's)")
+                                  : mismatch));
   // The constraints' multipliers (a bilateral contact's, a pantograph mechanism's joints)
   // stay theirs.
   for (int c = 0; c < dofs.n_constraints(); ++c)
@@ -78,6 +92,7 @@ void WindowMover::move(Vec from, Vec to, bool positions) const {
   PetscScalar* q = nullptr;
   CATENA_PETSC(VecGetArray(to, &q));
   for (const PetscInt row : x_rows_) q[row] -= dx;
+  for (std::size_t i = 0; i < fixed_rows_.size(); ++i) q[fixed_rows_[i]] = fixed_values_[i];
   CATENA_PETSC(VecRestoreArray(to, &q));
 }
 
@@ -113,6 +128,7 @@ void WindowMover::before_step(solvers::TimeIntegrator& integrator) {
   system_.move_contacts_back(w.shift_arc());
   ++moves_;
   integrator.set_state(t, q_.get(), v_.get(), a_.get());
+  integrator.forget_jacobian();  // the contacts' couplings are on other elements now
   if (!announced_ && mpi_rank(system_.comm()) == 0) {
     std::printf(
         "window: moved %d span%s along the line at t = %g s (each time the first pantograph "

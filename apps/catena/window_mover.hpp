@@ -49,6 +49,9 @@ class WindowMover final : public solvers::StepBoundary {
   VecHandle q_line_, q_, v_, a_;
   VecScatter scatter_ = nullptr;  // each row from its image's row
   std::vector<PetscInt> x_rows_;  // local rows of the positions' x taken from another node
+  // Local rows whose image holds them fixed, and the values they take (at rest).
+  std::vector<PetscInt> fixed_rows_;
+  std::vector<double> fixed_values_;
   long moves_ = 0;
   bool announced_ = false;
 };

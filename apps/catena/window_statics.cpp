@@ -14,8 +14,8 @@
 namespace catena::app {
 namespace {
 
-constexpr double kAgreement = 1e-6;  // m (a slope's: the same over 1 m of wire)
-constexpr int kMaxRounds = 20;
+constexpr double kAgreement = 1e-5;  // m (a slope's: the same over 1 m of wire)
+constexpr int kMaxRounds = 50;
 
 // Collective. The position and slope r_x of `nodes` in q (free there), on every rank.
 std::vector<StaticHolds::End> ends_of(const assembly::SecondOrderSystem& system, Vec q,

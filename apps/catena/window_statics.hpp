@@ -8,10 +8,10 @@
 // off), and the window moves that into its inside. So each end is held where the line has
 // it, position and slope, found by a fixed point on the catenary alone (no pantographs):
 // each end takes its image's position (moved by the period) and slope, one period inside the
-// window, until they agree within 1 µm. The run then starts from the equilibrium with the
-// pantographs and the ends held there (the absorbing ends keep the force and the slope's
-// generalised force that held them: elements/absorbing_end.hpp), and the spans that enter
-// the window ahead start from the catenary's own.
+// window, until they agree within 10 µm (shape finding's tolerance is 0.1 mm). The run then starts
+// from the equilibrium with the pantographs and the ends held there (the absorbing ends keep the
+// force and the slope's generalised force that held them: elements/absorbing_end.hpp), and the
+// spans that enter the window ahead start from the catenary's own.
 #include <petscvec.h>
 
 #include "catena/assembly/second_order_system.hpp"

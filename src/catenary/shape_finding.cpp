@@ -369,6 +369,7 @@ ShapeFindingReport find_catenary_shape(MPI_Comm comm, model::Model& model,
   if (model.catenary->window) {
     repeat_middle_span(*model.catenary, found);
     report.dropper_lengths = found.lengths;  // as the run uses them
+    report.registration_preloads = found.preloads;
   }
   apply(found, model);
   return report;

@@ -147,11 +147,12 @@ std::optional<WindowMoves> window_moves(const Reader& r, const char* dataset, hs
 // A window's registration nodes stand, at each row, for the points of the line they are at:
 // x = reference x + moves × shift. Per point of the line any node reached, its height where a
 // node stood on it, else its static height (row 0 of a node one whole number of periods
-// from it): the line ahead of the window is at rest; behind it the point's motion is not
+// from it, the farthest from the pantographs' start `away_from`, whose static push does not
+// reach it): the line ahead of the window is at rest; behind it the point's motion is not
 // known, but the statistics use a point only while the pantograph is between its
 // neighbouring points, which the window holds.
 std::vector<post::RegistrationPoint> on_line(const std::vector<post::RegistrationPoint>& nodes,
-                                             const WindowMoves& w) {
+                                             const WindowMoves& w, double away_from) {
   const auto key = [](double x) { return std::llround(x * 1e4); };  // 0.1 mm
   std::map<long long, post::RegistrationPoint> points;
   const std::size_t rows = w.moves.size();
@@ -161,11 +162,15 @@ std::vector<post::RegistrationPoint> on_line(const std::vector<post::Registratio
       points[key(x)].reference_x = x;
     }
   for (auto& [unused, point] : points) {
-    const auto same_phase = std::find_if(nodes.begin(), nodes.end(), [&](const auto& node) {
+    const post::RegistrationPoint* same_phase = nullptr;
+    for (const post::RegistrationPoint& node : nodes) {
       const double periods = (point.reference_x - node.reference_x) / w.shift_x;
-      return std::abs(periods - std::round(periods)) < 1e-6;
-    });
-    point.z.assign(rows, same_phase == nodes.end() ? 0.0 : same_phase->z.front());
+      if (std::abs(periods - std::round(periods)) < 1e-6 &&
+          (!same_phase ||
+           std::abs(node.reference_x - away_from) > std::abs(same_phase->reference_x - away_from)))
+        same_phase = &node;
+    }
+    point.z.assign(rows, same_phase ? same_phase->z.front() : 0.0);
   }
   for (const post::RegistrationPoint& node : nodes)
     for (std::size_t k = 0; k < rows; ++k)
@@ -261,7 +266,8 @@ ContactRun read_contact_run(const std::string& path, UnfinishedRuns unfinished) 
   const Hdf5ErrorPrintingSuppressed quiet;
   const Reader r(path);
   if (const auto w = window_moves(r, layout::window_moves.path, run.n_samples))
-    run.registration_points = on_line(run.registration_points, *w);
+    run.registration_points =
+        on_line(run.registration_points, *w, run.pantographs.front().position.front());
   return run;
 }
 
@@ -363,7 +369,8 @@ ContactRun read_contact_run_steps(const std::string& path, UnfinishedRuns unfini
         window_moves(r, layout::step_window_moves.path, n_steps)->moves;
     w->moves.assign(n, first);
     for (std::size_t k = 1; k < n; ++k) w->moves[k] = steps[rows[k] - 1];
-    run.registration_points = on_line(run.registration_points, *w);
+    run.registration_points =
+        on_line(run.registration_points, *w, run.pantographs.front().position.front());
   }
   run.n_samples = n;
   run.time = std::move(t);

@@ -485,7 +485,10 @@ TransientWriter::TransientWriter(MPI_Comm comm, const std::string& path, const m
         const AttributeTarget target{group.get(), p};
         write_int64_attribute(target, attribute::index, static_cast<std::int64_t>(i));
         write_double_attribute(target, attribute::speed, model.contacts[i].speed);
-        write_double_attribute(target, attribute::start, model.contacts[i].start);
+        // Along the line (a catenary window's path starts where the window does).
+        const double origin =
+            model.catenary && model.catenary->window ? model.catenary->window->origin_arc() : 0.0;
+        write_double_attribute(target, attribute::start, model.contacts[i].start + origin);
         write_string_attribute(target, attribute::path,
                                model.paths[static_cast<size_t>(model.contacts[i].path)].name);
       });

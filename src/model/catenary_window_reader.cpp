@@ -21,18 +21,25 @@ constexpr std::int64_t kDefaultBehind = 2;
 struct FirstPantograph {
   double start = 0.0, velocity = 0.0;
   std::string name;
+  Field entry;
 };
 
 FirstPantograph first_pantograph(const Field& scene, const Field& window) {
   for (const Field& entry : scene.child("pantographs").items()) {
     if (!entry.is_map() || entry.child("path").text_or("") != kContactWirePath) continue;
     return {entry.child("start").real_or(0.0, RealRange::any("m")), read_path_velocity(entry),
-            entry.child("name").text_or("")};
+            entry.child("name").text_or(""), entry};
   }
   window.fail(
       "a window follows the pantographs along the line, but no pantograph runs on the "
       "contact wire (pantographs: [{path: contact_wire, ...}]); remove the key to model the "
       "whole line");
+}
+
+// m of contact wire per span: straight from support to support, from one side of the
+// stagger to the other.
+double wire_per_span(const CatenaryDesign& d, double span_length) {
+  return d.dimension == 3 ? std::hypot(span_length, 2.0 * d.stagger) : span_length;
 }
 
 void require_repeating_line(const Field& window, const CatenaryDesign& d) {
@@ -109,13 +116,16 @@ std::optional<CatenaryWindow> read_catenary_window(const Field& catenary, const 
                                " models no less than the line: remove the key, or describe "
                                "the longer line (spans)");
   const FirstPantograph p = first_pantograph(scene, window);
-  if (!(p.velocity > 0.0))
-    window.fail("pantograph '" + p.name +
-                "' does not run forward along the line (speed > 0, direction: forward): a "
-                "window moves forward only");
+  if (!(p.velocity > 0.0)) {
+    const Field direction = p.entry.child("direction");
+    (direction.present() ? direction : p.entry)
+        .fail("pantograph '" + p.name +
+              "' does not run forward along the line (speed > 0, direction: forward): a "
+              "catenary.window moves forward only");
+  }
   // The window starts `behind` spans before the pantograph's span, on a multiple of the
   // period so that the stagger's sides are the line's.
-  const int span = static_cast<int>(std::floor(p.start / w.span_length));
+  const int span = static_cast<int>(std::floor(p.start / wire_per_span(d, w.span_length)));
   w.origin_span =
       static_cast<int>(std::floor(static_cast<double>(span - w.behind) / w.period)) * w.period;
   return w;

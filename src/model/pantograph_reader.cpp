@@ -84,11 +84,13 @@ Vec3 travel_direction(const Model& m, const ElementPath& path, double s, double 
 // on the path from start to where the speed takes it by the end, and the modal model (which
 // takes contacts as forces) cannot hold it.
 void check_bilateral_contact(const Field& type, const Model& m, const MovingContact& c) {
+  // A window keeps its pantographs inside it (place_pantograph_in_window).
+  const bool window = m.catenary && m.catenary->window;
   double length = 0.0;
   path_point(m, m.paths[static_cast<size_t>(c.path)], 0.0, length);
   const double t_end = m.analysis == AnalysisType::dynamic ? m.dynamic_options.duration : 0.0;
   const double from = c.start, to = c.start + c.speed * t_end;
-  if (std::min(from, to) < 0.0 || std::max(from, to) > length)
+  if (!window && (std::min(from, to) < 0.0 || std::max(from, to) > length))
     type.fail(
         "a bilateral contact holds the head on the wire for the whole run, so its contact "
         "point must stay on the path: it runs from " +

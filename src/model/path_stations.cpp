@@ -60,7 +60,7 @@ PathReach contact_reach(const Model& model, const MovingContact& contact,
     // the step that takes the first past it (at most a span).
     const CatenaryWindow& w = *model.catenary->window;
     const double d = contact.start - model.contacts.front().start;
-    s0 = w.behind * w.span_arc + d;
+    s0 = std::min(w.behind * w.span_arc + d, contact.start);
     s1 = (w.behind + w.period + 1) * w.span_arc + d;
   }
   const double low = std::min(s0, s1) - kMargin, high = std::max(s0, s1) + kMargin;

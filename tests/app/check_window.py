@@ -13,8 +13,13 @@ the window moves one span back at the steps ending after 0.06048 s and 0.78048 s
   RESTARTED: the window stopped at 0.5 s (after its first move) and continued with
              --restart: the same run and moves (1e-5 N: the first run's last step, cut to
              land on 0.5 s, differs from dt by round-off).
-Usage: check_window.py WINDOW.h5 LINE.h5 NP2.h5 RESTARTED.h5
+  STATS:     `catena stats` of the window and of the line over the evaluation span (180 m to
+             240 m): sigma and the uplift at the supports (each registration point of
+             the line followed through the window) within 3 %.
+Usage: check_window.py WINDOW.h5 LINE.h5 NP2.h5 RESTARTED.h5 CATENA
 """
+import json
+import subprocess
 import sys
 
 import h5py
@@ -79,6 +84,17 @@ check(len(restarted["force"]) == len(window["force"]) and
       np.abs(restarted["force"] - window["force"]).max() < 1e-5 and
       np.array_equal(restarted["moves"], window["moves"]),
       "stopped at 0.5 s and restarted: the same steps and moves")
+
+def statistics(path):
+    out = subprocess.run([sys.argv[5], "stats", path, "--json"], check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)["pantographs"][0]
+
+
+ws, ls = statistics(sys.argv[1]), statistics(sys.argv[2])
+for key in ("std", "max_uplift_at_support"):
+    check(abs(ws[key] - ls[key]) < 0.03 * abs(ls[key]),
+          f"catena stats {key}: window {ws[key]:.5g}, line {ls[key]:.5g}")
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed")

@@ -135,7 +135,7 @@ TEST(CatenaryWindow, BadInputNamesTheKeyAndWhatIsAccepted) {
       {{"analysis.structure=modal"}, {"analysis.structure", "not available"}},
       {{"integrator.type=bdf"}, {"integrator.type", "cannot follow a window"}},
       {{"masses=[{node: 1, mass: 2}]"}, {"masses", "catenary and its pantographs only"}},
-      {{"pantographs[0].direction=backward"}, {"catenary.window", "forward"}},
+      {{"pantographs[0].direction=backward"}, {"pantographs[0].direction", "forward"}},
       {{two_pantographs("speed_kmh: 250, start: 0")}, {"pantographs[1]", "same speed"}},
       {{two_pantographs("speed_kmh: 300, start: 300")}, {"pantographs[1].start", "more spans"}},
   };

@@ -153,6 +153,12 @@ class TimeIntegrator {
   // An empty `in` (an older checkpoint) changes nothing. Throws catena::Error if an entry
   // is missing.
   virtual void restore_resume_state(const ResumeState& in) { (void)in; }
+
+  // Not collective. The state set last (set_state) lies elsewhere in the model than the
+  // one before it (a moving window's state moved back a span): a Jacobian the method
+  // reuses belongs to the old place (a contact's coupling on another element) and is to be
+  // evaluated afresh. Methods that discard it in set_state already need nothing.
+  virtual void forget_jacobian() {}
   // Whether the two above carry everything, so that a restart on the same ranks continues
   // bit for bit.
   virtual bool resumes_exactly() const { return false; }

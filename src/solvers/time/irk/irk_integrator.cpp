@@ -424,6 +424,8 @@ void IrkIntegrator::set_state(double t, Vec q, Vec v, Vec a) {
   m.h_last = 0.0;  // no step behind this state: dense output is the state itself
 }
 
+void IrkIntegrator::forget_jacobian() { impl_->newton->invalidate_tangent(); }
+
 StepOutcome IrkIntegrator::attempt(double h, const ErrorTolerance* tol) {
   Impl& m = *impl_;
   m.h = h;

@@ -76,6 +76,7 @@ class IrkIntegrator final : public StepStateIntegrator {
   int estimate_order() const override;
   int velocity_order() const override;
   void set_state(double t, Vec q, Vec v, Vec a) override;
+  void forget_jacobian() override;
   StepOutcome attempt(double h, const ErrorTolerance* tol) override;
   void accept() override;
   void interpolate(double t, Vec q, Vec v) override;
