@@ -76,7 +76,19 @@ void solve_window_statics(assembly::SecondOrderSystem& system, Vec q, Vec q_line
   }
   double moved = 0.0;
   int round = 0;
+  const double start = MPI_Wtime();
+  double last_line = start;  // a progress line once cl.progress_seconds have passed
   for (double change = 1.0; change > kAgreement; ++round) {
+    if (const double now = MPI_Wtime(); round > 0 && now - last_line >= cl.progress_seconds) {
+      last_line = now;
+      if (mpi_rank(system.comm()) == 0) {
+        std::printf(
+            "progress: window statics, static solve %d of the catenary alone, the ends moved "
+            "%.3g mm in the last (agreed at %.3g mm), wall %.0f s\n",
+            round, 1e3 * change, 1e3 * kAgreement, now - start);
+        std::fflush(stdout);
+      }
+    }
     if (round == kMaxRounds)
       throw NumericalError(
           "catenary.window: the window's ends did not settle where the line "
