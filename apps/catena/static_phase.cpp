@@ -41,11 +41,7 @@ solvers::StaticReport solve_statics_holding(assembly::SecondOrderSystem& system,
   for (const StaticHolds::End& end : holds.ends_at) {
     const int slope = model::kind_info(system.dof_map().node_kind(end.node)).gradients;
     hold(end.node, 7u << static_cast<unsigned>(slope));
-    for (model::Support& support : held.supports)
-      if (support.node == end.node) {
-        support.held_at = end.position;
-        support.held_slope = end.slope;
-      }
+    held.held_places.push_back({end.node, end.position, end.slope});
   }
   if (holds.catenary_alone) {
     // As shape finding does (catenary/shape_finding.hpp): lumped stages stand on their

@@ -93,14 +93,13 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   // A slider's arc length along its path (the fourth slot of its node, model::Slider).
   for (const model::Slider& slider : model.sliders)
     node_reference_[kBlock * static_cast<size_t>(slider.node) + 3] = slider.start;
-  // A support that holds its node elsewhere (model::Support::held_at, held_slope).
-  for (const model::Support& support : model.supports) {
-    const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(support.node));
-    double* block = &node_reference_[kBlock * static_cast<size_t>(support.node)];
+  // Supports that hold their nodes elsewhere (model::HeldPlace).
+  for (const model::HeldPlace& place : model.held_places) {
+    const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(place.node));
+    double* block = &node_reference_[kBlock * static_cast<size_t>(place.node)];
     for (int d = 0; d < 3; ++d) {
-      if (support.held_at && kind.position >= 0) block[kind.position + d] = (*support.held_at)[d];
-      if (support.held_slope && kind.gradients >= 0)
-        block[kind.gradients + d] = (*support.held_slope)[d];
+      if (kind.position >= 0) block[kind.position + d] = place.position[d];
+      if (kind.gradients >= 0) block[kind.gradients + d] = place.slope[d];
     }
   }
 

@@ -49,10 +49,15 @@ struct Support {
   // catenary's nodes): a modelling restriction, not a support, so a node held by them alone
   // has no reaction output (model/supported_nodes.hpp).
   unsigned plane_mask = 0;
-  // Where the fixed position DOFs (and slope DOFs r_x) hold the node, if not at its
-  // reference: the static start of a catenary window holds its ends where the line has
-  // them (set by the run, never by a scene: the elements keep the reference geometry).
-  std::optional<Vec3> held_at, held_slope;
+};
+
+// Where a support holds its node's position and slope r_x, if not at its reference: the
+// static start of a catenary window holds its ends where the line has them (set by the
+// run, never by a scene: the elements keep the reference geometry).
+struct HeldPlace {
+  int node = 0;
+  Vec3 position = Vec3::Zero();  // m
+  Vec3 slope = Vec3::Zero();     // r_x
 };
 
 // A rigid plane that nodes may touch (elements/surface_contact.hpp): a unilateral penalty
@@ -442,6 +447,7 @@ struct Model {
   std::vector<Node> nodes;
   std::vector<ElementDesc> elements;
   std::vector<Support> supports;
+  std::vector<HeldPlace> held_places;  // supports holding their nodes elsewhere
   std::vector<ElasticSupport> elastic_supports;
   std::vector<AbsorbingEnd> absorbing_ends;
   std::vector<Surface> surfaces;
