@@ -470,15 +470,6 @@ void solve_initial_statics(assembly::SecondOrderSystem& system, Vec q, const Com
     std::printf("%s\n", guess.c_str());
 }
 
-// Collective. A catenary window's static start into q (the reference state on entry), and
-// its mover, which the catenary's own static state is given to for the spans that enter.
-std::unique_ptr<WindowMover> start_window(assembly::SecondOrderSystem& system, Vec q,
-                                          const CommandLine& cl) {
-  VecHandle q_line = system.create_vector();
-  solve_window_statics(system, q, q_line.get(), cl);
-  return std::make_unique<WindowMover>(system, q_line.get());
-}
-
 // Collective. The absorbing ends' laws from the run's initial state q0 (before initial
 // displacements and velocities), with a line saying what they are.
 void calibrate_absorbing_ends(assembly::SecondOrderSystem& system, Vec q0, int rank) {

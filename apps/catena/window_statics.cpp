@@ -124,4 +124,11 @@ void solve_window_statics(assembly::SecondOrderSystem& system, Vec q, Vec q_line
   }
 }
 
+std::unique_ptr<WindowMover> start_window(assembly::SecondOrderSystem& system, Vec q,
+                                          const CommandLine& cl) {
+  VecHandle q_line = system.create_vector();
+  solve_window_statics(system, q, q_line.get(), cl);
+  return std::make_unique<WindowMover>(system, q_line.get());
+}
+
 }  // namespace catena::app

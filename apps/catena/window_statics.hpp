@@ -14,8 +14,11 @@
 // spans that enter the window ahead start from the catenary's own.
 #include <petscvec.h>
 
+#include <memory>
+
 #include "catena/assembly/second_order_system.hpp"
 #include "cli.hpp"
+#include "window_mover.hpp"
 
 namespace catena::app {
 
@@ -23,5 +26,10 @@ namespace catena::app {
 // (any values on entry) the catenary's own static state with the ends in the same place.
 void solve_window_statics(assembly::SecondOrderSystem& system, Vec q, Vec q_line,
                           const CommandLine& cl);
+
+// Collective. A catenary window's static start into q (the reference state on entry), and
+// its mover, which the catenary's own static state is given to for the spans that enter.
+std::unique_ptr<WindowMover> start_window(assembly::SecondOrderSystem& system, Vec q,
+                                          const CommandLine& cl);
 
 }  // namespace catena::app
