@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "catena/model/contact_mode.hpp"
 #include "number_format.hpp"
 #include "summary_table.hpp"
 
@@ -66,15 +67,6 @@ std::vector<std::string> followers(const Model& m) {
                         " m behind '", ahead->name, "'"));
   }
   return out;
-}
-
-// The contact spring's mode: the head on the penalty spring against the contact wire's
-// mass over one element, ω = √(k (1/m_head + 1/(μ L_e))).
-double contact_mode(const MovingContact& c, const WireWave& w) {
-  const double m_wire = w.mass_per_length * w.element_length;
-  const double m_head = c.stages.empty() ? 0.0 : c.stages.front().mass;
-  const double inverse_mass = 1.0 / m_wire + (m_head > 0.0 ? 1.0 / m_head : 0.0);
-  return std::sqrt(c.stiffness * inverse_mass);
 }
 
 // The static pull of each dropper on the contact wire, estimated as the wire's weight
@@ -167,7 +159,7 @@ void advise_structure(const Model& m, SummaryTable& t) {
       t.row("contact mode", cat("'", c.name, "': none (bilateral: no contact spring)"));
       continue;
     }
-    const double omega = contact_mode(c, wave);
+    const double omega = contact_mode_omega(m, c);
     const double dt_omega = omega * dt;
     t.row("contact mode",
           cat("'", c.name, "': ", format_number(omega), " rad/s (head on ",

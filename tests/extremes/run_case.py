@@ -163,6 +163,10 @@ def main():
     roughness = re.search(r"roughness ([0-9.]+)", out)
     if roughness:
         verdict += f", contact force roughness {roughness.group(1)}"
+    # A multistep method's step against the contact spring's own mode, said before the run.
+    under_stepped = re.search(r"steps a period \(dt\*omega = ([0-9.e+-]+)", out)
+    if under_stepped:
+        verdict += f", contact mode under-stepped (dt*omega {under_stepped.group(1)})"
     print(out)
     print(f"extremes: {os.path.basename(a.output)}: {verdict}")
     for problem in problems:
