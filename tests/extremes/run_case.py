@@ -165,7 +165,7 @@ def main():
         verdict += f", contact force roughness {roughness.group(1)}"
     # A multistep method's step against the contact spring's own mode, said before the run.
     under_stepped = re.search(r"steps a period \(dt\*omega = ([0-9.e+-]+)", out)
-    if under_stepped:
+    if under_stepped and run.returncode == 0:  # a stop's verdict ends with its cause
         verdict += f", contact mode under-stepped (dt*omega {under_stepped.group(1)})"
     print(out)
     print(f"extremes: {os.path.basename(a.output)}: {verdict}")
