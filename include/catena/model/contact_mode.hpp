@@ -2,10 +2,10 @@
 // The contact spring's own mode: a pantograph's head on its penalty spring against the
 // wire's mass over one element, the highest frequency a penalty contact adds to a scene,
 //   ω = √(k_c (1/m_head + 1/(μ L_e))),
-// with k_c the contact stiffness, m_head the head's (first stage's) mass, μ the path's
-// mass per length and L_e its first element's length. `catena check` compares dt·ω with
-// what resolves it (model/structure_advice.cpp), and both check and run warn where a
-// multistep method's numerical damping hides an unresolved one (model/moving_summary.cpp).
+// with k_c the contact stiffness, m_head the head's (first stage's) mass and μ L_e the
+// mass of the path's lightest element (its ends' distance as L_e). `catena check` compares dt·ω
+// with what resolves it (model/structure_advice.cpp), and both check and run warn where a multistep
+// method's numerical damping hides an unresolved one (model/moving_summary.cpp).
 //
 // Not collective: plain numbers.
 #include <cmath>
