@@ -31,6 +31,7 @@
 #include "catena/io/transient_writer.hpp"
 #include "catena/io/transient_xdmf.hpp"
 #include "catena/post/contact_resolution.hpp"
+#include "catena/post/contact_strikes.hpp"
 #include "catena/solvers/modal/modal_integrator.hpp"
 #include "catena/solvers/statics/hanging_cable_guess.hpp"
 #include "catena/solvers/statics/static_solver.hpp"
@@ -40,6 +41,7 @@
 #include "catena/solvers/time/transient_solver.hpp"
 #include "commands.hpp"
 #include "contact_summary.hpp"
+#include "contact_warnings.hpp"
 #include "initial_state.hpp"
 #include "log_stage.hpp"
 #include "memory_report.hpp"
@@ -177,8 +179,11 @@ class OutputObserver : public solvers::TransientObserver {
     if (window_) record.window_moves = window_->moves();
     refuse_not_finite(r, record);
     resolution_.resize(record.contact_force.size());
-    for (std::size_t c = 0; c < record.contact_force.size(); ++c)
+    strikes_.resize(record.contact_force.size());
+    for (std::size_t c = 0; c < record.contact_force.size(); ++c) {
       resolution_[c].add(record.contact_force[c]);
+      strikes_[c].add(record.contact_force[c]);
+    }
     {
       const LogStage stage("Output");
       writer_.append_step(record);
@@ -205,6 +210,8 @@ class OutputObserver : public solvers::TransientObserver {
 
   // Per contact (model order), how well this run's steps resolved its force.
   const std::vector<post::ContactResolution>& contact_resolution() const { return resolution_; }
+  // Per contact (model order), how often it lost contact and struck the wire again.
+  const std::vector<post::ContactStrikes>& contact_strikes() const { return strikes_; }
 
   // Collective. Between samples the guard does not see the state: a step record whose
   // contact force or registration height is not finite stops the run before it is written.
@@ -284,6 +291,7 @@ class OutputObserver : public solvers::TransientObserver {
   std::optional<double> last_checkpoint_time_;
   bool warned_of_cut_ = false;
   std::vector<post::ContactResolution> resolution_;
+  std::vector<post::ContactStrikes> strikes_;
   solvers::StateGuard guard_;                   // on the state a checkpoint saves
   std::optional<solvers::DriverState> driver_;  // after the last step (none before one)
   const WindowMover* window_ = nullptr;
@@ -297,38 +305,6 @@ void warn_fixed_steps_cut(const solvers::TransientReport& r) {
                "catena: warning: %ld fixed step%s cut after Newton failures; the smallest "
                "step taken was %g s; a smaller integrator.dt would avoid the retries\n",
                r.fixed_steps_cut, r.fixed_steps_cut == 1 ? " was" : "s were", r.smallest_cut_dt);
-}
-
-// Not collective (rank 0). Names each pantograph whose contact force the steps did not
-// resolve (post/contact_resolution.hpp): its statistics are then the step's.
-void warn_unresolved_contact(const model::Model& m,
-                             const std::vector<post::ContactResolution>& resolution) {
-  for (std::size_t c = 0; c < resolution.size() && c < m.contacts.size(); ++c) {
-    if (!resolution[c].unresolved()) continue;
-    if (m.contacts[c].bilateral) {
-      std::fprintf(stderr,
-                   "catena: warning: pantograph '%s': the steps do not resolve its contact "
-                   "force (roughness %.2f > %.1f: the force changes from step to step by more "
-                   "than a sine with 9 steps per period does); a bilateral contact's force "
-                   "follows every wave of the wire under the head, and the statistics are then "
-                   "the step's, not the line's: halve integrator.dt until this warning goes "
-                   "(docs/accuracy.md, \"Where each method stops working\")\n",
-                   m.contacts[c].name.c_str(), resolution[c].roughness(),
-                   post::ContactResolution::kUnresolved);
-      continue;
-    }
-    std::fprintf(stderr,
-                 "catena: warning: pantograph '%s': the steps do not resolve its contact force "
-                 "(roughness %.2f > %.1f: the force changes from step to step by more than a "
-                 "sine with 9 steps per period does); the contact spring's own mode "
-                 "(contact.stiffness %g N/m between the head and the wire) is the usual cause, "
-                 "and the force statistics are then the step's, not the line's: halve "
-                 "integrator.dt until this warning goes, lower contact.stiffness, or use an "
-                 "L-stable method (radau) (docs/accuracy.md, \"Where each method stops "
-                 "working\")\n",
-                 m.contacts[c].name.c_str(), resolution[c].roughness(),
-                 post::ContactResolution::kUnresolved, m.contacts[c].stiffness);
-  }
 }
 
 // Not collective (rank 0). The ParaView description of the closed output (all its samples,
@@ -746,6 +722,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     for (const post::ContactResolution& r : observer.contact_resolution())
       roughest = std::max(roughest, r.roughness());
     run_statistics.emplace_back("contact_force_roughness", roughest);
+    std::size_t most = 0;
+    for (const post::ContactStrikes& s : observer.contact_strikes())
+      most = std::max(most, s.strikes());
+    run_statistics.emplace_back("contact_strikes", static_cast<double>(most));
   }
   std::optional<RealtimeSummary> realtime_summary;
   if (realtime.enabled()) {
@@ -765,6 +745,7 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
   if (rank == 0) {
     warn_fixed_steps_cut(report);
     warn_unresolved_contact(m, observer.contact_resolution());
+    warn_repeated_strikes(m, observer.contact_strikes());
     std::printf(
         "%s at t = %g s: %ld steps (%ld rejected, dt %.3g..%.3g s), %ld Newton "
         "iterations, %ld factorisations, %ld residual evaluations, %.2f s wall, of which "

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "catena/post/contact_resolution.hpp"
+#include "catena/post/contact_strikes.hpp"
 
 namespace catena::post {
 namespace {
@@ -48,6 +49,33 @@ TEST(ContactResolution, ConstantOrShortSeriesIsZero) {
   for (int k = 0; k < 100; ++k) c.add(120.0);
   EXPECT_EQ(c.roughness(), 0.0);  // no spread
   EXPECT_EQ(c.steps(), 100u);
+}
+
+// A head that leaves the wire and lands again: losses and landings counted on the step
+// series, a zero force being off the wire.
+TEST(ContactStrikes, CountsLossesAndLandings) {
+  ContactStrikes s;
+  for (const double f : {120.0, 80.0, 0.0, 0.0, 150.0, 90.0, 0.0, 40.0, 0.0}) s.add(f);
+  EXPECT_EQ(s.losses(), 3u);
+  EXPECT_EQ(s.strikes(), 2u);
+  EXPECT_FALSE(s.repeated());  // two strikes: below kRepeated
+  s.add(60.0);
+  EXPECT_EQ(s.strikes(), 3u);
+  EXPECT_TRUE(s.repeated());
+}
+
+// Past the wire's wave speed the head leaves once and may come down once: not repeated. A
+// head that starts off the wire and lands is one strike; a contact never lost is none.
+TEST(ContactStrikes, OneLandingIsNotRepeated) {
+  ContactStrikes past;
+  for (const double f : {0.0, 0.0, 30.0, 0.0, 0.0}) past.add(f);
+  EXPECT_EQ(past.strikes(), 1u);
+  EXPECT_EQ(past.losses(), 1u);
+  EXPECT_FALSE(past.repeated());
+  ContactStrikes steady;
+  for (int k = 0; k < 100; ++k) steady.add(120.0 + 10.0 * std::sin(0.1 * k));
+  EXPECT_EQ(steady.strikes(), 0u);
+  EXPECT_EQ(steady.losses(), 0u);
 }
 
 }  // namespace
