@@ -347,6 +347,10 @@ void SecondOrderSystem::sum_forces(const EvalPoint& p, const std::vector<size_t>
   CATENA_PETSC(VecCopy(f_work_.get(), f));
 }
 
+void SecondOrderSystem::constraint_residual(const EvalPoint& p, Vec out) const {
+  sum_forces(p, constraints_, out, nullptr);
+}
+
 void SecondOrderSystem::force(const EvalPoint& p, Vec f, double* element_norm) {
   const LoggedEvent logged(log_events().force);
   double squares = 0.0;

@@ -353,6 +353,16 @@ void read_dynamics(const Field& scene, Model& model) {
           .fail("integrator type 'lobatto_iiic' takes no Coulomb friction (slider '" + slider.name +
                 "' has friction): its end-of-step multipliers are solved from a system linear "
                 "in them, which leaves the friction out; use hht, radau, bdf or park");
+  // Adams–Bashforth–Moulton's step limit is 1.28 over the highest frequency of K against M
+  // on the nodal unknowns (adams_pece_integrator.hpp); a slider's arc length is one of them
+  // and has no mass of its own, so that frequency is undefined.
+  if (!model.sliders.empty() && model.dynamic_options.integrator.type == "abm")
+    scene.child("integrator")
+        .child("type")
+        .fail("integrator type 'abm' takes no sliders (slider '" + model.sliders.front().name +
+              "'): a slider's arc length has no mass of its own, so the explicit method's "
+              "stability limit (from the highest frequency of K against M) is undefined; use "
+              "hht, radau, bdf or park");
   check_step_within_duration(scene.child("integrator").child("dt"), duration,
                              model.dynamic_options);
 }

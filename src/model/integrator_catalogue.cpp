@@ -94,8 +94,6 @@ constexpr std::array<IntegratorType, 12> kTypes{{
      .alias = "",
      .method = M::multistep,
      .embedded = E::always,
-     .constraint_refusal = "an explicit method on the acceleration-level constraints lets the "
-                           "positions drift from them",
      .max_order = 2,
      .multistep = true},
     {.name = "petsc",

@@ -132,6 +132,10 @@ class SecondOrderSystem {
   // Collective. β(t) of the velocity-level constraints G v = β in the multiplier slots, 0 in
   // the others: a prescribed motion's velocity.
   void constraint_velocity(const EvalPoint& p, Vec out) const;
+  // Collective. The constraint couplings' part of force() alone, without a pass over the
+  // elements: g(q, t) in the multiplier rows, Gᵀλ in the nodal ones (zero where q's
+  // multiplier slots are). What a projection onto g = 0 iterates on.
+  void constraint_residual(const EvalPoint& p, Vec out) const;
 
   // Collective. Replaces the element kernel of every model element for which
   // `linearize(element index)` is true by its linearisation about q0 (elements/

@@ -1,5 +1,7 @@
 #include "catena/solvers/time/consistent_acceleration.hpp"
 
+#include <cmath>
+
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/newton/direct_newton.hpp"
@@ -36,6 +38,7 @@ void AccelerationSolver::factor(Vec q, double t) {
   }
   CATENA_PETSC(KSPSetOperators(ksp_.get(), A, A));
   CATENA_PETSC(KSPSetUp(ksp_.get()));
+  ++factorizations_;
   while (enlarge_mumps_workspace(ksp_.get(), direct_solve_status(ksp_.get())))
     CATENA_PETSC(KSPSetUp(ksp_.get()));
   if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
@@ -82,6 +85,27 @@ double AccelerationSolver::project_velocity(double t, Vec q, Vec v) {
   CATENA_PETSC(VecNorm(v, NORM_INFINITY, &change));
   CATENA_PETSC(VecCopy(projected.get(), v));
   return change;
+}
+
+int AccelerationSolver::project_position(double t, Vec q, double tolerance, int max_steps) {
+  if (!algebraic_.active()) return 0;
+  algebraic_.zero_algebraic(q);
+  VecHandle step = system_.create_vector();
+  for (int k = 0;; ++k) {
+    system_.constraint_residual({q, nullptr, {}, t}, rhs_.get());  // nodal rows 0: λ = 0
+    PetscReal violation = 0.0;
+    CATENA_PETSC(VecNorm(rhs_.get(), NORM_INFINITY, &violation));
+    if (violation <= tolerance) return k;
+    if (k == max_steps || !std::isfinite(violation)) return -1;
+    if (!system_.constraints_linear()) factor(q, t);  // G at this state
+    CATENA_PETSC(VecScale(rhs_.get(), -1.0));
+    CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), step.get()));
+    if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
+      throw NumericalError("the positions' projection onto the constraints failed (" +
+                           status.describe() + ")");
+    algebraic_.zero_algebraic(step.get());
+    CATENA_PETSC(VecAXPY(q, 1.0, step.get()));
+  }
 }
 
 double project_initial_velocity(assembly::SecondOrderSystem& system, double t, Vec q, Vec v) {

@@ -34,6 +34,16 @@ class AccelerationSolver {
   // as an impulse through the joints would (the mass-weighted least change). v's
   // multiplier slots stay zero. Returns max |v′ − v| over the nodal slots.
   double project_velocity(double t, Vec q, Vec v);
+  // Collective. Moves q onto the positions the constraints allow at t, g(q′, t) = 0, by
+  // Newton steps towards the q′ nearest to q in the kinetic-energy norm,
+  //   [M  Gᵀ] [Δq]   [   0    ]
+  //   [G  0 ] [μ ] = [−g(q, t)],   q ← q + Δq,
+  // until max |g| ≤ tolerance (units of g: metres for a node's constraint, 1 for a body
+  // frame's). One step is exact for linear constraints. q's multiplier slots are zeroed.
+  // Returns the steps taken, or −1 if max_steps did not reach the tolerance.
+  int project_position(double t, Vec q, double tolerance, int max_steps);
+  // Not collective. Factorisations so far (one, or one per state with nonlinear G).
+  long factorizations() const { return factorizations_; }
 
  private:
   assembly::SecondOrderSystem& system_;
@@ -42,6 +52,7 @@ class AccelerationSolver {
   Mat mass_;
   KspHandle ksp_;
   VecHandle rhs_, target_;
+  long factorizations_ = 0;
 
   // Collective. Factors M, or the saddle-point matrix with G at (q, t); throws if singular.
   void factor(Vec q, double t);

@@ -9,6 +9,7 @@
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/core/error.hpp"
 #include "catena/solvers/modes/modal_analysis.hpp"
+#include "catena/solvers/time/algebraic_part.hpp"
 #include "catena/solvers/time/consistent_acceleration.hpp"
 #include "catena/solvers/time/multistep/multistep_formulas.hpp"
 
@@ -31,6 +32,7 @@ struct AdamsPeceIntegrator::Impl {
   StepState& state;
   MatHandle mass;
   std::unique_ptr<AccelerationSolver> acceleration;
+  std::unique_ptr<AlgebraicPart> algebraic;  // the multiplier slots, left out of the error
   // v and a at t₀ (the current point), t₋₁, ...; `known` of them valid.
   std::vector<VecHandle> v_back, a_back;
   std::vector<double> t_back;
@@ -42,12 +44,34 @@ struct AdamsPeceIntegrator::Impl {
   Impl(assembly::SecondOrderSystem& s, const AdamsPeceOptions& o, StepState& st)
       : system(s), options(o), state(st) {}
 
-  // a(t, q, v): one force evaluation and one solve with the factored mass matrix.
+  // a(t, q, v): one force evaluation and one solve with the factored mass matrix (with
+  // constraints the saddle-point matrix, which also gives λ into q's multiplier slots).
   void evaluate(double t, Vec q, Vec v, Vec a) {
     acceleration->solve(t, q, v, a);
     ++counters.residual_evaluations;
     ++counters.linear_solves;
+    counters.factorizations = acceleration->factorizations();
   }
+
+  // The seed paper's stabilisation (Pogorelov 1998, §3: its ABM3, which solves the
+  // equations of index 3, 2 and 1 at the corrected state): the corrected positions are
+  // moved onto g(q, t₁) = 0 and the velocities onto G v = β(t₁), each the nearest in the
+  // kinetic-energy norm, before the final evaluation gives a₁ and λ₁. Without it the
+  // acceleration-level constraints alone let the positions drift from g = 0 like t².
+  // False (q₁ not reached) if the position's Newton steps did not converge.
+  bool stabilise(double t1, Vec q1, Vec v1) {
+    PetscReal size = 0.0;
+    CATENA_PETSC(VecNorm(q1, NORM_INFINITY, &size));
+    const int steps =
+        acceleration->project_position(t1, q1, kProjectionTolerance * std::max(1.0, size), 8);
+    if (steps < 0) return false;
+    counters.linear_solves += steps + 1;
+    acceleration->project_velocity(t1, q1, v1);
+    counters.factorizations = acceleration->factorizations();
+    return true;
+  }
+  // Relative to the largest coordinate: a hundred round-offs of it.
+  static constexpr double kProjectionTolerance = 100.0 * std::numeric_limits<double>::epsilon();
 
   // y₁ = y₀ + Σ_j weights_j·derivative_j over the derivative's nodes (new first if `with_new`).
   static void add_integral(Vec out, Vec y0, const std::vector<double>& w, Vec fresh,
@@ -59,16 +83,70 @@ struct AdamsPeceIntegrator::Impl {
   }
 
   // The highest undamped frequency and damping rate at (t, q, v): the stability limit.
+  // With constraints, over the nodal unknowns alone (K's nodal block holds the constraints'
+  // Σ λ H): the motions the constraints allow are a subspace of those, and a pencil's largest
+  // eigenvalue on a subspace is at most its largest on the whole (Courant–Fischer), so the
+  // limit is safe, if sometimes short.
   void measure_spectrum(double t) {
     MatHandle K = system.create_matrix(), C;
     if (system.has_damping()) C = system.create_matrix();
     system.tangent_parts({state.q(), state.v(), {}, t}, K.get(), C.get());
     ++counters.jacobian_evaluations;
-    omega_max = highest_frequency(K.get(), mass.get());
-    if (C.get()) {
-      const double root = highest_frequency(C.get(), mass.get());  // sqrt of C's eigenvalue
+    MatHandle K_nodal, M_nodal, C_nodal;
+    Mat k = K.get(), m = mass.get(), c = C.get();
+    if (algebraic->active()) {
+      IsHandle nodal = nodal_rows();
+      CATENA_PETSC(
+          MatCreateSubMatrix(k, nodal.get(), nodal.get(), MAT_INITIAL_MATRIX, K_nodal.out()));
+      CATENA_PETSC(
+          MatCreateSubMatrix(m, nodal.get(), nodal.get(), MAT_INITIAL_MATRIX, M_nodal.out()));
+      k = K_nodal.get();
+      m = M_nodal.get();
+      refuse_massless(m);
+      if (c) {
+        CATENA_PETSC(
+            MatCreateSubMatrix(c, nodal.get(), nodal.get(), MAT_INITIAL_MATRIX, C_nodal.out()));
+        c = C_nodal.get();
+      }
+    }
+    omega_max = highest_frequency(k, m);
+    if (c) {
+      const double root = highest_frequency(c, m);  // sqrt of C's eigenvalue
       nu_max = root * root;
     }
+  }
+
+  // Collective. Throws NumericalError if a nodal unknown has no mass (a zero diagonal of M):
+  // its frequency, and with it the step limit, is undefined. (The constraints' saddle-point
+  // matrix may still be regular, so the acceleration solve does not catch it.)
+  static void refuse_massless(Mat m) {
+    VecHandle diagonal;
+    CATENA_PETSC(MatCreateVecs(m, diagonal.out(), nullptr));
+    CATENA_PETSC(MatGetDiagonal(m, diagonal.get()));
+    CATENA_PETSC(VecAbs(diagonal.get()));
+    PetscReal smallest = 0.0;
+    CATENA_PETSC(VecMin(diagonal.get(), nullptr, &smallest));
+    if (!(smallest > 0.0))
+      throw NumericalError(
+          "abm: an unknown without mass (its diagonal of M is zero) has no highest frequency, "
+          "so the explicit method's step limit is undefined; use hht, radau, bdf or park");
+  }
+
+  // Collective. The global indices of this rank's nodal (not multiplier) unknowns.
+  IsHandle nodal_rows() const {
+    const PetscScalar* mask = nullptr;
+    PetscInt n = 0, first = 0;
+    CATENA_PETSC(VecGetLocalSize(algebraic->mask(), &n));
+    CATENA_PETSC(VecGetOwnershipRange(algebraic->mask(), &first, nullptr));
+    std::vector<PetscInt> rows;
+    CATENA_PETSC(VecGetArrayRead(algebraic->mask(), &mask));
+    for (PetscInt i = 0; i < n; ++i)
+      if (PetscRealPart(mask[i]) == 0.0) rows.push_back(first + i);
+    CATENA_PETSC(VecRestoreArrayRead(algebraic->mask(), &mask));
+    IsHandle is;
+    CATENA_PETSC(ISCreateGeneral(system.comm(), static_cast<PetscInt>(rows.size()), rows.data(),
+                                 PETSC_COPY_VALUES, is.out()));
+    return is;
   }
 };
 
@@ -80,11 +158,6 @@ AdamsPeceIntegrator::AdamsPeceIntegrator(assembly::SecondOrderSystem& system,
                      "Adams-Bashforth-Moulton order " + std::to_string(options.order) +
                          "; accepted: 1 or 2 (ABM-3 and 4 in PECE form are unstable for "
                          "undamped modes at any step)");
-  if (system.has_constraints())
-    throw InputError({"", 0, "integrator.type"},
-                     "abm takes no Lagrange-multiplier constraints (an explicit method on the "
-                     "acceleration-level constraints lets the positions drift); use hht, bdf "
-                     "or park");
   impl_ = std::make_unique<Impl>(system, options, step_state());
   Impl& s = *impl_;
   const std::size_t points = static_cast<std::size_t>(options.order);
@@ -97,7 +170,8 @@ AdamsPeceIntegrator::AdamsPeceIntegrator(assembly::SecondOrderSystem& system,
   s.mass = system.create_matrix();
   system.jacobian({s.state.q(), nullptr, {}}, {0.0, 0.0, 1.0}, s.mass.get());
   s.acceleration = std::make_unique<AccelerationSolver>(system, s.mass.get());
-  ++s.counters.factorizations;
+  s.algebraic = std::make_unique<AlgebraicPart>(system, s.mass.get());
+  s.counters.factorizations = s.acceleration->factorizations();
 }
 
 AdamsPeceIntegrator::~AdamsPeceIntegrator() = default;
@@ -133,11 +207,16 @@ StepOutcome AdamsPeceIntegrator::attempt(double h, const ErrorTolerance* tol) {
   Impl::add_integral(s.q_pred.get(), s.state.q(), bashforth, nullptr, s.v_back, false);
   Impl::add_integral(s.v_pred.get(), s.state.v(), bashforth, nullptr, s.a_back, false);
   s.evaluate(t1, s.q_pred.get(), s.v_pred.get(), s.a_pred.get());
-  // C, E
+  // C, (project), E
   Impl::add_integral(s.state.pending_q(), s.state.q(), moulton, s.v_pred.get(), s.v_back, true);
   Impl::add_integral(s.state.pending_v(), s.state.v(), moulton, s.a_pred.get(), s.a_back, true);
-  s.evaluate(t1, s.state.pending_q(), s.state.pending_v(), s.state.pending_a());
   StepOutcome out;
+  if (s.system.has_constraints() && !s.stabilise(t1, s.state.pending_q(), s.state.pending_v())) {
+    out.failure = "the positions' projection onto the constraints did not converge";
+    s.state.discard_pending();
+    return out;
+  }
+  s.evaluate(t1, s.state.pending_q(), s.state.pending_v(), s.state.pending_a());
   PetscReal norm = 0.0;
   CATENA_PETSC(VecNorm(s.state.pending_a(), NORM_INFINITY, &norm));
   if (!std::isfinite(norm)) {  // the state guard names growth; this is an overflow
@@ -150,6 +229,7 @@ StepOutcome AdamsPeceIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (tol) {
     CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.q_pred.get(), s.state.pending_q()));
     CATENA_PETSC(VecScale(s.error.get(), milne_factor(k)));
+    s.algebraic->zero_algebraic(s.error.get());  // λ₁ − λ̂: forces, not positions
     out.error = weighted_error_norm(*tol, s.error.get(), s.state.q(), s.state.pending_q());
   }
   return out;

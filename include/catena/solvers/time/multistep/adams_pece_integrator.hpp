@@ -25,8 +25,11 @@
 // and ABM-5's reaches only hω = 0.26 (docs/integrators.md).
 // Error estimate: Milne's device with the constant-step error constants,
 //   e = C_M/(C_B − C_M) (q₁ − q̂) = −½ (k = 1), −⅙ (k = 2) times (q₁ − q̂).
-// Lagrange-multiplier constraints are refused (the acceleration-level solve would let the
-// positions drift from them: the seed paper's stabilised variants are not implemented).
+// Lagrange-multiplier constraints: each evaluation solves [M Gᵀ; G 0][a; λ] = [−f; γ], and
+// after the corrector the positions and velocities are projected onto g(q, t₁) = 0 and
+// G v = β(t₁) (the nearest in the kinetic-energy norm), so that they do not drift: the seed
+// paper's stabilisation that solves the equations of index 3, 2 and 1 at the corrected
+// state (its ABM3). The step limit is then taken over the nodal unknowns alone.
 #include <memory>
 
 #include "catena/assembly/second_order_system.hpp"
@@ -40,8 +43,8 @@ struct AdamsPeceOptions {
 
 class AdamsPeceIntegrator final : public StepStateIntegrator {
  public:
-  // Collective. Factors the mass matrix. Throws InputError for an order outside 1 to 2 or
-  // a system with constraints.
+  // Collective. Factors the mass matrix (with constraints, the saddle-point matrix). Throws
+  // InputError for an order outside 1 to 2.
   AdamsPeceIntegrator(assembly::SecondOrderSystem& system, const AdamsPeceOptions& options);
   ~AdamsPeceIntegrator() override;
 
