@@ -722,9 +722,10 @@ void run_dynamic(MPI_Comm comm, const CommandLine& cl, const model::Model& m) {
     for (const post::ContactResolution& r : observer.contact_resolution())
       roughest = std::max(roughest, r.roughness());
     run_statistics.emplace_back("contact_force_roughness", roughest);
-    std::size_t most = 0;
-    for (const post::ContactStrikes& s : observer.contact_strikes())
-      most = std::max(most, s.strikes());
+    std::size_t most = 0;  // over the penalty contacts (a bilateral one cannot strike)
+    const std::vector<post::ContactStrikes>& strikes = observer.contact_strikes();
+    for (std::size_t c = 0; c < strikes.size() && c < m.contacts.size(); ++c)
+      if (!m.contacts[c].bilateral) most = std::max(most, strikes[c].strikes());
     run_statistics.emplace_back("contact_strikes", static_cast<double>(most));
   }
   std::optional<RealtimeSummary> realtime_summary;

@@ -37,7 +37,8 @@ void warn_unresolved_contact(const model::Model& m,
 void warn_repeated_strikes(const model::Model& m,
                            const std::vector<post::ContactStrikes>& strikes) {
   for (std::size_t c = 0; c < strikes.size() && c < m.contacts.size(); ++c) {
-    if (!strikes[c].repeated()) continue;
+    // A bilateral contact cannot leave the wire: its force is a multiplier of either sign.
+    if (m.contacts[c].bilateral || !strikes[c].repeated()) continue;
     std::fprintf(stderr,
                  "catena: warning: pantograph '%s' lost contact %zu times and struck the wire "
                  "again %zu times: each strike is an impact far shorter than the contact "

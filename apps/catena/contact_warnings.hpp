@@ -17,7 +17,8 @@ void warn_unresolved_contact(const model::Model& m,
                              const std::vector<post::ContactResolution>& resolution);
 
 // Not collective (rank 0). Names each pantograph that struck the wire again
-// post::ContactStrikes::kRepeated times or more after losing contact.
+// post::ContactStrikes::kRepeated times or more after losing contact (penalty contacts: a
+// bilateral one's force is a multiplier that may change sign without leaving the wire).
 void warn_repeated_strikes(const model::Model& m, const std::vector<post::ContactStrikes>& strikes);
 
 }  // namespace catena::app

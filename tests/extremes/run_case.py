@@ -167,6 +167,10 @@ def main():
     under_stepped = re.search(r"steps a period \(dt\*omega = ([0-9.e+-]+)", out)
     if under_stepped and run.returncode == 0:  # a stop's verdict ends with its cause
         verdict += f", contact mode under-stepped (dt*omega {under_stepped.group(1)})"
+    # Repeated strikes after losses of contact: the loss of contact is then the step's too.
+    strikes = re.search(r"struck the wire again ([0-9]+) times", out)
+    if strikes and run.returncode == 0:
+        verdict += f", struck the wire again {strikes.group(1)} times"
     print(out)
     print(f"extremes: {os.path.basename(a.output)}: {verdict}")
     for problem in problems:

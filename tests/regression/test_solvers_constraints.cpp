@@ -232,10 +232,10 @@ TEST_P(ConstraintEquivalence, ClampByCoincidenceMovesAsSharedNode) {
 INSTANTIATE_TEST_SUITE_P(Methods, ConstraintEquivalence, testing::ValuesIn(constrained_methods()),
                          [](const auto& param_info) { return label(param_info.param); });
 
-// Adams–Bashforth–Moulton with the seed paper's stabilisation (positions and velocities
-// projected onto the constraints before the last evaluation): a pivot pinned by a
-// multiplier moves as one pinned by elimination, to round-off, since the projection of a
-// linear constraint is exact and the pinned node's predicted motion is then undone.
+// Adams–Bashforth–Moulton with constraints: a pivot pinned by a multiplier moves as one
+// pinned by elimination, to round-off (the acceleration-level solve gives the pinned node
+// a = 0, and the projection keeps it there). The projection itself is exercised by the
+// driven pivot below and by the squeezer's and the heavy top's nonlinear joints (app tests).
 TEST(ConstraintIntegrators, AdamsPeceMovesAsElimination) {
   catena::test::ensure_petsc();
   for (int order : {1, 2}) {

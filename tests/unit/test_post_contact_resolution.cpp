@@ -65,13 +65,18 @@ TEST(ContactStrikes, CountsLossesAndLandings) {
 }
 
 // Past the wire's wave speed the head leaves once and may come down once: not repeated. A
-// head that starts off the wire and lands is one strike; a contact never lost is none.
+// head that starts off the wire (or before its path) lands without a loss: no strike; a
+// contact never lost has none.
 TEST(ContactStrikes, OneLandingIsNotRepeated) {
   ContactStrikes past;
-  for (const double f : {0.0, 0.0, 30.0, 0.0, 0.0}) past.add(f);
+  for (const double f : {120.0, 0.0, 0.0, 30.0, 0.0, 0.0}) past.add(f);
   EXPECT_EQ(past.strikes(), 1u);
-  EXPECT_EQ(past.losses(), 1u);
+  EXPECT_EQ(past.losses(), 2u);
   EXPECT_FALSE(past.repeated());
+  ContactStrikes arriving;
+  for (const double f : {0.0, 0.0, 30.0, 40.0}) arriving.add(f);
+  EXPECT_EQ(arriving.strikes(), 0u);
+  EXPECT_EQ(arriving.losses(), 0u);
   ContactStrikes steady;
   for (int k = 0; k < 100; ++k) steady.add(120.0 + 10.0 * std::sin(0.1 * k));
   EXPECT_EQ(steady.strikes(), 0u);

@@ -13,7 +13,8 @@
 // right; a run at another step or with another method does (catena study, --error-bar). So
 // a run with kRepeated strikes or more says so. A head that leaves the wire once and comes
 // back once (past the wire's wave speed: one loss, at most one strike, the same for every
-// method) is not warned of.
+// method) is not warned of. Counted over the steps this process ran (a restart counts
+// afresh), for penalty contacts (a bilateral contact's force is a multiplier of either sign).
 //
 // Not collective: plain numbers.
 #include <cstddef>
@@ -27,13 +28,14 @@ class ContactStrikes {
   // The contact force after the next accepted step, N.
   void add(double force) {
     const bool off = !(force > 0.0);
-    if (started_ && off_ && !off) ++strikes_;
     if (started_ && !off_ && off) ++losses_;
+    if (off_ && !off && losses_ > strikes_) ++strikes_;  // a landing after a counted loss
     off_ = off;
     started_ = true;
   }
 
-  // Returns to the wire after a loss of contact.
+  // Returns to the wire after a counted loss of contact (a head that starts off the wire,
+  // or whose path begins later, lands without one: not a strike).
   std::size_t strikes() const { return strikes_; }
   // Losses of contact (transitions from on the wire to off it).
   std::size_t losses() const { return losses_; }

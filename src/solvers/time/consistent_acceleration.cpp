@@ -30,6 +30,16 @@ AccelerationSolver::AccelerationSolver(assembly::SecondOrderSystem& system, Mat 
 
 void AccelerationSolver::factor(Vec q, double t) {
   Mat A = mass_;
+  if (algebraic_.active() && !system_.constraints_linear()) {
+    // The same state as the last factorisation's (a projected state's velocity projection,
+    // then its acceleration): its factors serve.
+    PetscBool same = PETSC_FALSE;
+    if (factored_q_.get() && t == factored_t_) CATENA_PETSC(VecEqual(q, factored_q_.get(), &same));
+    if (same) return;
+    if (!factored_q_.get()) factored_q_ = system_.create_vector();
+    CATENA_PETSC(VecCopy(q, factored_q_.get()));
+    factored_t_ = t;
+  }
   if (algebraic_.active()) {
     // [M Gᵀ; G 0]: the constraints' rows and columns alone, the constant M added.
     system_.constraint_jacobian({q, nullptr, {}, t}, {0.0, 0.0, 0.0, 1.0, 1.0}, saddle_.get());
@@ -78,7 +88,8 @@ double AccelerationSolver::project_velocity(double t, Vec q, Vec v) {
   VecHandle projected = system_.create_vector();
   CATENA_PETSC(KSPSolve(ksp_.get(), rhs_.get(), projected.get()));
   if (const DirectSolveStatus status = direct_solve_status(ksp_.get()); status.failed())
-    throw NumericalError("the initial velocity's projection failed (" + status.describe() + ")");
+    throw NumericalError("the velocities' projection onto the constraints failed (" +
+                         status.describe() + ")");
   algebraic_.zero_algebraic(projected.get());
   CATENA_PETSC(VecAXPY(v, -1.0, projected.get()));  // v − v′
   PetscReal change = 0.0;

@@ -53,8 +53,12 @@ class AccelerationSolver {
   KspHandle ksp_;
   VecHandle rhs_, target_;
   long factorizations_ = 0;
+  // Nonlinear G: the state of the last factorisation (q with zero multiplier slots, t).
+  VecHandle factored_q_;
+  double factored_t_ = 0.0;
 
-  // Collective. Factors M, or the saddle-point matrix with G at (q, t); throws if singular.
+  // Collective. Factors M, or the saddle-point matrix with G at (q, t) (not again at the
+  // state of the last factorisation); throws if singular.
   void factor(Vec q, double t);
 };
 

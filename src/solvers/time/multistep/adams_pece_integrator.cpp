@@ -60,6 +60,7 @@ struct AdamsPeceIntegrator::Impl {
   // acceleration-level constraints alone let the positions drift from g = 0 like t².
   // False (q₁ not reached) if the position's Newton steps did not converge.
   bool stabilise(double t1, Vec q1, Vec v1) {
+    algebraic->zero_algebraic(q1);  // λ₀ (forces) out of the coordinates' size
     PetscReal size = 0.0;
     CATENA_PETSC(VecNorm(q1, NORM_INFINITY, &size));
     const int steps =

@@ -43,8 +43,9 @@ struct AdamsPeceOptions {
 
 class AdamsPeceIntegrator final : public StepStateIntegrator {
  public:
-  // Collective. Factors the mass matrix (with constraints, the saddle-point matrix). Throws
-  // InputError for an order outside 1 to 2.
+  // Collective. Factors the mass matrix (with linear constraints the saddle-point matrix;
+  // with nonlinear ones each solve factors it at its state). Throws InputError for an order
+  // outside 1 to 2.
   AdamsPeceIntegrator(assembly::SecondOrderSystem& system, const AdamsPeceOptions& options);
   ~AdamsPeceIntegrator() override;
 
