@@ -14,6 +14,7 @@
 
 #include "catena/model/integrator_catalogue.hpp"
 #include "catena/model/model.hpp"
+#include "catena/model/path_stations.hpp"
 
 namespace catena::model {
 
@@ -33,9 +34,7 @@ inline ContactMode contact_mode(const Model& m, const MovingContact& c) {
       mass_per_length = cable->mass_per_length;
     if (const auto* beam = std::get_if<BeamProps>(&e.props))
       mass_per_length = beam->mass_per_length;
-    const double length = (m.nodes[static_cast<std::size_t>(e.nodes.back())].position -
-                           m.nodes[static_cast<std::size_t>(e.nodes.front())].position)
-                              .norm();
+    const double length = element_chord(m, index);  // as the path's stations measure it
     const double mass = mass_per_length * length;
     if (mass > 0.0 && (wire_mass == 0.0 || mass < wire_mass)) {
       wire_mass = mass;
