@@ -64,6 +64,8 @@ def outcome(line):
     m = re.search(r"stopped \(exit 3\): (.*)", line)
     if m:
         cause = m.group(1)
+        if re.match(r"failed in each of [0-9]+ steps in a row", cause):
+            return "stops: step"  # fixed steps that fail at every step (transient_solver.cpp)
         return {"step size fell below its minimum": "stops: step",
                 "state is not finite": "stops: not finite",
                 "grew without bound": "stops: growth"}.get(cause, "stops")
