@@ -5,14 +5,8 @@
 
 # Joints: the slider-crank of meshes/slider_crank.yaml on 1 and 2 ranks (the slider's
 # position against the crank angle, the kinetic energy, the same on both).
-catena_app_test(run_slider_crank 0 "done at t = 0.5 s"
-                ${app} run meshes/slider_crank.yaml --set analysis.duration=0.5
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_slider_crank.h5)
-catena_app_test(run_slider_crank_np2 0 "done at t = 0.5 s"
-                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/slider_crank.yaml
-                --set analysis.duration=0.5 -o ${CMAKE_CURRENT_BINARY_DIR}/app_slider_crank_np2.h5)
-set_tests_properties(app_run_slider_crank app_run_slider_crank_np2 PROPERTIES
-                     FIXTURES_SETUP slider_crank_run)
+catena_app_run_on_1_and_2(slider_crank "done at t = 0.5 s"
+                          meshes/slider_crank.yaml --set analysis.duration=0.5)
 catena_app_check(slider_crank "slider_crank_run" check_slider_crank.py
                  ${CMAKE_CURRENT_BINARY_DIR}/app_slider_crank.h5
                  ${CMAKE_CURRENT_BINARY_DIR}/app_slider_crank_np2.h5)
@@ -162,15 +156,7 @@ catena_app_check(crane "crane_runs" check_crane.py ${CMAKE_CURRENT_BINARY_DIR}/a
                  ${CMAKE_CURRENT_BINARY_DIR}/app_crane_np2.h5)
 # A joint's dry friction, position servo and torque limit against closed forms
 # (tests/data/app/joint_servo_friction.yaml), on 1 and 2 ranks.
-catena_app_test(run_joint_servo 0 "done at t = 0.4 s"
-                ${app} run tests/data/app/joint_servo_friction.yaml
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_joint_servo.h5)
-catena_app_test(run_joint_servo_np2 0 "done at t = 0.4 s"
-                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run
-                tests/data/app/joint_servo_friction.yaml
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_joint_servo_np2.h5)
-set_tests_properties(app_run_joint_servo app_run_joint_servo_np2 PROPERTIES
-                     FIXTURES_SETUP joint_servo_run)
+catena_app_run_on_1_and_2(joint_servo "done at t = 0.4 s" tests/data/app/joint_servo_friction.yaml)
 catena_app_check(joint_servo "joint_servo_run" check_joint_servo.py
                  ${CMAKE_CURRENT_BINARY_DIR}/app_joint_servo.h5
                  ${CMAKE_CURRENT_BINARY_DIR}/app_joint_servo_np2.h5)
@@ -202,13 +188,7 @@ catena_app_test(run_joints_petsc_lu_irk_block_exit_2 2
 # Andrews' squeezer (meshes/squeezer.yaml): seven bodies, ten joints, against the published
 # reference solution at t = 0.03 s (positions to 1e-8 relative at the scene's 10 us step:
 # 8e-10 measured) and its energy balance, on 1 and 2 ranks.
-catena_app_test(run_squeezer 0 "done at t = 0.03 s"
-                ${app} run meshes/squeezer.yaml -o ${CMAKE_CURRENT_BINARY_DIR}/app_squeezer.h5)
-catena_app_test(run_squeezer_np2 0 "done at t = 0.03 s"
-                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/squeezer.yaml
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_squeezer_np2.h5)
-set_tests_properties(app_run_squeezer app_run_squeezer_np2 PROPERTIES
-                     FIXTURES_SETUP squeezer_run)
+catena_app_run_on_1_and_2(squeezer "done at t = 0.03 s" meshes/squeezer.yaml)
 catena_app_check(squeezer "squeezer_run" check_squeezer.py
                  ${CMAKE_CURRENT_BINARY_DIR}/app_squeezer.h5 --position-rtol 1e-8
                  --velocity-rtol 1e-4 --energy 1e-8

@@ -316,14 +316,8 @@ catena_app_test(run_taut_string_petsc_bdf_np2 0 "dynamics: petsc\\(bdf\\)"
 # Rigid bodies: the heavy top of meshes/heavy_top.yaml in steady precession on 1 and 2 ranks
 # (nutation, precession rate and pin force against the closed form, the same on both), and
 # what catena check says of it.
-catena_app_test(run_heavy_top 0 "done at t = 0.5 s"
-                ${app} run meshes/heavy_top.yaml --set analysis.duration=0.5
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top.h5)
-catena_app_test(run_heavy_top_np2 0 "done at t = 0.5 s"
-                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/heavy_top.yaml
-                --set analysis.duration=0.5 -o ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_np2.h5)
-set_tests_properties(app_run_heavy_top app_run_heavy_top_np2 PROPERTIES
-                     FIXTURES_SETUP heavy_top_run)
+catena_app_run_on_1_and_2(heavy_top "done at t = 0.5 s"
+                          meshes/heavy_top.yaml --set analysis.duration=0.5)
 catena_app_check(heavy_top "heavy_top_run" check_heavy_top.py
                  ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top.h5
                  ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_np2.h5)
@@ -342,14 +336,7 @@ catena_app_check(heavy_top_abm "heavy_top_abm_run" check_heavy_top.py
 # (9e-5 rad measured), the energy within 1e-8 (1.5e-9) and L_z within 1e-11 (8e-13) as a
 # symplectic method keeps them; a step beyond its stability limit is refused.
 set(rattle_top --set "integrator={type: rattle, dt: 0.001}")
-catena_app_test(run_heavy_top_rattle 0 "done at t = 2 s"
-                ${app} run meshes/heavy_top.yaml ${rattle_top}
-                -o ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_rattle.h5)
-catena_app_test(run_heavy_top_rattle_np2 0 "done at t = 2 s"
-                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/heavy_top.yaml
-                ${rattle_top} -o ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_rattle_np2.h5)
-set_tests_properties(app_run_heavy_top_rattle app_run_heavy_top_rattle_np2 PROPERTIES
-                     FIXTURES_SETUP heavy_top_rattle_run)
+catena_app_run_on_1_and_2(heavy_top_rattle "done at t = 2 s" meshes/heavy_top.yaml ${rattle_top})
 catena_app_check(heavy_top_rattle "heavy_top_rattle_run" check_heavy_top.py
                  ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_rattle.h5
                  ${CMAKE_CURRENT_BINARY_DIR}/app_heavy_top_rattle_np2.h5 --nutation 2e-4
