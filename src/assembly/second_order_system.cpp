@@ -63,21 +63,28 @@ std::vector<int> touched_nodes(const couplings::CouplingList& list) {
   return nodes;
 }
 
-constexpr size_t kBlock = model::kMaxBlockUnknowns;
-
-// A node's reference coordinates in its kind's layout: the position at the kind's position
-// slot, then the ANCF gradients (tangent, section y, section z) in threes from its
-// gradient slot to the block's end.
-void reference_block(const model::Node& node, const model::UnknownKindInfo& kind, double* out) {
-  if (kind.position >= 0)
-    for (int d = 0; d < 3; ++d) out[kind.position + d] = node.position[d];
-  if (kind.gradients < 0) return;
-  const Vec3* gradients[3] = {&node.tangent, &node.section_y, &node.section_z};
-  for (int b = 0; kind.gradients + 3 * b < kind.size; ++b)
-    for (int d = 0; d < 3; ++d) out[kind.gradients + 3 * b + d] = (*gradients[b])[d];
-}
-
 }  // namespace
+
+double SecondOrderSystem::reference_value(int node, int k) const {
+  const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(node));
+  const model::Node& n = model_->nodes[static_cast<size_t>(node)];
+  // Supports that hold their nodes elsewhere (model::HeldPlace): few, searched.
+  const model::HeldPlace* held = nullptr;
+  for (const model::HeldPlace& place : model_->held_places)
+    if (place.node == node) held = &place;
+  if (kind.position >= 0 && k >= kind.position && k < kind.position + 3)
+    return (held ? held->position : n.position)[k - kind.position];
+  if (kind.gradients >= 0 && k >= kind.gradients && k < kind.size) {
+    const int b = (k - kind.gradients) / 3, d = (k - kind.gradients) % 3;
+    if (b == 0) return (held ? held->slope : n.tangent)[d];
+    return (b == 1 ? n.section_y : n.section_z)[d];
+  }
+  // A slider's arc length along its path (the fourth slot of its node, model::Slider).
+  if (k == 3)
+    for (const model::Slider& slider : model_->sliders)
+      if (slider.node == node) return slider.start;
+  return 0.0;
+}
 
 SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
     : comm_(comm),
@@ -86,23 +93,6 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       couplings_(couplings::make_couplings(model, partition_.element_owner, partition_.node_owner,
                                            mpi_rank(comm))),
       dofs_(model, partition_, mpi_rank(comm), touched_nodes(couplings_)) {
-  node_reference_.assign(kBlock * model.nodes.size(), 0.0);
-  for (size_t n = 0; n < model.nodes.size(); ++n)
-    reference_block(model.nodes[n], model::kind_info(dofs_.node_kind(static_cast<int>(n))),
-                    &node_reference_[kBlock * n]);
-  // A slider's arc length along its path (the fourth slot of its node, model::Slider).
-  for (const model::Slider& slider : model.sliders)
-    node_reference_[kBlock * static_cast<size_t>(slider.node) + 3] = slider.start;
-  // Supports that hold their nodes elsewhere (model::HeldPlace).
-  for (const model::HeldPlace& place : model.held_places) {
-    const model::UnknownKindInfo& kind = model::kind_info(dofs_.node_kind(place.node));
-    double* block = &node_reference_[kBlock * static_cast<size_t>(place.node)];
-    for (int d = 0; d < 3; ++d) {
-      if (kind.position >= 0) block[kind.position + d] = place.position[d];
-      if (kind.gradients >= 0) block[kind.gradients + d] = place.slope[d];
-    }
-  }
-
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   std::vector<char> supported(model.nodes.size(), 0);
   for (const int node : model::supported_nodes(model)) supported[static_cast<size_t>(node)] = 1;
@@ -126,8 +116,7 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       } else {
         CATENA_ASSERT(key.component < dofs_.node_dofs(key.index),
                       "a coupling asks for a component its node's kind has");
-        fixed = node_reference_[kBlock * static_cast<size_t>(key.index) +
-                                static_cast<size_t>(key.component)];
+        fixed = reference_value(key.index, key.component);
         local = dofs_.local_dof(key.index, key.component);
         global = dofs_.global_dof(key.index, key.component);
         coefficient = dofs_.coefficient(key.index, key.component);
@@ -311,7 +300,7 @@ void SecondOrderSystem::reference_state(Vec q) const {
     // (the unknown s = 1 at the reference).
     for (int k = 0; k < dofs_.node_dofs(n); ++k)
       if (const PetscInt g = dofs_.global_dof(n, k); g >= 0)
-        a[g - dofs_.first_owned()] += dofs_.coefficient(n, k) * node_reference_[kBlock * n + k];
+        a[g - dofs_.first_owned()] += dofs_.coefficient(n, k) * reference_value(n, k);
   }
   for (int c = 0; c < dofs_.n_constraints(); ++c)
     for (int k = 0; k < dofs_.n_multipliers(c); ++k)

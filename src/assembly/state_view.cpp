@@ -75,7 +75,7 @@ void StateView::gather_owned_nodes(Vec q_global, std::vector<double>& positions,
     auto value = [&](int k) {
       const PetscInt l = sys.dofs_.local_dof(n, k);
       if (l >= 0) return sys.dofs_.coefficient(n, k) * q.data()[l];
-      return fixed_at_reference ? sys.node_reference_[kBlock * n + k] : 0.0;
+      return fixed_at_reference ? sys.reference_value(n, k) : 0.0;
     };
     const model::UnknownKindInfo& kind = model::kind_info(sys.dofs_.node_kind(n));
     for (int d = 0; d < 3; ++d)
@@ -100,7 +100,7 @@ StateView::ComponentRows StateView::position_rows(const std::vector<int>& nodes,
     out.row.push_back(sys.dofs_.local_dof(n, k));  // owned: its row in the owned part
     CATENA_ASSERT(out.row.back() < sys.dofs_.n_owned(), "position_rows: an owned node's DOF");
     out.coefficient.push_back(out.row.back() >= 0 ? sys.dofs_.coefficient(n, k) : 0.0);
-    out.fixed.push_back(sys.node_reference_[kBlock * n + k]);
+    out.fixed.push_back(sys.reference_value(n, k));
   }
   return out;
 }
@@ -202,7 +202,7 @@ Reactions StateView::reactions(const EvalPoint& p) const {
       for (int d = 0; d < 3; ++d) {
         const PetscInt l = sys.dofs_.local_dof(node, k + d);
         grad[d] = l >= 0 ? sys.dofs_.coefficient(node, k + d) * q.data()[l]
-                         : sys.node_reference_[kBlock * node + k + d];
+                         : sys.reference_value(node, k + d);
         Q[d] = R[k + d];
       }
       moment += grad.cross(Q);
@@ -384,8 +384,7 @@ std::vector<double> StateView::joint_links(Vec q) const {
   // Component k of an owned node's block at q (a fixed one at its reference value).
   auto value = [&](int n, int k) {
     const PetscInt g = sys.dofs_.global_dof(n, k);
-    return g >= 0 ? sys.dofs_.coefficient(n, k) * qa[g - first]
-                  : sys.node_reference_[kBlock * n + k];
+    return g >= 0 ? sys.dofs_.coefficient(n, k) * qa[g - first] : sys.reference_value(n, k);
   };
   auto position = [&](int n) {
     const int p = model::kind_info(sys.dofs_.node_kind(n)).position;

@@ -52,8 +52,8 @@ solvers::MultistepOptions options_of(const Method& m) {
 
 // The oscillator and one integrator on it, started from (x0, 0) at t = 0.
 struct Oscillator {
-  catena::assembly::SecondOrderSystem system{MPI_COMM_WORLD,
-                                             catena::test::oscillator(kMass, kOmega)};
+  catena::model::Model model = catena::test::oscillator(kMass, kOmega);  // outlives the system
+  catena::assembly::SecondOrderSystem system{MPI_COMM_WORLD, model};
   PetscInt g = system.dof_map().global_dof(0, 0);
 
   catena::VecHandle state(double x, double v) {

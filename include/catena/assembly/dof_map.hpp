@@ -5,8 +5,9 @@
 // elements attached to it: model/node_kinds.hpp), in the kind's component order. Fixed DOFs
 // (supports) are eliminated: they get no global index (−1). Free DOFs are numbered contiguously per
 // rank: rank 0's owned nodes in ascending node index, then rank 1's, ...; within a node, in layout
-// order. The numbering is computed identically on every rank from the replicated model (O(global
-// nodes) memory per rank, O(local) work per evaluation).
+// order. The numbering is computed identically on every rank from the replicated model (one
+// global index per nodal DOF kept on every rank; local indices, linked slots and the
+// reverse lookups for messages are derived from it, not stored per DOF).
 //
 // Lagrange multipliers (model::Constraint, a `multiplier` block each) are unknowns too: a
 // constraint belongs to the rank owning its node A, and its multipliers are numbered after
@@ -42,12 +43,16 @@ class DofMap {
   model::UnknownKind node_kind(int node) const { return node_kinds_[node]; }
   // Global index of nodal DOF k, or −1 if it is fixed.
   PetscInt global_dof(int node, int k) const { return global_[node_offset_[node] + k]; }
-  // Index into the ghosted local form, −1 if fixed or not present on this rank.
-  PetscInt local_dof(int node, int k) const { return local_[node_offset_[node] + k]; }
+  // Index into the ghosted local form, −1 if fixed or not present on this rank (owned: its
+  // place in the owned block; a ghost: its place after it, found in the sorted ghosts).
+  PetscInt local_dof(int node, int k) const;
   // Nodal value of DOF k = coefficient × its unknown (1 unless the slot is linked).
-  double coefficient(int node, int k) const { return coefficient_[node_offset_[node] + k]; }
+  double coefficient(int node, int k) const {
+    const LinkedSlot* s = linked_slot(node, k);
+    return s ? s->coefficient : 1.0;
+  }
   // True if slot k shares its unknown with the node's other slope slots.
-  bool linked(int node, int k) const { return linked_[node_offset_[node] + k] != 0; }
+  bool linked(int node, int k) const { return linked_slot(node, k) != nullptr; }
 
   PetscInt n_global() const { return n_global_; }
   PetscInt n_owned() const { return n_owned_; }
@@ -67,11 +72,13 @@ class DofMap {
   PetscInt multiplier_local(int c, int k) const {
     return constraint_owner_[c] == rank_ ? multiplier_dof(c, k) - first_owned_ : -1;
   }
-  // Constraint a global DOF is a multiplier of, or −1 for a nodal DOF.
-  int constraint_of_global(PetscInt global) const { return global_constraint_.at(global); }
+  // Constraint a global DOF is a multiplier of, or −1 for a nodal DOF. For messages: a
+  // search over the multipliers, no per-DOF table.
+  int constraint_of_global(PetscInt global) const;
 
   // Node holding a global DOF (for messages: "largest residual at node 17"); for a
-  // multiplier, the constraint's node A.
+  // multiplier, the constraint's node A; −1 for none. A search over the nodes (messages
+  // only: no table of O(global DOFs) is kept for it on every rank).
   int node_of_global(PetscInt global) const;
   // Component of a global DOF in its block (the node's kind, or `multiplier`).
   int component_of_global(PetscInt global) const;
@@ -81,18 +88,24 @@ class DofMap {
   std::vector<model::UnknownKind> node_kinds_;  // n_nodes
   std::vector<int> node_offset_;                // n_nodes + 1
   std::vector<PetscInt> global_;                // per nodal DOF
-  std::vector<PetscInt> local_;                 // per nodal DOF
-  std::vector<double> coefficient_;             // per nodal DOF (1 unless linked)
-  std::vector<char> linked_;  // per nodal DOF: 0, 1 (a shared unknown's first slot), 2 (others)
-  std::vector<PetscInt> ghosts_;
+  // The slots of slopes held in direction (few: clamped ends), ascending by slot; every
+  // other slot has coefficient 1 and its own unknown.
+  struct LinkedSlot {
+    int slot;
+    double coefficient;
+    bool own;  // the shared unknown's own slot (the first of the three); the others share it
+  };
+  std::vector<LinkedSlot> linked_slots_;
+  std::vector<PetscInt> ghosts_;  // ascending
   std::vector<int> owned_nodes_;
-  std::vector<int> global_node_;        // per global DOF: its node
-  std::vector<int> global_constraint_;  // per global DOF: its constraint or −1
   std::vector<int> constraint_owner_;   // per constraint: owning rank
+  std::vector<int> constraint_node_a_;  // per constraint: its node A
   std::vector<int> multiplier_offset_;  // n_constraints + 1: each one's first in multiplier_
   std::vector<PetscInt> multiplier_;    // per multiplier: global index
   int rank_ = 0;
   PetscInt n_global_ = 0, n_owned_ = 0, first_owned_ = 0;
+
+  const LinkedSlot* linked_slot(int node, int k) const;
 };
 
 }  // namespace catena::assembly

@@ -53,8 +53,10 @@ using couplings::kStaticJacobian;
 
 class SecondOrderSystem {
  public:
-  // Collective: partitions the model, builds this rank's couplings, numbers the DOFs.
+  // Collective: partitions the model, builds this rank's couplings, numbers the DOFs. The
+  // model must outlive the system, which reads it when asked (a temporary does not compile).
   SecondOrderSystem(MPI_Comm comm, const model::Model& model);
+  SecondOrderSystem(MPI_Comm comm, model::Model&& model) = delete;
   SecondOrderSystem(const SecondOrderSystem&) = delete;  // dofs_ points into partition_
   SecondOrderSystem& operator=(const SecondOrderSystem&) = delete;
 
@@ -274,8 +276,12 @@ class SecondOrderSystem {
   std::vector<double> fixed_value_;     // reference value used where fixed
   std::vector<double> coefficient_;     // per DOF: DofMap::coefficient (1 but linked slots)
   std::vector<char> has_linked_;        // per coupling: any of its slots linked
-  // kMaxBlockUnknowns per node: its reference coordinates in its kind's layout.
-  std::vector<double> node_reference_;
+  // Not collective. Component k of a node's reference coordinates in its kind's layout: the
+  // position at the kind's position slot (where a HeldPlace holds it, if one does), then the
+  // ANCF gradients (tangent or the held slope, section y, section z) in threes from its
+  // gradient slot; a slider's start in its fourth. The value of a fixed DOF, computed from
+  // the model when asked, not stored per node on every rank.
+  double reference_value(int node, int k) const;
   // Scratch of the evaluation loop (mutable: output queries evaluate through a const system).
   mutable VecHandle q_work_, v_work_, f_work_;  // ghosted work vectors
   bool has_damping_ = true;
