@@ -132,5 +132,6 @@ add_test(NAME app_scaling_study
                  $<TARGET_FILE:moving_load_benchmark> ${MPIEXEC_EXECUTABLE}
                  ${CMAKE_CURRENT_BINARY_DIR}
          WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-set_tests_properties(app_scaling_study PROPERTIES LABELS app ENVIRONMENT "${mpi_env}"
+# Long (both cores for about 10 s; CI time): a benchmark's harness, run with -L long.
+set_tests_properties(app_scaling_study PROPERTIES LABELS "app;long" ENVIRONMENT "${mpi_env}"
                      PROCESSORS 2 TIMEOUT 300)
