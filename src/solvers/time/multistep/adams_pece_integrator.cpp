@@ -32,7 +32,7 @@ struct AdamsPeceIntegrator::Impl {
   StepState& state;
   MatHandle mass;
   std::unique_ptr<AccelerationSolver> acceleration;
-  std::unique_ptr<AlgebraicPart> algebraic;  // the multiplier slots, left out of the error
+  std::unique_ptr<AlgebraicPart> algebraic;  // the multiplier slots
   // v and a at t₀ (the current point), t₋₁, ...; `known` of them valid.
   std::vector<VecHandle> v_back, a_back;
   std::vector<double> t_back;
@@ -230,7 +230,6 @@ StepOutcome AdamsPeceIntegrator::attempt(double h, const ErrorTolerance* tol) {
   if (tol) {
     CATENA_PETSC(VecWAXPY(s.error.get(), -1.0, s.q_pred.get(), s.state.pending_q()));
     CATENA_PETSC(VecScale(s.error.get(), milne_factor(k)));
-    s.algebraic->zero_algebraic(s.error.get());  // λ₁ − λ̂: forces, not positions
     out.error = weighted_error_norm(*tol, s.error.get(), s.state.q(), s.state.pending_q());
   }
   return out;
