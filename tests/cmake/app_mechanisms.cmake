@@ -359,7 +359,7 @@ catena_app_test(petsc_refuses_constraints 2 "integrator type 'petsc' takes no La
                 -o ${CMAKE_CURRENT_BINARY_DIR}/app_driven_pendulum_petsc.h5)
 # Checkpoints: SIGTERM part-way, --restart on another rank count, same results as an
 # uninterrupted run; a finished run with constraints extended by --restart. Long (it runs
-# alone for 35-130 s): app_restart_exact covers restarts on another rank count and
+# alone for 35-130 s): app_restart_exact_core covers restarts on another rank count and
 # app_launcher_loss the SIGTERM exit, both in the default run.
 add_test(NAME app_restart_roundtrip
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/restart_roundtrip.sh ${app}

@@ -30,15 +30,21 @@ foreach(case dynamic_sample dynamic_flush dynamic_checkpoint static_np1 static_n
   set_tests_properties(app_write_failure_${case} PROPERTIES LABELS app ENVIRONMENT "${mpi_env}"
                        TIMEOUT 300 PROCESSORS ${ranks} SKIP_RETURN_CODE 77)
 endforeach()
-# Restarts on the same rank count continue bit for bit (HHT with contact and local Newton,
-# Radau IIA, adaptive steps, step doubling, a crash after a checkpoint, two restarts), and
-# to the Newton tolerance on another rank count.
-add_test(NAME app_restart_exact
-         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/restart_exact.sh ${app}
-                 ${MPIEXEC_EXECUTABLE} ${CMAKE_CURRENT_BINARY_DIR}
-         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
-set_tests_properties(app_restart_exact PROPERTIES LABELS app ENVIRONMENT "${mpi_env}"
-                     TIMEOUT 900 RUN_SERIAL TRUE)
+# Restarts on the same rank count continue bit for bit, and to the Newton tolerance on
+# another rank count. The core cases (HHT with contact and local Newton, Radau IIA, a linear
+# and a modal structure, a crash after a checkpoint, np 2 -> 1) in the default run; the
+# others (adaptive steps, step doubling, the linearly implicit step, the last step, two
+# restarts, format 1) labelled long. Stops come from step counts, not the wall clock, so
+# the cases need no core to themselves.
+foreach(group core more)
+  add_test(NAME app_restart_exact_${group}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/restart_exact.sh ${app}
+                   ${MPIEXEC_EXECUTABLE} ${CMAKE_CURRENT_BINARY_DIR} ${group}
+           WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(app_restart_exact_${group} PROPERTIES LABELS app ENVIRONMENT "${mpi_env}"
+                       TIMEOUT 900 PROCESSORS 2)
+endforeach()
+set_tests_properties(app_restart_exact_more PROPERTIES LABELS "app;long")
 # The testing hooks refuse what is not a step count.
 catena_app_test(test_hook_not_a_count 2
                 "CATENA_STOP_AFTER_STEPS = 'often'. accepted: a positive integer"
