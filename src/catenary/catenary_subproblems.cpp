@@ -142,7 +142,7 @@ StaticSnapshot solve_at_tension(MPI_Comm comm, WirePart& part, double tension_rt
 std::vector<int> nodes_in_order(const model::Model& m, const std::vector<int>& elements) {
   std::vector<int> order;
   for (const int e : elements) {
-    const std::vector<int>& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
+    const auto& nodes = m.elements[static_cast<std::size_t>(e)].nodes;
     if (order.empty() || order.back() != nodes[0]) order.push_back(nodes[0]);
     order.push_back(nodes[1]);
   }

@@ -31,7 +31,7 @@ ContactPath::ContactPath(const model::Model& model, const model::MovingContact& 
   }
   end_ = static_cast<int>(dofs.size());
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const std::vector<int>& nodes = model.elements[static_cast<size_t>(path[i])].nodes;
+    const auto& nodes = model.elements[static_cast<size_t>(path[i])].nodes;
     element_a_.push_back(reach_.contains(i) ? first_dof[nodes.front()] : -1);
     element_b_.push_back(reach_.contains(i) ? first_dof[nodes.back()] : -1);
   }

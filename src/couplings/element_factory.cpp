@@ -1,5 +1,6 @@
 #include "catena/couplings/element_factory.hpp"
 
+#include <span>
 #include <type_traits>
 
 #include "catena/elements/absorbing_end.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 // The element's reference state: per node the first dofs_per_node() of
 // [position, tangent, section_y, section_z], as SecondOrderSystem::reference_state.
-std::vector<double> reference_state(const model::Model& model, const std::vector<int>& nodes,
+std::vector<double> reference_state(const model::Model& model, std::span<const int> nodes,
                                     int dofs_per_node) {
   std::vector<double> q;
   for (int n : nodes) {
@@ -32,7 +33,7 @@ std::vector<double> reference_state(const model::Model& model, const std::vector
 std::unique_ptr<elements::Element> with_rayleigh(std::unique_ptr<elements::Element> e,
                                                  const model::Rayleigh& r,
                                                  const model::Model& model,
-                                                 const std::vector<int>& nodes,
+                                                 std::span<const int> nodes,
                                                  std::shared_ptr<elements::MatrixArena> arena) {
   if (!r.active()) return e;
   const std::vector<double> q_ref = reference_state(model, nodes, e->dofs_per_node());
@@ -86,7 +87,9 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
 
 std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index,
                                                        std::unique_ptr<elements::Element> element) {
-  return std::make_unique<ElementCoupling>(std::move(element), model.elements[index].nodes,
+  const auto& nodes = model.elements[index].nodes;
+  return std::make_unique<ElementCoupling>(std::move(element),
+                                           std::vector<int>(nodes.begin(), nodes.end()),
                                            ElementOrigin::element, index);
 }
 

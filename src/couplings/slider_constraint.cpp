@@ -35,7 +35,7 @@ SliderConstraint::SliderConstraint(const model::Model& model, int index)
     for (int k = 0; k < 6; ++k) dofs_.push_back(DofKey::node(node, k));
   }
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const std::vector<int>& nodes = model.elements[static_cast<size_t>(path[i])].nodes;
+    const auto& nodes = model.elements[static_cast<size_t>(path[i])].nodes;
     element_a_.push_back(first_dof[nodes.front()]);
     element_b_.push_back(first_dof[nodes.back()]);
     reversed_.push_back(model::element_reversed(model, path, i) ? 1 : 0);

@@ -5,7 +5,7 @@
 namespace catena::model {
 
 double element_chord(const Model& model, int element) {
-  const std::vector<int>& nodes = model.elements[static_cast<std::size_t>(element)].nodes;
+  const auto& nodes = model.elements[static_cast<std::size_t>(element)].nodes;
   return (model.nodes[static_cast<std::size_t>(nodes.back())].position -
           model.nodes[static_cast<std::size_t>(nodes.front())].position)
       .norm();
@@ -25,9 +25,9 @@ PathStations path_stations(const Model& model, const std::vector<int>& elements)
 }
 
 bool element_reversed(const Model& model, const std::vector<int>& elements, std::size_t i) {
-  const std::vector<int>& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
+  const auto& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
   const auto shares = [&](std::size_t j, int node) {
-    const std::vector<int>& other = model.elements[static_cast<std::size_t>(elements[j])].nodes;
+    const auto& other = model.elements[static_cast<std::size_t>(elements[j])].nodes;
     return node == other.front() || node == other.back();
   };
   return (i > 0 && shares(i - 1, nodes.back())) ||
@@ -38,7 +38,7 @@ Vec3 path_point(const Model& model, const std::vector<int>& elements, const Path
                 double s) {
   s = std::clamp(s, 0.0, stations.length());
   const std::size_t i = stations.element_at(s);
-  const std::vector<int>& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
+  const auto& nodes = model.elements[static_cast<std::size_t>(elements[i])].nodes;
   int from = nodes.front(), to = nodes.back();
   if (element_reversed(model, elements, i)) std::swap(from, to);
   const double length = stations.element_length(i);

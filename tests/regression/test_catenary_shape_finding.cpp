@@ -256,7 +256,7 @@ const std::string stitch =
 double mean_axial_force(const Shaped& s, const CatenaryWire& wire) {
   double sum = 0.0, length = 0.0;
   for (const int e : wire.elements) {
-    const std::vector<int>& n = s.model.elements[e].nodes;
+    const auto& n = s.model.elements[e].nodes;
     const double l = (s.model.nodes[n[1]].position - s.model.nodes[n[0]].position).norm();
     sum += s.statics.axial_force[e] * l;
     length += l;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -131,7 +132,7 @@ TEST(CatenaryBuilder, DroppersHangFromTheMessengerAtTheirPositions) {
     EXPECT_EQ(props.unstretched_length, 0.0);  // the mesh length until shape finding
     EXPECT_DOUBLE_EQ(props.EA, 1.0e5 * 1.2);   // stiffness × that length
     EXPECT_EQ(bar.set, "droppers");
-    EXPECT_EQ(bar.nodes, (std::vector<int>{d.upper_node, d.contact_node}));
+    EXPECT_EQ(bar.nodes, (std::array<int, 2>{d.upper_node, d.contact_node}));
     EXPECT_EQ(d.stitch, -1);  // no stitch wires in the base scene
   }
   EXPECT_TRUE(c.stitch_wires.empty());
@@ -371,12 +372,12 @@ TEST(CatenaryBuilder, StitchWiresCarryTheDroppersBetweenTheirClamps) {
     for (const int e : c.messenger.elements)
       on_messenger = on_messenger || m.elements[e].nodes[0] == s.clamp_nodes[0];
     EXPECT_TRUE(on_messenger);
-    std::vector<std::vector<int>> joints;
+    std::vector<std::array<int, 2>> joints;
     for (const ElementDesc& e : m.elements)
       if (e.set == "stitch_joints") joints.push_back(e.nodes);
-    EXPECT_NE(std::find(joints.begin(), joints.end(), std::vector<int>{s.clamp_nodes[0], first}),
+    EXPECT_NE(std::find(joints.begin(), joints.end(), std::array<int, 2>{s.clamp_nodes[0], first}),
               joints.end());
-    EXPECT_NE(std::find(joints.begin(), joints.end(), std::vector<int>{last, s.clamp_nodes[1]}),
+    EXPECT_NE(std::find(joints.begin(), joints.end(), std::array<int, 2>{last, s.clamp_nodes[1]}),
               joints.end());
     // 2D: every stitch node held out of plane, none held otherwise (not at the support).
     for (const int e : s.wire.elements)

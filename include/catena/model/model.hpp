@@ -4,6 +4,7 @@
 // assembly layer. Indices are 0-based positions in the vectors below; user-facing ids
 // (as written in the scene) are kept for messages and output. Units are SI throughout.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -29,7 +30,10 @@ struct Node {
 
 struct ElementDesc {
   std::int64_t id = 0;
-  std::vector<int> nodes;  // node indices
+  // Node indices. Every element kind joins two nodes; a fixed pair, not a vector, because
+  // every rank holds every element (16 bytes and a heap block less each: 1.8 MiB on a
+  // 10 km line).
+  std::array<int, 2> nodes{};
   ElementProps props;
   Vec3 distributed_load = Vec3::Zero();  // N/m per unit mesh length (cable, beam)
   std::string set;                       // name of the line / set it belongs to ("" = none)
