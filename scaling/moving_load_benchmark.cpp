@@ -37,10 +37,12 @@
 #include <functional>
 #include <memory>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
+#include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/peak_memory.hpp"
 #include "catena/model/scene_reader.hpp"
@@ -103,6 +105,24 @@ Options read_options() {
   const int n_spans = static_cast<int>(o.length / o.span + 0.5);
   if (o.start < 0.0) o.start = (n_spans / 2 + 0.5) * o.span;
   return o;
+}
+
+// What is wrong with the options ("" if nothing): the scene text is generated from them, so
+// a bad value would otherwise surface as an error about a line of text the user never saw.
+std::string option_error(const Options& o) {
+  const auto number = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
+  if (!(o.length >= o.span))
+    return "-length " + number(o.length) + ": at least one span, " + number(o.span) + " m";
+  if (!(o.element > 0.0 && o.element <= o.span))
+    return "-element " + number(o.element) + ": a length in (0, " + number(o.span) + "] m";
+  if (!(o.dt > 0.0)) return "-dt " + number(o.dt) + ": a positive time step, s";
+  if (!(o.load_spacing >= 0.0))
+    return "-load_spacing " + number(o.load_spacing) + ": 0 (one load) or a positive length, m";
+  return "";
 }
 
 // Where the loads start: one at o.start, or one every o.load_spacing m (at least one).
@@ -223,14 +243,7 @@ class StepTimer : public catena::solvers::TransientObserver {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  catena::PetscSession petsc(
-      &argc, &argv,
-      "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
-      "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
-      "[-force N] [-speed m/s] [-start m] [-load_spacing m] [-newton_rtol r] "
-      "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
-      "[-save_state FILE] [-compare_state FILE]\n");
+int run_benchmark() {
   CATENA_PETSC(PetscLogDefaultBegin());
   const double process_start = MPI_Wtime();
   MPI_Comm comm = PETSC_COMM_WORLD;
@@ -239,6 +252,10 @@ int main(int argc, char** argv) {
   if (o.integrator != "hht" && o.integrator != "radau") {
     if (rank == 0)
       std::fprintf(stderr, "-integrator %s: expected hht or radau\n", o.integrator.c_str());
+    return 2;
+  }
+  if (const std::string error = option_error(o); !error.empty()) {
+    if (rank == 0) std::fprintf(stderr, "moving_load_benchmark: %s\n", error.c_str());
     return 2;
   }
   PetscLogStage setup_stage = 0, first_stage = 0, steps_stage = 0, unit_stage = 0;
@@ -487,4 +504,29 @@ int main(int argc, char** argv) {
         t_solve, each(force), solve_each, ratio, ratio_in_run);
   }
   return 0;
+}
+
+// An error of the scene reader or of a solver is printed, not an abort's backtrace: input
+// errors are thrown on every rank alike (each reads the same text), so each returns 2 and
+// PETSc finalises on all; any other error may be one rank's, so that rank ends the job
+// rather than leave the others waiting in a collective call.
+int main(int argc, char** argv) {
+  catena::PetscSession petsc(
+      &argc, &argv,
+      "moving_load_benchmark [-steps n] [-dt s] [-integrator hht|radau] "
+      "[-alpha a] [-newton simplified|full] [-length m] [-element m] "
+      "[-force N] [-speed m/s] [-start m] [-load_spacing m] [-newton_rtol r] "
+      "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
+      "[-save_state FILE] [-compare_state FILE]\n");
+  try {
+    return run_benchmark();
+  } catch (const catena::InputError& e) {
+    if (catena::mpi_rank(PETSC_COMM_WORLD) == 0)
+      std::fprintf(stderr, "moving_load_benchmark: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "moving_load_benchmark: %s\n", e.what());
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 }

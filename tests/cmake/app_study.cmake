@@ -135,3 +135,11 @@ add_test(NAME app_scaling_study
 # Long (both cores for about 10 s; CI time): a benchmark's harness, run with -L long.
 set_tests_properties(app_scaling_study PROPERTIES LABELS "app;long" ENVIRONMENT "${mpi_env}"
                      PROCESSORS 2 TIMEOUT 300)
+# The benchmarks name a bad option and its accepted values, or the scene reader's error for
+# a value only it checks (exit 2), instead of aborting with a backtrace.
+catena_app_test(moving_load_benchmark_short_line 2 "-length 10: at least one span, 62.5 m"
+                $<TARGET_FILE:moving_load_benchmark> -length 10)
+catena_app_test(moving_load_benchmark_bad_alpha 2 "'integrator.alpha': value 5 is out of range"
+                $<TARGET_FILE:moving_load_benchmark> -length 125 -alpha 5)
+catena_app_test(static_line_benchmark_bad_element 2 "-element: a length in .0, 62.5. m"
+                $<TARGET_FILE:static_line_benchmark> -element 0)
