@@ -92,7 +92,8 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
   CATENA_PETSC(SNESSetFromOptions(snes));
 }
 
-bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry) {
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry,
+                           bool announce) {
   PC pc = nullptr;
   CATENA_PETSC(KSPGetPC(ksp, &pc));
   PCFailedReason failed = PC_NOERROR;
@@ -114,6 +115,7 @@ bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry 
   CATENA_PETSC(PCSetType(pc, PCNONE));
   set_direct_factorisation(pc, prefix, symmetry, Pivoting::required);
   CATENA_PETSC(KSPSetFromOptions(ksp));
+  if (!announce) return true;
   MPI_Comm comm = MPI_COMM_NULL;
   CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(ksp), &comm));
   CATENA_PETSC(PetscPrintf(

@@ -45,6 +45,8 @@ struct StaticSolver::Impl {
   // the iteration is Newton's. μ₀ makes every mass a 1 Hz oscillator: for a pendulum of
   // length ℓ the true stiffness is g/ℓ per unit mass, comparable for ℓ of a few decimetres.
   bool regularise = false;
+  // Whether Newton factors without pivoting (constructor): no multipliers, no bodies.
+  bool unpivoted = false;
   static constexpr double kRegularisation = 4.0 * M_PI * M_PI;  // μ₀, 1/s²
   double first_norm = 0.0, last_norm = 0.0;
   bool first_evaluation = true;  // of the current attempt
@@ -112,8 +114,19 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   // Scene tolerances first, so that -static_snes_* on the command line wins.
   CATENA_PETSC(SNESSetTolerances(s.snes.get(), options.atol, options.rtol, kNewtonStepTolerance,
                                  options.max_newton_iterations, 100000));
-  // The static tangent is symmetric: LDLᵀ halves the factorisation.
-  configure_direct_newton(s.snes.get(), "static_", JacobianSymmetry::symmetric);
+  // Without multipliers (zero diagonal rows) and rigid bodies (regularised, below) the
+  // tangent's pivots do not vanish where the structure holds (a stable equilibrium's tangent
+  // is positive definite): PETSc's LU on one rank and the interface split on more
+  // (interface_schur.hpp) factor it without pivoting, several times faster than MUMPS's
+  // LDLᵀ on one rank and faster again on more (docs/performance.md, "Static line
+  // benchmark"). A zero pivot (a mechanism, or a part without stiffness before its loads
+  // are on, whose null pivots MUMPS steps past) switches this solver to MUMPS's LDLᵀ for
+  // the rest of its solves (attempt). Otherwise MUMPS's LDLᵀ from the start (the static
+  // tangent is symmetric: LDLᵀ halves the factorisation).
+  s.unpivoted = !s.regularise && model::total_multipliers(system.model()) == 0;
+  configure_direct_newton(s.snes.get(), "static_",
+                          s.unpivoted ? JacobianSymmetry::general : JacobianSymmetry::symmetric,
+                          s.unpivoted ? Pivoting::not_needed : Pivoting::needed);
   if (s.regularise) {
     // With rigid bodies the matrices change in kind along the load path (a body's rotations
     // gain stiffness only as loads come on): MUMPS scales each one afresh rather than keep
@@ -204,17 +217,30 @@ StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec s
   CATENA_PETSC(VecCopy(start, trial));
   s.n_jacobians = 0;
   s.first_evaluation = true;
-  const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, trial);
-  s.guard.rethrow_if_any();
-  CATENA_PETSC(ierr);
-
-  SNESConvergedReason reason;
-  PetscInt its = 0;
-  CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
-  CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
-  report.n_newton_iterations += static_cast<int>(its);
   KSP ksp = nullptr;
   CATENA_PETSC(SNESGetKSP(s.snes.get(), &ksp));
+  SNESConvergedReason reason;
+  PetscInt its = 0, all_its = 0;
+  for (;;) {
+    const PetscErrorCode ierr = SNESSolve(s.snes.get(), nullptr, trial);
+    s.guard.rethrow_if_any();
+    CATENA_PETSC(ierr);
+    CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
+    CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
+    all_its += its;
+    // The unpivoted factorisation met a zero pivot: MUMPS's LDLᵀ from the iterate reached.
+    if (!(reason == SNES_DIVERGED_LINEAR_SOLVE && s.unpivoted &&
+          fall_back_to_pivoting(ksp, "static_", JacobianSymmetry::symmetric, false)))
+      break;
+    // The attempt again from its start: MUMPS scales the matrix it first factors and keeps
+    // that scaling, and from the singular one (a row without stiffness) it took a nearly
+    // null pivot for a pivot (a slack bar's end thrown through its pin).
+    s.unpivoted = false;
+    CATENA_PETSC(VecCopy(start, trial));
+    s.n_jacobians = 0;
+  }
+  its = all_its;
+  report.n_newton_iterations += static_cast<int>(its);
   if (s.n_jacobians > 0) {
     const MumpsStatus newton = mumps_status(ksp);
     if (newton.infog1 < 0 && newton.infog1 != -10)

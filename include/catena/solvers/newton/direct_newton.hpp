@@ -55,8 +55,11 @@ KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSy
 // PETSc's LU met a zero pivot (dependent constraints, or an unknown that only a constraint
 // holds, such as a slider's arc length on a straight path), the KSP factors with MUMPS, as
 // for Pivoting::required, from now on, and a note says so; returns whether it switched
-// (false for any other failure, or a package the options chose).
-bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry);
+// (false for any other failure, or a package the options chose). Also after a failed solve
+// of a Pivoting::not_needed matrix (the static solver's: a zero pivot of a mechanism or an
+// unloaded slack part), with `announce` false: no note.
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry,
+                           bool announce = true);
 
 // Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
 // partition interface (interface_schur.hpp) rather than factored whole: on more than one
