@@ -40,9 +40,9 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_errors.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
-#include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/core/peak_memory.hpp"
 #include "catena/model/scene_reader.hpp"
@@ -506,10 +506,6 @@ int run_benchmark() {
   return 0;
 }
 
-// An error of the scene reader or of a solver is printed, not an abort's backtrace: input
-// errors are thrown on every rank alike (each reads the same text), so each returns 2 and
-// PETSc finalises on all; any other error may be one rank's, so that rank ends the job
-// rather than leave the others waiting in a collective call.
 int main(int argc, char** argv) {
   catena::PetscSession petsc(
       &argc, &argv,
@@ -518,15 +514,5 @@ int main(int argc, char** argv) {
       "[-force N] [-speed m/s] [-start m] [-load_spacing m] [-newton_rtol r] "
       "[-newton_atol N] [-repeat n] [-linear_algebra auto|decoupled|coupled] "
       "[-save_state FILE] [-compare_state FILE]\n");
-  try {
-    return run_benchmark();
-  } catch (const catena::InputError& e) {
-    if (catena::mpi_rank(PETSC_COMM_WORLD) == 0)
-      std::fprintf(stderr, "moving_load_benchmark: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "moving_load_benchmark: %s\n", e.what());
-    MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
-  }
+  return catena::bench::run_reporting_errors("moving_load_benchmark", run_benchmark);
 }

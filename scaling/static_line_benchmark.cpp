@@ -15,9 +15,9 @@
 #include <memory>
 #include <sstream>
 
+#include "benchmark_errors.hpp"
 #include "catena/assembly/petsc_call.hpp"
 #include "catena/assembly/second_order_system.hpp"
-#include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
 #include "catena/model/scene_reader.hpp"
 #include "catena/solvers/newton/mumps_status.hpp"
@@ -167,20 +167,8 @@ int run_benchmark() {
   return 0;
 }
 
-// As moving_load_benchmark: an input error (thrown on every rank alike) returns 2 after
-// PETSc finalises on all; any other error may be one rank's, which then ends the job.
 int main(int argc, char** argv) {
   catena::PetscSession petsc(&argc, &argv,
                              "static_line_benchmark [-length m] [-element m] [-repeat n]\n");
-  try {
-    return run_benchmark();
-  } catch (const catena::InputError& e) {
-    if (catena::mpi_rank(PETSC_COMM_WORLD) == 0)
-      std::fprintf(stderr, "static_line_benchmark: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "static_line_benchmark: %s\n", e.what());
-    MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
-  }
+  return catena::bench::run_reporting_errors("static_line_benchmark", run_benchmark);
 }
