@@ -257,6 +257,21 @@ void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl)
     throw InputError({"", 0, "OUT.h5"}, "no output file given; usage: catena " + command +
                                             " OUT.h5 [" + post_options(command) + "]");
 }
+// The options of a command that takes a scene, for the message on an unknown one.
+std::string command_options(const std::string& command) {
+  const std::string common = "--set KEY=VALUE, -o FILE, --progress S, --quiet, --memory-limit GIB";
+  if (command == "run") return common + ", --restart, --realtime, --error-bar, --error-bar-ranks K";
+  if (command == "check") return common + ", --ids";
+  if (command == "modes") return common + ", --count N";
+  if (command == "elasticity") return common + ", --span N, --step DX, --force F, --json";
+  if (command == "study")
+    return common +
+           ", --vary KEY=V1,V2,..., --methods, --steps, --reference, --target, "
+           "--ranks-per-case, --probe, --cutoff";
+  if (command == "sweep") return common + ", --vary KEY=V1,V2,..., --ranks-per-case, --cutoff";
+  return common;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, char** argv) {
@@ -368,6 +383,14 @@ CommandLine parse_command_line(int argc, char** argv) {
     } else if (a == "--version") {
       cl.command = "version";
       return cl;
+    } else if (a.rfind("--", 0) == 0) {
+      // Catena's options have two dashes, PETSc's one: a misspelt option of Catena's
+      // (--restrat) would otherwise go to PETSc unnoticed and the run go on without it (a
+      // fresh run over the output it was to continue).
+      throw InputError({"", 0, "arguments"},
+                       "unknown option '" + a + "' for " + cl.command +
+                           "; accepted: " + command_options(cl.command) + " ('catena " +
+                           cl.command + " --help'), and PETSc's options with one dash (-ksp_view)");
     } else if (!a.empty() && a[0] == '-') {
       // A PETSc option; skip its value if it has one: the next token, unless it starts
       // with '-' or names the scene file (a .yaml/.yml path).

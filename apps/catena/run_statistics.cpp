@@ -104,6 +104,18 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
     } catch (const InputError&) {
     }
   }
+  // The zero-phase filter starts each pass from the record's end value: a record shorter
+  // than two periods of the cutoff is all start-up (a 0.2 s record at 0.001 Hz gave the
+  // first sample's force as mean, minimum and maximum, and σ = 0).
+  const double record = out.run.time.size() > 1 ? out.run.time.back() - out.run.time.front() : 0.0;
+  if (record > 0.0 && record < 2.0 / args.cutoff_hz) {
+    std::ostringstream os;
+    os << "--cutoff " << args.cutoff_hz << " Hz: the record lasts " << record
+       << " s, shorter than two periods of the cutoff (" << 2.0 / args.cutoff_hz
+       << " s), so the filtered force would be its start-up transient; accepted: at least "
+       << 2.0 / record << " Hz for this record (EN 50318: 20 Hz)";
+    throw InputError({args.file, 0, "--cutoff"}, os.str());
+  }
   out.finished = out.run.status == "complete";
   out.section = coverage == SectionCoverage::covered && !args.section
                     ? io::evaluation_section_or_record(out.run)

@@ -1,8 +1,6 @@
 #include "scene_loading.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "catena/core/error.hpp"
 #include "catena/core/mpi_comm.hpp"
@@ -10,8 +8,6 @@
 
 namespace catena::app {
 namespace {
-constexpr std::streamoff kMaxSceneBytes = 64LL << 20;
-
 // Collective. The ranks of `comm` on this rank's host (MPI shared-memory group).
 int ranks_on_this_host(MPI_Comm comm) {
   MPI_Comm host = MPI_COMM_NULL;
@@ -64,16 +60,7 @@ model::Model load_scene(MPI_Comm comm, const std::string& path,
   std::string text, error;
   if (mpi_rank(comm) == 0) {
     try {
-      std::ifstream in(path, std::ios::binary | std::ios::ate);
-      if (!in) throw InputError({path, 0, ""}, "cannot open the scene file (does it exist?)");
-      const std::streamoff size = in.tellg();
-      if (size > kMaxSceneBytes)
-        throw InputError({path, 0, ""}, "the scene file is " + std::to_string(size) +
-                                            " bytes; at most 64 MiB is accepted");
-      in.seekg(0);
-      std::ostringstream os;
-      os << in.rdbuf();
-      text = os.str();
+      text = model::read_scene_file(path);
       model::check_scene_text(text, path);
     } catch (const InputError& e) {
       error = e.what();

@@ -93,6 +93,13 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
       couplings_(couplings::make_couplings(model, partition_.element_owner, partition_.node_owner,
                                            mpi_rank(comm))),
       dofs_(model, partition_, mpi_rank(comm), touched_nodes(couplings_)) {
+  // Every coordinate held (one pinned node with a mass): nothing moves. Named here rather
+  // than as the solvers' failure on an empty matrix (MUMPS INFOG(1) = -16).
+  if (dofs_.n_global() == 0)
+    throw InputError({model.source_file, 0, "supports"},
+                     "the scene leaves no unknown free: the supports hold every coordinate of "
+                     "every node, so nothing can move and there is nothing to solve; free a "
+                     "node's coordinates or add one that is not held");
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   std::vector<char> supported(model.nodes.size(), 0);
   for (const int node : model::supported_nodes(model)) supported[static_cast<size_t>(node)] = 1;

@@ -73,6 +73,12 @@ void read_integrator(const Field& in, std::size_t constraints, bool nonlinear_co
   const Field dt_min = in.child("dt_min"), dt_max = in.child("dt_max");
   o.dt_min = dt_min.real_or(o.dt_min, RealRange::positive("s"));
   o.dt_max = dt_max.real_or(o.dt_max, RealRange::non_negative("s"));
+  // A fixed step at or below the smallest step any run takes (dt_min, whose default a
+  // fixed-step run keeps) was refused only after the static solve, as a numerical failure.
+  if (!o.adaptive && o.dt <= o.dt_min)
+    in.child("dt").fail("dt = " + format_number(o.dt) +
+                        " s is not above the smallest step a run takes, " +
+                        format_number(o.dt_min) + " s; accepted: a step above it");
   if (o.adaptive && o.dt_min >= o.dt)
     (dt_min.present() ? dt_min : in.child("dt"))
         .fail("dt_min = " + format_number(o.dt_min) +

@@ -12,6 +12,7 @@
 #include "number_format.hpp"
 #include "pantograph_mechanism.hpp"
 #include "speed_reader.hpp"
+#include "output_name.hpp"
 
 namespace catena::model::detail {
 namespace {
@@ -169,7 +170,8 @@ void read_pantographs(const Field& pantographs, SceneBuild& build) {
                       "static_force", "aerodynamic_coefficient", "model", "stages", "contact",
                       "arm_angle"});
     MovingContact c;
-    c.name = entry.child("name").text();
+    // Required, and a group of the output (/pantographs/<name>).
+    c.name = read_output_name(entry.child("name"), entry.child("name").text(), "a pantograph");
     if (!names.insert(c.name).second)
       entry.child("name").fail("pantograph name '" + c.name + "' is used twice");
     c.path = read_path_or_line(entry, build, "pantograph " + c.name, "pantographs");

@@ -159,7 +159,7 @@ Model parse_scene(const std::string& text, const std::string& file_label,
   return std::move(build.model);
 }
 
-Model read_scene(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_scene_file(const std::string& path) {
   namespace fs = std::filesystem;
   const auto fail = [&](const std::string& message) {
     throw InputError(InputLocation{path, 0, ""}, message);
@@ -168,7 +168,10 @@ Model read_scene(const std::string& path, const std::vector<std::string>& overri
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) fail("cannot read scene: no such file");
   if (fs::is_directory(status)) fail("cannot read scene: this is a directory, not a file");
-  if (!fs::is_regular_file(status)) fail("cannot read scene: not a regular file");
+  if (!fs::is_regular_file(status))
+    fail(
+        "cannot read scene: not a regular file (a device, a pipe or a socket); accepted: a "
+        "YAML text file");
   const std::uintmax_t size = fs::file_size(path, ec);
   if (!ec && size > max_scene_bytes)
     fail("scene file is " + std::to_string(size) + " bytes; at most " +
@@ -179,7 +182,11 @@ Model read_scene(const std::string& path, const std::vector<std::string>& overri
   std::ostringstream contents;
   contents << in.rdbuf();
   if (in.bad()) fail("cannot read scene: read error");
-  return parse_scene(contents.str(), path, overrides);
+  return contents.str();
+}
+
+Model read_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_scene(read_scene_file(path), path, overrides);
 }
 
 }  // namespace catena::model

@@ -92,6 +92,10 @@ string(CONCAT json_keys "^  \\{\"name\": \"trailing\", \"speed_kmh\": ${num}, "
        "\"min\": ${num}, \"contact_loss_percent\": ${num}, "
        "\"max_uplift_at_support\": ${num}, \"acceptance\": null\\}$")
 catena_stats_test(json 0 "${json_keys}" ${stats_dir}/stats_run.h5 --json)
+# A cutoff whose two periods outlast the record: refused, not statistics of the filter's
+# start-up (σ = 0 and the first sample as mean, minimum and maximum).
+catena_stats_test(cutoff_below_record 2 "'--cutoff': --cutoff 0.001 Hz: the record lasts .* s, shorter than two periods"
+                  ${stats_dir}/stats_run.h5 --cutoff 0.001)
 add_test(NAME app_stats_values
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/app/check_stats.py ${app}
                  ${stats_dir})

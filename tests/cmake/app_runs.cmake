@@ -23,7 +23,22 @@ catena_app_test(bad_scene_exit_2 2 "zero_EA.yaml:[0-9]+: 'sections.*EA'"
                 ${app} check tests/data/bad_scenes/zero_EA.yaml)
 catena_app_test(bad_override_exit_2 2 "did you mean"
                 ${app} check meshes/default.yaml --set output.fiel=x.h5)
-catena_app_test(missing_file_exit_2 2 "no_such_scene.yaml" ${app} check no_such_scene.yaml)
+catena_app_test(missing_file_exit_2 2 "no_such_scene.yaml: cannot read scene: no such file"
+                ${app} check no_such_scene.yaml)
+# A directory or a device as the scene is named as such (a device was read without end: the
+# process grew until the kernel killed it; a pipe blocked), on every rank count.
+catena_app_test(directory_as_scene 2 "meshes: cannot read scene: this is a directory" ${app}
+                check meshes)
+catena_app_test(device_as_scene_np2 2 "/dev/zero: cannot read scene: not a regular file"
+                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} check /dev/zero)
+catena_app_test(no_free_unknown 2 "all_coordinates_held.yaml: 'supports': the scene leaves no unknown free"
+                ${app} run tests/data/app/all_coordinates_held.yaml
+                -o ${CMAKE_CURRENT_BINARY_DIR}/app_no_free_unknown.h5)
+# Catena's options take two dashes: a misspelt one is refused, not passed to PETSc (a run
+# with --restrat would start afresh over the output it was to continue).
+catena_app_test(misspelt_option 2 "unknown option '--restrat' for run. accepted: .*--restart"
+                ${app} run meshes/pantograph_wire.yaml --restrat
+                -o ${CMAKE_CURRENT_BINARY_DIR}/app_misspelt_option.h5)
 catena_app_test(unknown_command_exit_2 2 "unknown command" ${app} frobnicate)
 catena_app_test(mechanism_exit_3 3 "singular.*mechanism"
                 ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run tests/data/app/mechanism.yaml

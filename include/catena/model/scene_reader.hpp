@@ -1,7 +1,8 @@
 #pragma once
 // Scene reader: YAML text (format and every key: docs/scene.md) → a validated Model.
 //
-// Parallel use: the app reads the file on rank 0 only, runs check_scene_text there,
+// Parallel use: the app reads the file on rank 0 only (read_scene_file), runs
+// check_scene_text there,
 // broadcasts the text (catena::broadcast_string) and calls parse_scene on every rank.
 // Parsing is deterministic, so every rank builds the same Model or throws the same
 // InputError. Nothing here communicates.
@@ -40,8 +41,13 @@ void check_scene_text(const std::string& text, const std::string& file_label);
 Model parse_scene(const std::string& text, const std::string& file_label,
                   const std::vector<std::string>& overrides = {}, const MemoryBudget& budget = {});
 
-// Not collective. Reads the file at `path` (it must exist, be a readable regular file of
-// at most max_scene_bytes) and parses it with `path` as the label. Throws InputError.
+// Not collective. The text of the scene file at `path`, which must exist and be a readable
+// regular file (not a directory, a device or a pipe, which would be read without end or
+// block) of at most max_scene_bytes; else an InputError naming the path and what it is.
+std::string read_scene_file(const std::string& path);
+
+// Not collective. read_scene_file, then parse_scene with `path` as the label. Throws
+// InputError.
 Model read_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 }  // namespace catena::model
