@@ -205,6 +205,7 @@ void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl)
       st.section = std::array<double, 2>{x0, x1};
     } else if (a == "--cutoff") {
       st.cutoff_hz = parse_real(value("--cutoff"), "--cutoff");
+      st.cutoff_given = true;
       if (!(st.cutoff_hz > 0.0))
         throw InputError({"", 0, "--cutoff"},
                          "the cutoff must be positive (got " + args[i] + " Hz)");
@@ -259,16 +260,18 @@ void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl)
 }
 // The options of a command that takes a scene, for the message on an unknown one.
 std::string command_options(const std::string& command) {
-  const std::string common = "--set KEY=VALUE, -o FILE, --progress S, --quiet, --memory-limit GIB";
-  if (command == "run") return common + ", --restart, --realtime, --error-bar, --error-bar-ranks K";
-  if (command == "check") return common + ", --ids";
-  if (command == "modes") return common + ", --count N";
+  const std::string common = "--set KEY=VALUE, --progress S, --quiet, --memory-limit GIB";
+  if (command == "run")
+    return common + ", -o FILE, --restart, --realtime, --error-bar, --error-bar-ranks K";
+  if (command == "check") return common + ", -o FILE, --ids";
+  if (command == "modes") return common + ", -o FILE, --count N";
   if (command == "elasticity") return common + ", --span N, --step DX, --force F, --json";
   if (command == "study")
     return common +
-           ", --vary KEY=V1,V2,..., --methods, --steps, --reference, --target, "
-           "--ranks-per-case, --probe, --cutoff";
-  if (command == "sweep") return common + ", --vary KEY=V1,V2,..., --ranks-per-case, --cutoff";
+           ", -o DIR, --vary KEY=V1,V2,..., --methods, --steps, --reference, "
+           "--target, --ranks-per-case, --probe, --cutoff";
+  if (command == "sweep")
+    return common + ", -o DIR, --vary KEY=V1,V2,..., --ranks-per-case, --cutoff";
   return common;
 }
 

@@ -19,6 +19,7 @@ struct StatsArguments {
   // --series given: else the samples, or every step's when the samples are too coarse for
   // the cutoff (fields written seldom)
   bool series_given = false;
+  bool cutoff_given = false;  // --cutoff given (else EN 50318's 20 Hz)
   // --ranges en50318|none: the acceptance ranges (default: the run's catenary.acceptance).
   std::optional<std::string> ranges;
   std::string output;                       // export, plot: -o PREFIX (default: OUT less .h5)

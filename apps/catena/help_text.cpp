@@ -227,7 +227,7 @@ mat_mumps_icntl_N, ...):
   -mass_                the consistent initial acceleration (mass matrix solve)
   -elasticity_, -elasticity_linear_   catena elasticity: loaded solves, the tangent
 e.g.:
-  -static_snes_monitor -hht_snes_converged_reason -log_view -static_mat_mumps_icntl_4 2
+  -static_snes_monitor -hht_snes_converged_reason -log_view -static_stability_mat_mumps_icntl_4 2
 An option that no solver of the run read is reported when the command ends (a misspelling,
 or a solver this run does not create).
 )";

@@ -97,9 +97,10 @@ SecondOrderSystem::SecondOrderSystem(MPI_Comm comm, const model::Model& model)
   // than as the solvers' failure on an empty matrix (MUMPS INFOG(1) = -16).
   if (dofs_.n_global() == 0)
     throw InputError({model.source_file, 0, "supports"},
-                     "the scene leaves no unknown free: the supports hold every coordinate of "
-                     "every node, so nothing can move and there is nothing to solve; free a "
-                     "node's coordinates or add one that is not held");
+                     "the scene leaves no unknown free: every coordinate of every node is held "
+                     "(by the scene's supports, or by a static start's holds), so nothing can "
+                     "move and there is nothing to solve; free a node's coordinates or add one "
+                     "that is not held");
   // Resolve every coupling's unknowns once: local and global index, value where fixed.
   std::vector<char> supported(model.nodes.size(), 0);
   for (const int node : model::supported_nodes(model)) supported[static_cast<size_t>(node)] = 1;

@@ -100,7 +100,7 @@ MemoryEstimate estimate_memory(const ProblemSize& size) {
   const auto dofs = static_cast<double>(size.dofs);
   const auto nonzeros = static_cast<double>(size.matrix_nonzeros);
   e.model_bytes = nodes * (sizeof(Node) + kReaderBytesPerNode) +
-                  elements * (sizeof(ElementDesc) + 2 * sizeof(int) + kReaderBytesPerElement);
+                  elements * (sizeof(ElementDesc) + kReaderBytesPerElement);
   e.solver_bytes = elements * kAssemblyBytesPerElement + dofs * kVectorsPerDof * 8.0 +
                    nonzeros * kBytesPerNonzero * kMatricesPerFactor * size.factor_multiple;
   e.factor_bytes = nonzeros * kFactorFill * 8.0 * kMumpsOverhead * size.factor_multiple;

@@ -10,9 +10,9 @@
 #include "catenary_window_reader.hpp"
 #include "line_path_reader.hpp"
 #include "number_format.hpp"
+#include "output_name.hpp"
 #include "pantograph_mechanism.hpp"
 #include "speed_reader.hpp"
-#include "output_name.hpp"
 
 namespace catena::model::detail {
 namespace {

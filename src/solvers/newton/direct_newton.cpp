@@ -92,13 +92,10 @@ void configure_direct_newton(SNES snes, const std::string& prefix, JacobianSymme
   CATENA_PETSC(SNESSetFromOptions(snes));
 }
 
-bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry,
-                           bool announce) {
-  PC pc = nullptr;
-  CATENA_PETSC(KSPGetPC(ksp, &pc));
-  PCFailedReason failed = PC_NOERROR;
-  CATENA_PETSC(PCGetFailedReason(pc, &failed));
-  // PETSc's LU, or on more ranks the interface Schur solve (a shell PC) of PETSc's LUs.
+namespace {
+// Whether the KSP's PC factors without pivoting: PETSc's LU, or on more ranks the interface
+// Schur solve (a shell PC) of PETSc's LUs.
+bool factors_unpivoted(PC pc) {
   PetscBool petsc = PETSC_FALSE;
   CATENA_PETSC(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCSHELL, &petsc));
   if (!petsc) {
@@ -106,16 +103,30 @@ bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry 
     CATENA_PETSC(PCFactorGetMatSolverType(pc, &package));
     if (package) CATENA_PETSC(PetscStrcmp(package, MATSOLVERPETSC, &petsc));
   }
-  if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !petsc ||
-      !package_from_options(prefix).package.empty())
-    return false;
+  return petsc == PETSC_TRUE;
+}
+}  // namespace
+
+bool switch_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry) {
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  if (!factors_unpivoted(pc) || !package_from_options(prefix).package.empty()) return false;
   // A PC of another type first, so that the factorisation's settings (the order) start
   // afresh; the options are applied again.
   CATENA_PETSC(PCReset(pc));
   CATENA_PETSC(PCSetType(pc, PCNONE));
   set_direct_factorisation(pc, prefix, symmetry, Pivoting::required);
   CATENA_PETSC(KSPSetFromOptions(ksp));
-  if (!announce) return true;
+  return true;
+}
+
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry) {
+  PC pc = nullptr;
+  CATENA_PETSC(KSPGetPC(ksp, &pc));
+  PCFailedReason failed = PC_NOERROR;
+  CATENA_PETSC(PCGetFailedReason(pc, &failed));
+  if (failed != PC_FACTOR_NUMERIC_ZEROPIVOT || !switch_to_pivoting(ksp, prefix, symmetry))
+    return false;
   MPI_Comm comm = MPI_COMM_NULL;
   CATENA_PETSC(PetscObjectGetComm(reinterpret_cast<PetscObject>(ksp), &comm));
   CATENA_PETSC(PetscPrintf(

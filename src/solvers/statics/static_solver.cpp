@@ -228,19 +228,21 @@ StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec s
     CATENA_PETSC(SNESGetConvergedReason(s.snes.get(), &reason));
     CATENA_PETSC(SNESGetIterationNumber(s.snes.get(), &its));
     all_its += its;
-    // The unpivoted factorisation met a zero pivot: MUMPS's LDLᵀ from the iterate reached.
-    if (!(reason == SNES_DIVERGED_LINEAR_SOLVE && s.unpivoted &&
-          fall_back_to_pivoting(ksp, "static_", JacobianSymmetry::symmetric, false)))
+    // Any failure of Newton without pivoting: a zero pivot (PETSc's LU flags only pivots
+    // below 100ε), or a nearly singular tangent's huge step (NaN residual, no convergence).
+    // MUMPS's LDLᵀ, which detects null pivots relative to the matrix, from here on.
+    if (!(reason < 0 && s.unpivoted &&
+          switch_to_pivoting(ksp, "static_", JacobianSymmetry::symmetric)))
       break;
-    // The attempt again from its start: MUMPS scales the matrix it first factors and keeps
-    // that scaling, and from the singular one (a row without stiffness) it took a nearly
-    // null pivot for a pivot (a slack bar's end thrown through its pin).
+    // The attempt again from its start, not from the iterate reached: MUMPS scales the matrix
+    // it first factors and keeps that scaling, and from a singular one (a row without
+    // stiffness) it took a nearly null pivot for a pivot (a slack bar's end thrown through
+    // its pin).
     s.unpivoted = false;
     CATENA_PETSC(VecCopy(start, trial));
     s.n_jacobians = 0;
   }
-  its = all_its;
-  report.n_newton_iterations += static_cast<int>(its);
+  report.n_newton_iterations += static_cast<int>(all_its);  // its: the last try's alone
   if (s.n_jacobians > 0) {
     const MumpsStatus newton = mumps_status(ksp);
     if (newton.infog1 < 0 && newton.infog1 != -10)
@@ -261,7 +263,13 @@ StaticSolver::Attempt StaticSolver::attempt(double target, double tau_end, Vec s
       result.accepted = false;
       result.unstable = true;
       ++report.n_unstable_rejections;
-    } else if (tangent.null_pivots > 0 && target >= tau_end) {
+    } else if (tangent.null_pivots > 0 && s.unpivoted &&
+               switch_to_pivoting(ksp, "static_", JacobianSymmetry::symmetric)) {
+      // A singular tangent at the accepted state (before the loads are on): the next
+      // attempt's first matrix, which only MUMPS's null-pivot detection gets past.
+      s.unpivoted = false;
+    }
+    if (tangent.null_pivots > 0 && target >= tau_end && result.accepted) {
       // Neutral directions are normal before the loads are on (an unloaded pendulum);
       // at full load they mean a mechanism.
       throw NumericalError(

@@ -55,11 +55,14 @@ KspHandle create_direct_ksp(MPI_Comm comm, const std::string& prefix, JacobianSy
 // PETSc's LU met a zero pivot (dependent constraints, or an unknown that only a constraint
 // holds, such as a slider's arc length on a straight path), the KSP factors with MUMPS, as
 // for Pivoting::required, from now on, and a note says so; returns whether it switched
-// (false for any other failure, or a package the options chose). Also after a failed solve
-// of a Pivoting::not_needed matrix (the static solver's: a zero pivot of a mechanism or an
-// unloaded slack part), with `announce` false: no note.
-bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry,
-                           bool announce = true);
+// (false for any other failure, or a package the options chose).
+bool fall_back_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry);
+
+// Collective on the KSP. Makes a KSP that factors without pivoting (PETSc's LU, or the
+// interface split) factor with MUMPS, as for Pivoting::required, from now on, whatever made
+// its solve fail; returns false (nothing changed) when it pivots already or the options
+// chose its package.
+bool switch_to_pivoting(KSP ksp, const std::string& prefix, JacobianSymmetry symmetry);
 
 // Not collective. Whether a matrix on `comm` that needs no pivoting is solved by its
 // partition interface (interface_schur.hpp) rather than factored whole: on more than one
