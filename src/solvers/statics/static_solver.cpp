@@ -119,10 +119,11 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   // is positive definite): PETSc's LU on one rank and the interface split on more
   // (interface_schur.hpp) factor it without pivoting, several times faster than MUMPS's
   // LDLᵀ on one rank and faster again on more (docs/performance.md, "Static line
-  // benchmark"). A zero pivot (a mechanism, or a part without stiffness before its loads
-  // are on, whose null pivots MUMPS steps past) switches this solver to MUMPS's LDLᵀ for
-  // the rest of its solves (attempt). Otherwise MUMPS's LDLᵀ from the start (the static
-  // tangent is symmetric: LDLᵀ halves the factorisation).
+  // benchmark"). A failed attempt (a zero pivot, or the huge step of a nearly singular
+  // tangent: a mechanism, a part without stiffness before its loads are on, whose null
+  // pivots MUMPS steps past) or a singular tangent at an accepted state switches this
+  // solver to MUMPS's LDLᵀ for the rest of its solves (attempt). Otherwise MUMPS's LDLᵀ
+  // from the start (the static tangent is symmetric: LDLᵀ halves the factorisation).
   s.unpivoted = !s.regularise && model::total_multipliers(system.model()) == 0;
   configure_direct_newton(s.snes.get(), "static_",
                           s.unpivoted ? JacobianSymmetry::general : JacobianSymmetry::symmetric,
