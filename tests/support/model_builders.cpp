@@ -17,11 +17,12 @@ std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_e
     m.nodes.push_back(node);
   }
   for (int i = 0; i < n_elements; ++i) {
-    model::ElementDesc e;
-    e.id = static_cast<std::int64_t>(m.elements.size()) + 1;
+    // Built in place: a local copied in made GCC 12 -O3 warn (maybe-uninitialized) about
+    // the variant's copy.
+    model::ElementDesc& e = m.elements.emplace_back();
+    e.id = static_cast<std::int64_t>(m.elements.size());
     e.nodes = {nodes[i], nodes[i + 1]};
     e.props = props;
-    m.elements.push_back(e);
   }
   return nodes;
 }
