@@ -100,6 +100,13 @@ bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
   return true;
 }
 
+// The options of study and sweep beyond every scene command's, for the "accepted" lists.
+constexpr const char* kStudyOptions =
+    "--vary KEY=V1,V2,..., --methods, --steps, --reference, --target, --ranks-per-case, "
+    "--probe, --cutoff, --set, -o DIR";
+constexpr const char* kSweepOptions =
+    "--vary KEY=V1,V2,..., --ranks-per-case, --cutoff, --set, -o DIR";
+
 // The options of `catena study` at args[i]; returns false if args[i] is none of them.
 bool parse_study_option(const std::vector<std::string>& args, size_t& i, CommandLine& cl) {
   StudyArguments& st = cl.study;
@@ -145,9 +152,8 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
   } else if (a == "--restart" || a == "--realtime" || a == "--ids") {
     throw InputError({"", 0, a}, "'" + a +
                                      "' is not an option of study (a study resumes by itself: "
-                                     "run the same command again); accepted: --vary, "
-                                     "--methods, --steps, --reference, --target, "
-                                     "--ranks-per-case, --probe, --cutoff, --set, -o DIR");
+                                     "run the same command again); accepted: " +
+                                     kStudyOptions);
   } else {
     return false;
   }
@@ -163,8 +169,8 @@ bool parse_sweep_option(const std::vector<std::string>& args, size_t& i, Command
       throw InputError({"", 0, a}, "'" + a +
                                        "' is an option of study, not of sweep (a sweep "
                                        "tabulates each run's statistics; a study measures "
-                                       "errors against a reference); accepted: --vary, "
-                                       "--ranks-per-case, --cutoff, --set, -o DIR");
+                                       "errors against a reference); accepted: " +
+                                       kSweepOptions);
   return parse_study_option(args, i, cl);
 }
 
@@ -260,19 +266,16 @@ void parse_post(const std::vector<std::string>& args, size_t i, CommandLine& cl)
 }
 // The options of a command that takes a scene, for the message on an unknown one.
 std::string command_options(const std::string& command) {
-  const std::string common = "--set KEY=VALUE, --progress S, --quiet, --memory-limit GIB";
+  const std::string common = "--progress S, --quiet, --memory-limit GIB";
+  if (command == "study") return kStudyOptions + (", " + common);
+  if (command == "sweep") return kSweepOptions + (", " + common);
+  const std::string with_set = "--set KEY=VALUE, " + common;
   if (command == "run")
-    return common + ", -o FILE, --restart, --realtime, --error-bar, --error-bar-ranks K";
-  if (command == "check") return common + ", -o FILE, --ids";
-  if (command == "modes") return common + ", -o FILE, --count N";
-  if (command == "elasticity") return common + ", --span N, --step DX, --force F, --json";
-  if (command == "study")
-    return common +
-           ", -o DIR, --vary KEY=V1,V2,..., --methods, --steps, --reference, "
-           "--target, --ranks-per-case, --probe, --cutoff";
-  if (command == "sweep")
-    return common + ", -o DIR, --vary KEY=V1,V2,..., --ranks-per-case, --cutoff";
-  return common;
+    return with_set + ", -o FILE, --restart, --realtime, --error-bar, --error-bar-ranks K";
+  if (command == "check") return with_set + ", -o FILE, --ids";
+  if (command == "modes") return with_set + ", -o FILE, --count N";
+  if (command == "elasticity") return with_set + ", --span N, --step DX, --force F, --json";
+  return with_set;
 }
 
 }  // namespace

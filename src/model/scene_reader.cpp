@@ -136,7 +136,7 @@ std::string source_text_after(const std::string& text, const std::string& file_l
 
 // The model's vectors grew by push_back to up to twice their size, and every rank keeps
 // the model for the whole run: give back the spare capacity (on the 10 km benchmark line,
-// 25 536 unused element slots, 5.5 MiB a rank).
+// 25 536 unused element slots, about 5 MiB a rank).
 void release_spare_capacity(Model& model) {
   model.nodes.shrink_to_fit();
   model.elements.shrink_to_fit();

@@ -117,9 +117,9 @@ StaticSolver::StaticSolver(assembly::SecondOrderSystem& system, const model::Sta
   // Without multipliers (zero diagonal rows) and rigid bodies (regularised, below) the
   // tangent's pivots do not vanish where the structure holds (a stable equilibrium's tangent
   // is positive definite): PETSc's LU on one rank and the interface split on more
-  // (interface_schur.hpp) factor it without pivoting, several times faster than MUMPS's
-  // LDLᵀ on one rank and faster again on more (docs/performance.md, "Static line
-  // benchmark"). A failed attempt (a zero pivot, or the huge step of a nearly singular
+  // (interface_schur.hpp) factor it without pivoting: the 10 km line's static solve in 0.57
+  // of its time with MUMPS's LDLᵀ on one rank, 0.62 on two (docs/performance.md, "Static
+  // line benchmark"). A failed attempt (a zero pivot, or the huge step of a nearly singular
   // tangent: a mechanism, a part without stiffness before its loads are on, whose null
   // pivots MUMPS steps past) or a singular tangent at an accepted state switches this
   // solver to MUMPS's LDLᵀ for the rest of its solves (attempt). Otherwise MUMPS's LDLᵀ
