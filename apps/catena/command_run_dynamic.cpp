@@ -464,7 +464,7 @@ void calibrate_absorbing_ends(assembly::SecondOrderSystem& system, Vec q0, int r
 void linearize_structure(assembly::SecondOrderSystem& system, Vec q0, int rank) {
   const model::Model& m = system.model();
   const auto linear = [&](int e) {
-    const model::ElementProps& props = m.elements[static_cast<std::size_t>(e)].props;
+    const model::ElementProps& props = *m.elements[static_cast<std::size_t>(e)].props;
     if (const auto* cable = std::get_if<model::CableProps>(&props)) return !cable->tension_only;
     return std::holds_alternative<model::BeamProps>(props);
   };

@@ -87,7 +87,7 @@ double cable_dropper_axial_omega(const model::Model& m) {
   double omega = 0.0;
   for (const model::CatenaryDropper& d : m.catenary->droppers) {
     const auto* cable =
-        std::get_if<model::CableProps>(&m.elements[static_cast<std::size_t>(d.element)].props);
+        std::get_if<model::CableProps>(&*m.elements[static_cast<std::size_t>(d.element)].props);
     if (!cable || cable->mass_per_length <= 0.0) continue;
     const double l0 = d.mesh_length / (1.0 + cable->prestrain);
     omega = std::max(omega, std::numbers::pi / l0 * std::sqrt(cable->EA / cable->mass_per_length));

@@ -73,7 +73,7 @@ void SecondOrderSystem::calibrate_absorbing_ends(Vec q0) {
                               .normalized();
     // Taut: pulled outwards with at least kTautStrain·EA (1.8 N on a contact wire). Below,
     // the direction of F is round-off and the transverse impedance √(T m') nearly nothing.
-    const auto& cable = std::get<model::CableProps>(element.props);
+    const auto& cable = std::get<model::CableProps>(*element.props);
     if (!(F.dot(outwards) > kTautStrain * cable.EA)) {
       std::ostringstream os;
       os << "absorbing end at node " << m.nodes[static_cast<std::size_t>(a.node)].id

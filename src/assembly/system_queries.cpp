@@ -17,7 +17,7 @@ namespace catena::assembly {
 
 bool SecondOrderSystem::has_slack_prestrain() const {
   for (const auto& e : model_->elements)
-    if (const auto* c = std::get_if<model::CableProps>(&e.props);
+    if (const auto* c = std::get_if<model::CableProps>(&*e.props);
         c && !c->prestrain_with_loads && c->prestrain < elements::AncfCable::kPathPrestrain)
       return true;
   return false;

@@ -63,7 +63,7 @@ WirePart extract_wires(const model::Model& m, const std::vector<const model::Cat
       part.model.elements.push_back(remap(m.elements[static_cast<std::size_t>(e)]));
     }
     w.EA = std::get<model::CableProps>(
-               part.model.elements[static_cast<std::size_t>(w.cables.front())].props)
+               *part.model.elements[static_cast<std::size_t>(w.cables.front())].props)
                .EA;
     part.wires.push_back(std::move(w));
   }
@@ -71,7 +71,7 @@ WirePart extract_wires(const model::Model& m, const std::vector<const model::Cat
     return part.part_node[static_cast<std::size_t>(node)] >= 0;
   };
   for (const model::ElementDesc& element : m.elements)
-    if (std::holds_alternative<model::SpringProps>(element.props) &&
+    if (std::holds_alternative<model::SpringProps>(*element.props) &&
         std::all_of(element.nodes.begin(), element.nodes.end(), in_part))
       part.model.elements.push_back(remap(element));
   for (model::Support s : m.supports)
@@ -102,14 +102,19 @@ WirePart extract_wires(const model::Model& m, const std::vector<const model::Cat
 }
 
 void set_prestrain(WirePart& part, const PartWire& wire, double prestrain) {
-  for (const int e : wire.cables)
-    std::get<model::CableProps>(part.model.elements[static_cast<std::size_t>(e)].props).prestrain =
-        prestrain;
+  model::edit_shared(
+      wire.cables.size(),
+      [&](std::size_t i) -> model::SharedProps& {
+        return part.model.elements[static_cast<std::size_t>(wire.cables[i])].props;
+      },
+      [prestrain](model::ElementProps& p) {
+        std::get<model::CableProps>(p).prestrain = prestrain;
+      });
 }
 
 double prestrain_of(const WirePart& part, const PartWire& wire) {
   return std::get<model::CableProps>(
-             part.model.elements[static_cast<std::size_t>(wire.cables.front())].props)
+             *part.model.elements[static_cast<std::size_t>(wire.cables.front())].props)
       .prestrain;
 }
 

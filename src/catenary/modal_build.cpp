@@ -111,7 +111,7 @@ Eigen::VectorXd vector_entries(Vec v, const std::vector<PetscInt>& dofs, MPI_Com
 std::vector<int> tension_only_bars(const model::Model& m) {
   std::vector<int> bars;
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
-    const model::ElementProps& props = m.elements[e].props;
+    const model::ElementProps& props = *m.elements[e].props;
     if (const auto* bar = std::get_if<model::BarProps>(&props); bar && bar->tension_only)
       bars.push_back(static_cast<int>(e));
     if (const auto* cable = std::get_if<model::CableProps>(&props); cable && cable->tension_only)
@@ -272,7 +272,7 @@ ModalModel build_modal_model(assembly::SecondOrderSystem& system, Vec q0, ModalS
   std::vector<detail::SiteVector> dropper_sites;
   for (int e : bars) {
     const model::ElementDesc& el = m.elements[static_cast<std::size_t>(e)];
-    const auto& bar = std::get<model::BarProps>(el.props);
+    const auto& bar = std::get<model::BarProps>(*el.props);
     const std::size_t a = 6 * slot.at(el.nodes.front()), b = 6 * slot.at(el.nodes.back());
     Vec3 chord;
     for (int j = 0; j < 3; ++j)

@@ -25,22 +25,30 @@ struct Unknowns {
   std::vector<double> stitch_prestrains;  // per stitch wire
 };
 
+// The elements of a list, by index, for edit_shared (model/shared_props.hpp).
+auto props_of(model::Model& m, const std::vector<int>& elements) {
+  return [&m, &elements](std::size_t i) -> model::SharedProps& {
+    return m.elements[static_cast<std::size_t>(elements[i])].props;
+  };
+}
+
 void set_wire_prestrain(model::Model& m, const model::CatenaryWire& wire, double prestrain) {
-  for (const int e : wire.elements)
-    std::get<CableProps>(m.elements[static_cast<std::size_t>(e)].props).prestrain = prestrain;
+  model::edit_shared(
+      wire.elements.size(), props_of(m, wire.elements),
+      [prestrain](model::ElementProps& p) { std::get<CableProps>(p).prestrain = prestrain; });
 }
 
 // A cable dropper's chain (top to bottom) given the unstretched length l0: prestrain
 // L/l0 − 1 (L its mesh length), EA = stiffness·l0 when the stiffness is the design value,
 // and the Kelvin–Voigt time that keeps its damping c = EA·τ/l0 (N·s/m) as built.
 void set_cable_dropper_length(model::Model& m, const model::CatenaryDropper& d, double l0) {
-  for (const int e : d.elements) {
-    auto& cable = std::get<CableProps>(m.elements[static_cast<std::size_t>(e)].props);
+  model::edit_shared(d.elements.size(), props_of(m, d.elements), [&d, l0](model::ElementProps& p) {
+    auto& cable = std::get<CableProps>(p);
     const double damping = cable.EA * cable.damping_time * (1.0 + cable.prestrain) / d.mesh_length;
     if (d.stiffness > 0.0) cable.EA = d.stiffness * l0;
     cable.prestrain = d.mesh_length / l0 - 1.0;
     cable.damping_time = damping * l0 / cable.EA;
-  }
+  });
 }
 
 void apply(const Unknowns& u, model::Model& m) {
@@ -48,8 +56,9 @@ void apply(const Unknowns& u, model::Model& m) {
   for (std::size_t i = 0; i < layout.droppers.size(); ++i) {
     model::CatenaryDropper& d = layout.droppers[i];
     d.unstretched_length = u.lengths[i];
-    auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
-    if (auto* bar = std::get_if<BarProps>(&props)) {
+    model::SharedProps& props = m.elements[static_cast<std::size_t>(d.element)].props;
+    if (std::holds_alternative<BarProps>(*props)) {
+      auto* bar = &std::get<BarProps>(props.edit());
       bar->unstretched_length = u.lengths[i];
       if (d.stiffness > 0.0) bar->EA = d.stiffness * u.lengths[i];
     } else {
@@ -68,7 +77,8 @@ void apply(const Unknowns& u, model::Model& m) {
 }
 
 double wire_EA(const model::Model& m, const model::CatenaryWire& wire) {
-  return std::get<CableProps>(m.elements[static_cast<std::size_t>(wire.elements.front())].props).EA;
+  return std::get<CableProps>(*m.elements[static_cast<std::size_t>(wire.elements.front())].props)
+      .EA;
 }
 
 // A dropper's section, bar or cable: EA (N) and mass per unstretched length (kg/m).
@@ -77,7 +87,7 @@ struct DropperSection {
 };
 
 DropperSection dropper_section(const model::Model& m, const model::CatenaryDropper& d) {
-  const auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
+  const auto& props = *m.elements[static_cast<std::size_t>(d.element)].props;
   if (const auto* bar = std::get_if<BarProps>(&props)) return {bar->EA, bar->mass_per_length};
   const auto& cable = std::get<CableProps>(props);
   return {cable.EA, cable.mass_per_length};

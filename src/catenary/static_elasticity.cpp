@@ -81,7 +81,7 @@ class SlackCounter {
             else
               return false;
           },
-          m.elements[static_cast<std::size_t>(elements_[i])].props);
+          *m.elements[static_cast<std::size_t>(elements_[i])].props);
       if (tension_only && results_[i].axial_strain >= 0.0) taut_.push_back(i);
     }
   }
@@ -159,8 +159,8 @@ ElasticityReport static_elasticity(MPI_Comm comm, const model::Model& model,
   CATENA_ASSERT(magnitude > 0.0 && std::isfinite(magnitude), "the probe force must be nonzero");
   CATENA_ASSERT(!probe.path.empty(), "the probe needs a path");
   for ([[maybe_unused]] const int e : probe.path)
-    CATENA_ASSERT(!std::holds_alternative<model::BarProps>(model.elements[e].props) &&
-                      !std::holds_alternative<model::SpringProps>(model.elements[e].props),
+    CATENA_ASSERT(!std::holds_alternative<model::BarProps>(*model.elements[e].props) &&
+                      !std::holds_alternative<model::SpringProps>(*model.elements[e].props),
                   "the probe's path is made of cable or beam elements (shape functions)");
   const model::Model probed = with_probe(model, probe);
   const double length = path_length(probed, probe.path);

@@ -82,7 +82,7 @@ std::unique_ptr<elements::Element> make_element(const model::Model& model, int i
                                p.rayleigh, model, desc.nodes, arena);
         }
       },
-      desc.props);
+      *desc.props);
 }
 
 std::unique_ptr<ElementCoupling> make_element_coupling(const model::Model& model, int index,

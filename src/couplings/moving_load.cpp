@@ -18,7 +18,7 @@ MovingLoad::MovingLoad(const model::Model& model, const model::MovingLoad& load,
       continue;
     }
     const model::ElementDesc& e = model.elements[static_cast<size_t>(load.elements[i])];
-    CATENA_ASSERT(model::element_node_dofs(e.props) >= 6,
+    CATENA_ASSERT(model::element_node_dofs(*e.props) >= 6,
                   "a moving load's path is made of cable or beam elements");
     first_dof_.push_back(static_cast<int>(dofs_.size()));
     for (int node : {e.nodes.front(), e.nodes.back()})

@@ -26,7 +26,7 @@ void write_element_classes(const ParallelHdf5File& file, const model::Model& mod
   };
   std::vector<std::int8_t> kinds;
   for (std::int64_t k = 0; k < block.count; ++k)
-    kinds.push_back(static_cast<std::int8_t>(model::element_kind_code(element(k).props)));
+    kinds.push_back(static_cast<std::int8_t>(model::element_kind_code(*element(k).props)));
   const DatasetHandle kind_dataset = write_block_dataset<std::int8_t>(
       file, {mesh_layout::element_kind, n_elements, 1}, block, kinds);
   write_string_attribute({kind_dataset.get(), file.path()}, "kinds", model::element_kind_names());

@@ -135,7 +135,7 @@ void read_absorbing_ends(const Field& absorbing_ends, SceneBuild& build) {
       for (const int n : model.elements[e].nodes)
         if (n == end.node) attached.push_back(static_cast<int>(e));
     const auto* cable = attached.size() == 1
-                            ? std::get_if<CableProps>(&model.elements[attached[0]].props)
+                            ? std::get_if<CableProps>(&*model.elements[attached[0]].props)
                             : nullptr;
     if (!cable || cable->tension_only)
       node_field.fail("node " + id + " is the end of " + std::to_string(attached.size()) +

@@ -44,7 +44,7 @@ std::pair<double, double> vertical_support(const Model& m, int node) {
 }
 
 const CableProps& wire_props(const Model& m, const CatenaryWire& wire) {
-  return std::get<CableProps>(m.elements[static_cast<std::size_t>(wire.elements.front())].props);
+  return std::get<CableProps>(*m.elements[static_cast<std::size_t>(wire.elements.front())].props);
 }
 
 std::string wire_text(const Model& m, const CatenaryWire& wire) {
@@ -125,9 +125,9 @@ struct DropperProperties {
 
 DropperProperties dropper_properties(const Model& m, const CatenaryDropper& d) {
   const ElementDesc& element = m.elements[static_cast<std::size_t>(d.element)];
-  if (const auto* bar = std::get_if<BarProps>(&element.props))
+  if (const auto* bar = std::get_if<BarProps>(&*element.props))
     return {bar->tension_only, bar->EA, 0.0, bar->mass_per_length, bar->damping};
-  const auto& cable = std::get<CableProps>(element.props);
+  const auto& cable = std::get<CableProps>(*element.props);
   const double l0 = d.mesh_length / (1.0 + cable.prestrain);
   return {cable.tension_only, cable.EA, cable.EI, cable.mass_per_length,
           cable.EA * cable.damping_time / l0};

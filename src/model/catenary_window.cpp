@@ -83,7 +83,7 @@ std::vector<int> window_state_sources(const Model& m, WindowImage image) {
       for (const int candidate : starting[static_cast<std::size_t>(candidate_first)]) {
         const ElementDesc& other = m.elements[static_cast<std::size_t>(candidate)];
         // The same set too: a stitch wire's reference line lies on the messenger's.
-        if (other.props.index() != element.props.index() || other.set != element.set ||
+        if (other.props->index() != element.props->index() || other.set != element.set ||
             other.nodes.size() != element.nodes.size())
           continue;
         bool match = true;

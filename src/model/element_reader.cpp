@@ -1,6 +1,7 @@
 #include "element_reader.hpp"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 
 namespace catena::model::detail {
@@ -32,6 +33,7 @@ std::vector<Field> read_node_refs(const Field& nodes) {
 std::vector<PendingElement> read_elements(const Field& elements, const SectionTable& sections) {
   std::vector<PendingElement> out;
   std::unordered_map<std::int64_t, std::size_t> first_with_id;
+  std::unordered_map<const Section*, SharedProps> shared;  // one block per section
   for (const Field& entry : elements.items()) {
     entry.expect_map("an element {id, section, nodes, ...}");
     entry.check_keys(element_keys());
@@ -47,7 +49,7 @@ std::vector<PendingElement> read_elements(const Field& elements, const SectionTa
     }
     const Section& section = find_section(sections, entry.child("section"));
     element.node_refs = read_node_refs(entry.child("nodes"));
-    element.desc.props = section.props;
+    element.desc.props = shared.try_emplace(&section, section.props).first->second;
     element.desc.set = entry.child("set").text_or("");
     element.prestress = read_prestress(entry, section);
     element.desc.distributed_load = read_distributed_load(entry, section);
@@ -67,6 +69,10 @@ void add_explicit_elements(std::vector<PendingElement> elements, SceneBuild& bui
   std::vector<int> origins;
   descs.reserve(elements.size());
   origins.reserve(elements.size());
+  // The cables of one section given the same prestrain share one block: keyed by the
+  // section's block and the prestrain; the section's handle is kept so that its address
+  // stays its own.
+  std::map<std::pair<const ElementProps*, double>, std::pair<SharedProps, SharedProps>> prestrained;
   for (PendingElement& element : elements) {
     const int a = build.resolve_node(element.node_refs[0]);
     const int b = build.resolve_node(element.node_refs[1]);
@@ -75,9 +81,13 @@ void add_explicit_elements(std::vector<PendingElement> elements, SceneBuild& bui
                                         std::to_string(build.model.nodes[a].id) +
                                         "; an element joins two different nodes");
     element.desc.nodes = {a, b};
-    if (auto* cable = std::get_if<CableProps>(&element.desc.props)) {
+    if (const auto* cable = std::get_if<CableProps>(&*element.desc.props)) {
       const double length = (build.model.nodes[b].position - build.model.nodes[a].position).norm();
-      cable->prestrain = resolve_prestrain(element.prestress, cable->EA, length);
+      const double prestrain = resolve_prestrain(element.prestress, cable->EA, length);
+      auto [it, added] = prestrained.try_emplace({&*element.desc.props, prestrain},
+                                                 element.desc.props, element.desc.props);
+      if (added) std::get<CableProps>(it->second.second.edit()).prestrain = prestrain;
+      element.desc.props = it->second.second;
     }
     descs.push_back(std::move(element.desc));
     origins.push_back(build.add_origin(element.entry));

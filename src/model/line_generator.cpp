@@ -79,7 +79,7 @@ class LineBuilder {
     prototype.distributed_load = distributed_load;
     prototype.set = name;
     // The prestrain depends only on the chord: every element gets chord/n of the length.
-    if (auto* cable = std::get_if<CableProps>(&prototype.props))
+    if (auto* cable = std::get_if<CableProps>(&prototype.props.edit()))
       cable->prestrain = resolve_prestrain(prestress, cable->EA, chord);
 
     const int origin = build_.add_origin(line);

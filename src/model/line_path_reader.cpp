@@ -30,7 +30,7 @@ PathLine resolve_line(const Field& reference, const LineTable& lines, const Mode
     reference.fail("no line named '" + name + "';" + did_you_mean(name, lines.names) +
                    " expected the name of a line under 'lines'; lines: " + joined(lines.names));
   // Every element of a line has the line's section, so the first one tells the kind.
-  const ElementProps& props = model.elements[it->second.front()].props;
+  const ElementProps& props = *model.elements[it->second.front()].props;
   if (!std::holds_alternative<CableProps>(props) && !std::holds_alternative<BeamProps>(props))
     reference.fail("line '" + name + "' is made of " + std::string(element_kind_name(props)) +
                    " elements; " + std::string(what) +

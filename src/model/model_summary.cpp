@@ -75,8 +75,8 @@ struct SetSummary {
   double min_tension = 0.0, max_tension = 0.0;  // EA·prestrain, N (EA may differ)
 
   void add(const ElementDesc& element) {
-    ++count_per_kind[element.props.index()];
-    const auto* cable = std::get_if<CableProps>(&element.props);
+    ++count_per_kind[element.props->index()];
+    const auto* cable = std::get_if<CableProps>(&*element.props);
     if (!cable) return;
     const double tension = cable->EA * cable->prestrain;
     if (n_cables++ == 0) {
@@ -152,7 +152,7 @@ std::string describe(const Model& model, int n_ranks_running) {
   std::vector<std::string> set_order;
   std::map<std::string, SetSummary> sets;
   for (const ElementDesc& element : model.elements) {
-    ++per_kind[element.props.index()];
+    ++per_kind[element.props->index()];
     if (!sets.contains(element.set)) set_order.push_back(element.set);
     sets[element.set].add(element);
   }

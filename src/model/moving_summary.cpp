@@ -252,14 +252,14 @@ bool structure_is_damped(const Model& m) {
       pantograph_node[static_cast<std::size_t>(node)] = true;
   for (const ElementDesc& e : m.elements) {
     if (pantograph_node[static_cast<std::size_t>(e.nodes.front())]) continue;
-    if (const auto* cable = std::get_if<CableProps>(&e.props);
+    if (const auto* cable = std::get_if<CableProps>(&*e.props);
         cable && (cable->damping_time > 0.0 || cable->rayleigh.active()))
       return true;
-    if (const auto* beam = std::get_if<BeamProps>(&e.props);
+    if (const auto* beam = std::get_if<BeamProps>(&*e.props);
         beam && (beam->damping_time > 0.0 || beam->rayleigh.active()))
       return true;
-    if (const auto* bar = std::get_if<BarProps>(&e.props); bar && bar->damping > 0.0) return true;
-    if (const auto* spring = std::get_if<SpringProps>(&e.props);
+    if (const auto* bar = std::get_if<BarProps>(&*e.props); bar && bar->damping > 0.0) return true;
+    if (const auto* spring = std::get_if<SpringProps>(&*e.props);
         spring && spring->damping.maxCoeff() > 0.0)
       return true;
   }

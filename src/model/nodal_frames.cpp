@@ -37,7 +37,7 @@ void check_element_lengths(const SceneBuild& build) {
   const auto& nodes = build.model.nodes;
   for (std::size_t e = 0; e < build.model.elements.size(); ++e) {
     const ElementDesc& element = build.model.elements[e];
-    if (std::holds_alternative<SpringProps>(element.props)) continue;
+    if (std::holds_alternative<SpringProps>(*element.props)) continue;
     const Node& a = nodes[element.nodes[0]];
     const Node& b = nodes[element.nodes[1]];
     const double length = (b.position - a.position).norm();
@@ -56,8 +56,8 @@ void assign_nodal_frames(SceneBuild& build) {
   std::vector<int> section_source(nodes.size(), -1);  // beam element that set section_y
   for (std::size_t e = 0; e < build.model.elements.size(); ++e) {
     const ElementDesc& element = build.model.elements[e];
-    const auto* beam = std::get_if<BeamProps>(&element.props);
-    if (!beam && !std::holds_alternative<CableProps>(element.props)) continue;
+    const auto* beam = std::get_if<BeamProps>(&*element.props);
+    if (!beam && !std::holds_alternative<CableProps>(*element.props)) continue;
     const int self = static_cast<int>(e);
     const Vec3 axis =
         (nodes[element.nodes[1]].position - nodes[element.nodes[0]].position).normalized();

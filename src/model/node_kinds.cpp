@@ -11,7 +11,7 @@ namespace {
 
 std::string element_text(const ElementDesc& e) {
   return std::visit([](const auto& p) { return std::string(std::decay_t<decltype(p)>::kind); },
-                    e.props) +
+                    *e.props) +
          " element " + std::to_string(e.id);
 }
 
@@ -30,7 +30,7 @@ std::vector<UnknownKind> node_kinds(const Model& model) {
   std::vector<int> decided_by(model.nodes.size(), -1);  // element that set the kind
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const ElementDesc& element = model.elements[e];
-    const UnknownKind asked = element_node_kind(element.props);
+    const UnknownKind asked = element_node_kind(*element.props);
     for (const int node : element.nodes) {
       const std::optional<UnknownKind> both = kind_holding_both(kinds[node], asked);
       if (!both)

@@ -35,7 +35,7 @@ struct WireWave {
 WireWave contact_wire_wave(const Model& m) {
   const CatenaryWire& w = m.catenary->contact_wire;
   const ElementDesc& e = m.elements[static_cast<std::size_t>(w.elements.front())];
-  return {w.tension, std::get<CableProps>(e.props).mass_per_length};
+  return {w.tension, std::get<CableProps>(*e.props).mass_per_length};
 }
 
 // Thresholds print whole ("80 %"), a scene's ratio to a tenth ("80.1 %"), so that a ratio

@@ -45,7 +45,7 @@ TEST(LinearBlock, ResidualAndMatrixAreTheNonlinearTangentsAtQ0) {
   CATENA_PETSC(VecWAXPY(q.get(), 1.0, dq.get(), q0.get()));
 
   int n = linear.linearize_elements(q0.get(), [&](int e) {
-    return std::holds_alternative<model::CableProps>(m.elements[static_cast<size_t>(e)].props);
+    return std::holds_alternative<model::CableProps>(*m.elements[static_cast<size_t>(e)].props);
   });
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   EXPECT_EQ(n, 24);

@@ -81,9 +81,9 @@ TEST(ParallelEquilibrium, SameOnEveryRankCount) {
   double weight = 0.0;
   for (const auto& e : m.elements) {
     const double L = (m.nodes[e.nodes[1]].position - m.nodes[e.nodes[0]].position).norm();
-    if (const auto* c = std::get_if<model::CableProps>(&e.props))
+    if (const auto* c = std::get_if<model::CableProps>(&*e.props))
       weight += c->mass_per_length * L / (1 + c->prestrain) * 9.81;
-    if (const auto* b = std::get_if<model::BarProps>(&e.props))
+    if (const auto* b = std::get_if<model::BarProps>(&*e.props))
       weight += b->mass_per_length * L * 9.81;
   }
   for (const auto& pm : m.point_masses) weight += pm.mass * 9.81;

@@ -87,7 +87,7 @@ TEST(ShapeFinding, ContactWireOnThePresagParabolaWithin1mm) {
   ASSERT_EQ(s.report.dropper_lengths.size(), c.droppers.size());
   for (std::size_t i = 0; i < c.droppers.size(); ++i) {
     const double l0 = s.report.dropper_lengths[i];
-    const BarProps& bar = std::get<BarProps>(s.model.elements[c.droppers[i].element].props);
+    const BarProps& bar = std::get<BarProps>(*s.model.elements[c.droppers[i].element].props);
     EXPECT_EQ(bar.unstretched_length, l0);
     EXPECT_DOUBLE_EQ(bar.EA, 1.0e5 * l0);  // the design fixes the stiffness EA/l0
     EXPECT_GT(l0, 0.0);
@@ -264,6 +264,16 @@ double mean_axial_force(const Shaped& s, const CatenaryWire& wire) {
   return sum / length;
 }
 
+// Shape finding sets a wire's prestrain, or a cable dropper's length, on all its elements
+// as one edit (model::edit_shared): they keep sharing one properties block, as the scene
+// reader made them (model/shared_props.hpp; every rank holds every element).
+void expect_one_block(const Model& m, const std::vector<int>& elements, const char* what) {
+  ASSERT_FALSE(elements.empty()) << what;
+  for (const int e : elements)
+    EXPECT_TRUE(m.elements[e].props.same_block(m.elements[elements.front()].props))
+        << what << ": element " << e;
+}
+
 TEST(ShapeFinding, StitchWiresReachTheDesignHeightsAndTheirTension) {
   const Shaped s = shape({stitch});
   const CatenaryLayout& c = *s.model.catenary;
@@ -280,6 +290,13 @@ TEST(ShapeFinding, StitchWiresReachTheDesignHeightsAndTheirTension) {
   }
   EXPECT_NEAR(s.report.messenger_tension, 16000.0, 1.6);
   EXPECT_NEAR(s.report.contact_wire_tension, 20000.0, 2.0);
+  expect_one_block(s.model, c.contact_wire.elements, "contact wire");
+  expect_one_block(s.model, c.messenger.elements, "messenger");
+  for (const CatenaryStitch& stitch_wire : c.stitch_wires)
+    expect_one_block(s.model, stitch_wire.wire.elements, "stitch wire");
+  // The stitch wires' tensions differ from the messenger's: their own blocks.
+  EXPECT_FALSE(s.model.elements[c.stitch_wires[0].wire.elements[0]].props.same_block(
+      s.model.elements[c.messenger.elements[0]].props));
   // Every dropper carries tension, the stitch droppers included.
   for (const CatenaryDropper& d : c.droppers)
     EXPECT_GT(s.statics.axial_force[d.element], 0.0)
@@ -390,8 +407,13 @@ TEST(ShapeFinding, CableDroppersMatchBarDroppersOfTheSameMass) {
   double worst_length = 0.0, worst_force = 0.0;
   for (std::size_t i = 0; i < c.droppers.size(); ++i) {
     const double l0 = cables.report.dropper_lengths[i];
+    expect_one_block(cables.model, c.droppers[i].elements, "dropper chain");
+    if (i > 0 && l0 != cables.report.dropper_lengths[i - 1]) {  // lengths of their own
+      EXPECT_FALSE(cables.model.elements[c.droppers[i].element].props.same_block(
+          cables.model.elements[c.droppers[i - 1].element].props));
+    }
     for (const int e : c.droppers[i].elements) {
-      const auto& props = std::get<CableProps>(cables.model.elements[e].props);
+      const auto& props = std::get<CableProps>(*cables.model.elements[e].props);
       EXPECT_NEAR(c.droppers[i].mesh_length / (1.0 + props.prestrain), l0, 1e-12);
       EXPECT_DOUBLE_EQ(props.EA, 1.0e5 * l0);
     }

@@ -439,7 +439,8 @@ TEST(ConstraintOrders, DrivenPendulumPositionsAndPivotForce) {
 TEST(ConstraintOrders, RattleStaysSecondOrderWithDamping) {
   catena::test::ensure_petsc();
   model::Model m = pendulum(Pivot::driven);
-  for (model::ElementDesc& e : m.elements) std::get<model::CableProps>(e.props).damping_time = 5e-3;
+  for (model::ElementDesc& e : m.elements)
+    std::get<model::CableProps>(e.props.edit()).damping_time = 5e-3;
   const double t_end = 0.25;
   const Result ref = run(m, {"radau_iia", 5}, t_end, 2048, true);
   const Orders o = observed_orders(m, {"rattle", 0}, ref, t_end, 256, "rattle, damped");

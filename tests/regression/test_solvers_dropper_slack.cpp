@@ -109,7 +109,7 @@ class SlackObserver : public solvers::TransientObserver {
     for (const model::CatenaryDropper& d : m.catenary->droppers) {
       index_[d.element] = static_cast<int>(element_.size());
       element_.push_back(d.element);
-      const auto& props = m.elements[static_cast<std::size_t>(d.element)].props;
+      const auto& props = *m.elements[static_cast<std::size_t>(d.element)].props;
       if (const auto* bar = std::get_if<model::BarProps>(&props)) {
         EA_.push_back(bar->EA);
         residue_.push_back(0.0);

@@ -230,7 +230,7 @@ TEST(ElasticCatenary, GuessAppliesOnlyToLinesHangingUnderGravityAlone) {
       {"a clamped end", [&](auto& x) { x.supports.back().slope_direction = true; }},
       {"another section",
        [&](auto& x) {
-         std::get<catena::model::CableProps>(x.elements[2].props).prestrain += 1e-3;
+         std::get<catena::model::CableProps>(x.elements[2].props.edit()).prestrain += 1e-3;
        }},
       {"a branch",
        [&](auto& x) {

@@ -265,7 +265,8 @@ TEST(PetscTs, BdfConvergesToRadauOnADampedString) {
   catena::test::ensure_petsc();
   const catena::test::TautString string;
   catena::model::Model m = string.model();
-  for (auto& e : m.elements) std::get<catena::model::CableProps>(e.props).damping_time = 1e-3;
+  for (auto& e : m.elements)
+    std::get<catena::model::CableProps>(e.props.edit()).damping_time = 1e-3;
   catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());

@@ -26,7 +26,7 @@ double measured_first_mode_ratio(double alpha, double beta, double& omega) {
   omega = 2.0 * std::numbers::pi * string.first_frequency();
   model::Model m = string.model();
   for (model::ElementDesc& e : m.elements)
-    std::get<model::CableProps>(e.props).rayleigh = {alpha, beta};
+    std::get<model::CableProps>(e.props.edit()).rayleigh = {alpha, beta};
   catena::assembly::SecondOrderSystem system(MPI_COMM_WORLD, m);
   catena::VecHandle q = system.create_vector(), v = system.create_vector();
   system.reference_state(q.get());

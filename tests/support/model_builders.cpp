@@ -29,12 +29,12 @@ std::vector<int> add_line(model::Model& m, const Vec3& a, const Vec3& b, int n_e
 
 void set_reference_frames(model::Model& m) {
   for (const auto& e : m.elements) {
-    const bool has_slope = std::holds_alternative<model::CableProps>(e.props) ||
-                           std::holds_alternative<model::BeamProps>(e.props);
+    const bool has_slope = std::holds_alternative<model::CableProps>(*e.props) ||
+                           std::holds_alternative<model::BeamProps>(*e.props);
     if (!has_slope) continue;
     const Vec3 t = (m.nodes[e.nodes[1]].position - m.nodes[e.nodes[0]].position).normalized();
     for (int n : e.nodes) m.nodes[n].tangent = t;
-    if (const auto* beam = std::get_if<model::BeamProps>(&e.props)) {
+    if (const auto* beam = std::get_if<model::BeamProps>(&*e.props)) {
       const Vec3 y = (beam->y_axis - beam->y_axis.dot(t) * t).normalized();
       for (int n : e.nodes) {
         m.nodes[n].section_y = y;

@@ -38,7 +38,7 @@ constexpr unsigned fix_y = 1u << 1, fix_slope_y = 1u << 4, fix_xyz = 0b111u;
 
 long long count_kind(const Model& m, std::size_t kind) {
   return std::count_if(m.elements.begin(), m.elements.end(),
-                       [&](const ElementDesc& e) { return e.props.index() == kind; });
+                       [&](const ElementDesc& e) { return e.props->index() == kind; });
 }
 
 unsigned mask_of(const Model& m, int node) {
@@ -126,8 +126,8 @@ TEST(CatenaryBuilder, DroppersHangFromTheMessengerAtTheirPositions) {
     EXPECT_NEAR(d.design_z, -4.0 * 0.055 * (s / 60.0) * (1.0 - s / 60.0), 1e-15);
     EXPECT_EQ(d.stiffness, 1.0e5);
     const ElementDesc& bar = m.elements[d.element];
-    ASSERT_TRUE(std::holds_alternative<BarProps>(bar.props));
-    const BarProps& props = std::get<BarProps>(bar.props);
+    ASSERT_TRUE(std::holds_alternative<BarProps>(*bar.props));
+    const BarProps& props = std::get<BarProps>(*bar.props);
     EXPECT_TRUE(props.tension_only);
     EXPECT_EQ(props.unstretched_length, 0.0);  // the mesh length until shape finding
     EXPECT_DOUBLE_EQ(props.EA, 1.0e5 * 1.2);   // stiffness × that length
@@ -146,7 +146,7 @@ TEST(CatenaryBuilder, WiresAreSplitIntoElementsOfAtMostTheElementLength) {
     for (const int e : wire->elements) {
       EXPECT_LE(element_length(m, e), 1.0 + 1e-12);
       total += element_length(m, e);
-      const CableProps& cable = std::get<CableProps>(m.elements[e].props);
+      const CableProps& cable = std::get<CableProps>(*m.elements[e].props);
       EXPECT_DOUBLE_EQ(cable.prestrain, wire->tension / cable.EA);
       EXPECT_EQ(m.elements[e].set, wire->name);
     }
@@ -262,7 +262,7 @@ catenary:
   std::vector<double> x;
   for (const CatenaryDropper& d : c.droppers) {
     x.push_back(m.nodes[d.contact_node].position.x());
-    const BarProps& bar = std::get<BarProps>(m.elements[d.element].props);
+    const BarProps& bar = std::get<BarProps>(*m.elements[d.element].props);
     EXPECT_EQ(bar.EA, 2.0e5);
     EXPECT_FALSE(bar.tension_only);
     EXPECT_EQ(d.stiffness, 0.0);
@@ -355,7 +355,7 @@ TEST(CatenaryBuilder, StitchWiresCarryTheDroppersBetweenTheirClamps) {
     EXPECT_EQ(s.wire.elements.size(), static_cast<std::size_t>(stitch_elements));
     for (const int e : s.wire.elements) {
       EXPECT_EQ(m.elements[e].set, "stitch_wires");
-      const CableProps& cable = std::get<CableProps>(m.elements[e].props);
+      const CableProps& cable = std::get<CableProps>(*m.elements[e].props);
       EXPECT_DOUBLE_EQ(cable.prestrain, 2800.0 / 3.5e6);
       EXPECT_EQ(cable.mass_per_length, 0.31);
       EXPECT_LE(element_length(m, e), 1.0 + 1e-12);
@@ -626,7 +626,7 @@ TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
     for (std::size_t j = 0; j < d.elements.size(); ++j) {
       const ElementDesc& e = m.elements[d.elements[j]];
       EXPECT_EQ(e.set, "droppers");
-      const auto& cable = std::get<CableProps>(e.props);
+      const auto& cable = std::get<CableProps>(*e.props);
       EXPECT_TRUE(cable.tension_only);
       EXPECT_TRUE(cable.prestrain_with_loads);
       EXPECT_DOUBLE_EQ(cable.EA, 1e5 * 1.2);
@@ -651,7 +651,7 @@ TEST(CatenaryBuilder, CableDroppersAreHingedChains) {
           (e.nodes[0] == bottom_end && e.nodes[1] == d.contact_node)) {
         ++hinges;
         // Far stiffer than the dropper's elements (the hinge is in series with them).
-        EXPECT_GE(std::get<SpringProps>(e.props).stiffness.z(), 1e3 * 1e5 * 1.2 / (1.2 / per));
+        EXPECT_GE(std::get<SpringProps>(*e.props).stiffness.z(), 1e3 * 1e5 * 1.2 / (1.2 / per));
       }
     }
     EXPECT_EQ(hinges, 2);

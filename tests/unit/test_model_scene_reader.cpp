@@ -60,7 +60,7 @@ supports:
   - {node: 2, fix: pinned}
 )";
 
-double prestrain_of(const ElementDesc& e) { return std::get<CableProps>(e.props).prestrain; }
+double prestrain_of(const ElementDesc& e) { return std::get<CableProps>(*e.props).prestrain; }
 
 // --- shipped meshes ---------------------------------------------------------------------
 
@@ -79,7 +79,7 @@ TEST(ShippedMeshes, DefaultIsThreeSpanPretensionedWire) {
   ASSERT_EQ(m.nodes.size(), 301u);  // 5 explicit + 99 + 49 + 49 + 99 interior
   ASSERT_EQ(m.elements.size(), 300u);
   for (const ElementDesc& e : m.elements) {
-    const auto& cable = std::get<CableProps>(e.props);
+    const auto& cable = std::get<CableProps>(*e.props);
     EXPECT_DOUBLE_EQ(cable.EA, 1.8e7);
     EXPECT_DOUBLE_EQ(cable.EI, 195.0);
     EXPECT_DOUBLE_EQ(cable.mass_per_length, 1.35);
@@ -103,7 +103,7 @@ TEST(ShippedMeshes, DefaultIsThreeSpanPretensionedWire) {
 TEST(ShippedMeshes, CantileverIsClampedBeamWithTipLoad) {
   const Model m = read_scene((meshes_dir / "cantilever_beam.yaml").string());
   EXPECT_EQ(m.elements.size(), 20u);
-  EXPECT_TRUE(std::holds_alternative<BeamProps>(m.elements[0].props));
+  EXPECT_TRUE(std::holds_alternative<BeamProps>(*m.elements[0].props));
   ASSERT_EQ(m.supports.size(), 1u);
   // Position and section frame; the slope's direction (not its length) is held.
   EXPECT_EQ(m.supports[0].fixed_mask, 0xFC7u);
@@ -151,20 +151,20 @@ TEST(LineGeneration, IdsPositionsAndOrderFollowTheDocumentedNumbering) {
 
 TEST(LineGeneration, SectionPropertiesReachEveryElement) {
   const Model m = read_scene(mini_catenary);
-  const auto& bar = std::get<BarProps>(element_with_id(m, 101).props);
+  const auto& bar = std::get<BarProps>(*element_with_id(m, 101).props);
   EXPECT_DOUBLE_EQ(bar.EA, 2.0e5);
   EXPECT_DOUBLE_EQ(bar.damping, 5.0);
   EXPECT_TRUE(bar.tension_only);
   EXPECT_DOUBLE_EQ(bar.unstretched_length, 0.0);
-  const auto& spring = std::get<SpringProps>(element_with_id(m, 110).props);
+  const auto& spring = std::get<SpringProps>(*element_with_id(m, 110).props);
   EXPECT_EQ(spring.stiffness, Vec3::Constant(1.0e7));  // a scalar means all three axes
   EXPECT_EQ(spring.damping, Vec3(1, 2, 3));
-  const auto& beam = std::get<BeamProps>(element_with_id(m, 119).props);
+  const auto& beam = std::get<BeamProps>(*element_with_id(m, 119).props);
   EXPECT_DOUBLE_EQ(beam.GA_z, 2.0e8);
   EXPECT_DOUBLE_EQ(beam.rho_Iy, 0.01);
   EXPECT_DOUBLE_EQ(beam.rho_Iz, 0.0);  // default
   EXPECT_EQ(beam.y_axis, Vec3(0, 0, 1));
-  EXPECT_DOUBLE_EQ(std::get<CableProps>(element_with_id(m, 115).props).damping_time, 0.01);
+  EXPECT_DOUBLE_EQ(std::get<CableProps>(*element_with_id(m, 115).props).damping_time, 0.01);
 }
 
 TEST(LineGeneration, ZeroLengthSpringBetweenCoincidentNodesIsAccepted) {
@@ -241,7 +241,7 @@ TEST(Overrides, LineElementCount) {
 
 TEST(Overrides, SectionStiffnessChangesPrestrainFromTension) {
   const Model m = parse_scene(wire_scene, "wire.yaml", {"sections.cw.EA=2e7"});
-  EXPECT_DOUBLE_EQ(std::get<CableProps>(m.elements[0].props).EA, 2e7);
+  EXPECT_DOUBLE_EQ(std::get<CableProps>(*m.elements[0].props).EA, 2e7);
   EXPECT_DOUBLE_EQ(prestrain_of(m.elements[0]), 18000.0 / 2e7);
 }
 
@@ -395,7 +395,7 @@ TEST(Rayleigh, RatioAtTwoFrequenciesGivesThatRatioAtBoth) {
   text.replace(text.find("mass_per_length: 1.35}"), 22,
                "mass_per_length: 1.35, rayleigh: {ratio: 0.005, frequencies: [1, 20]}}");
   const Model m = parse_scene(text, "rayleigh.yaml");
-  const catena::model::Rayleigh r = std::get<CableProps>(m.elements.front().props).rayleigh;
+  const catena::model::Rayleigh r = std::get<CableProps>(*m.elements.front().props).rayleigh;
   for (double f : {1.0, 20.0}) {
     const double w = 2.0 * std::numbers::pi * f;
     EXPECT_NEAR(r.mass / (2.0 * w) + r.stiffness * w / 2.0, 0.005, 1e-15);
@@ -408,9 +408,9 @@ TEST(Rayleigh, CoefficientsAsGivenAndAbsentMeansNone) {
   text.replace(text.find("mass_per_length: 1.35}"), 22,
                "mass_per_length: 1.35, rayleigh: {stiffness: 2.0e-4}}");
   const catena::model::Rayleigh r =
-      std::get<CableProps>(parse_scene(text, "r.yaml").elements.front().props).rayleigh;
+      std::get<CableProps>(*parse_scene(text, "r.yaml").elements.front().props).rayleigh;
   EXPECT_EQ(r.mass, 0.0);
   EXPECT_EQ(r.stiffness, 2.0e-4);
-  EXPECT_FALSE(std::get<CableProps>(parse_scene(wire_scene, "w.yaml").elements.front().props)
+  EXPECT_FALSE(std::get<CableProps>(*parse_scene(wire_scene, "w.yaml").elements.front().props)
                    .rayleigh.active());
 }

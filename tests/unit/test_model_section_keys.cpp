@@ -188,23 +188,23 @@ TEST(SectionKeys, OptionalKeysTakeTheirDocumentedDefaults) {
       "mass_per_length: 10}\n"
       "  r: {type: bar, EA: 2e5}\n"
       "  s: {type: spring, stiffness: 1e5}\n");
-  const auto& cable = std::get<CableProps>(m.elements[0].props);
+  const auto& cable = std::get<CableProps>(*m.elements[0].props);
   EXPECT_EQ(cable.damping_time, 0.0);
   EXPECT_FALSE(cable.rayleigh.active());
   EXPECT_EQ(cable.curvature, catena::CurvatureMeasure::reference_length);
-  const auto& beam = std::get<BeamProps>(m.elements[1].props);
+  const auto& beam = std::get<BeamProps>(*m.elements[1].props);
   EXPECT_EQ(beam.rho_Iy, 0.0);
   EXPECT_EQ(beam.rho_Iz, 0.0);
   EXPECT_EQ(beam.damping_time, 0.0);
   EXPECT_FALSE(beam.rayleigh.active());
   EXPECT_EQ(beam.y_axis, Vec3::UnitZ());
   EXPECT_EQ(beam.curvature, catena::CurvatureMeasure::reference_length);
-  const auto& bar = std::get<BarProps>(m.elements[2].props);
+  const auto& bar = std::get<BarProps>(*m.elements[2].props);
   EXPECT_EQ(bar.mass_per_length, 0.0);
   EXPECT_EQ(bar.damping, 0.0);
   EXPECT_FALSE(bar.tension_only);
   EXPECT_EQ(bar.unstretched_length, 0.0);
-  const auto& spring = std::get<SpringProps>(m.elements[3].props);
+  const auto& spring = std::get<SpringProps>(*m.elements[3].props);
   EXPECT_EQ(spring.stiffness, Vec3::Constant(1e5));
   EXPECT_EQ(spring.damping, Vec3::Zero());
 }
@@ -219,7 +219,7 @@ TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
       "  r: {type: bar, EA: 2e5, mass_per_length: 0.1, damping: 5, tension_only: true, "
       "unstretched_length: 0.99}\n"
       "  s: {type: spring, stiffness: [1, 2, 3], damping: 4}\n");
-  const auto& cable = std::get<CableProps>(m.elements[0].props);
+  const auto& cable = std::get<CableProps>(*m.elements[0].props);
   EXPECT_EQ(cable.EA, 1.8e7);
   EXPECT_EQ(cable.EI, 195.0);
   EXPECT_EQ(cable.mass_per_length, 1.35);
@@ -227,7 +227,7 @@ TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
   EXPECT_EQ(cable.rayleigh.mass, 0.06);
   EXPECT_EQ(cable.rayleigh.stiffness, 7.6e-5);
   EXPECT_EQ(cable.curvature, catena::CurvatureMeasure::deformed_length);
-  const auto& beam = std::get<BeamProps>(m.elements[1].props);
+  const auto& beam = std::get<BeamProps>(*m.elements[1].props);
   EXPECT_EQ(beam.EA, 1e9);
   EXPECT_EQ(beam.GA_y, 2e8);
   EXPECT_EQ(beam.GA_z, 3e8);
@@ -241,13 +241,13 @@ TEST(SectionKeys, EveryKeyIsReadIntoItsMember) {
   EXPECT_EQ(beam.rayleigh.mass, 0.5);
   EXPECT_NEAR((beam.y_axis - Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);  // normalised
   EXPECT_EQ(beam.curvature, catena::CurvatureMeasure::deformed_length);
-  const auto& bar = std::get<BarProps>(m.elements[2].props);
+  const auto& bar = std::get<BarProps>(*m.elements[2].props);
   EXPECT_EQ(bar.EA, 2e5);
   EXPECT_EQ(bar.mass_per_length, 0.1);
   EXPECT_EQ(bar.damping, 5.0);
   EXPECT_TRUE(bar.tension_only);
   EXPECT_EQ(bar.unstretched_length, 0.99);
-  const auto& spring = std::get<SpringProps>(m.elements[3].props);
+  const auto& spring = std::get<SpringProps>(*m.elements[3].props);
   EXPECT_EQ(spring.stiffness, Vec3(1, 2, 3));
   EXPECT_EQ(spring.damping, Vec3::Constant(4.0));
 }

@@ -30,9 +30,9 @@ inline ContactMode contact_mode(const Model& m, const MovingContact& c) {
   for (const int index : m.paths[static_cast<std::size_t>(c.path)].elements) {
     const ElementDesc& e = m.elements[static_cast<std::size_t>(index)];
     double mass_per_length = 0.0;
-    if (const auto* cable = std::get_if<CableProps>(&e.props))
+    if (const auto* cable = std::get_if<CableProps>(&*e.props))
       mass_per_length = cable->mass_per_length;
-    if (const auto* beam = std::get_if<BeamProps>(&e.props))
+    if (const auto* beam = std::get_if<BeamProps>(&*e.props))
       mass_per_length = beam->mass_per_length;
     const double length = element_chord(m, index);  // as the path's stations measure it
     const double mass = mass_per_length * length;

@@ -13,6 +13,7 @@
 #include "catena/core/vec3.hpp"
 #include "catena/model/catenary_layout.hpp"
 #include "catena/model/element_props.hpp"  // ElementProps, Rayleigh
+#include "catena/model/shared_props.hpp"
 
 namespace catena::model {
 
@@ -34,7 +35,7 @@ struct ElementDesc {
   // every rank holds every element (16 bytes and a heap block less each: 1.8 MiB on a
   // 10 km line).
   std::array<int, 2> nodes{};
-  ElementProps props;
+  SharedProps props;  // shared with the elements of the same values (shared_props.hpp)
   Vec3 distributed_load = Vec3::Zero();  // N/m per unit mesh length (cable, beam)
   std::string set;                       // name of the line / set it belongs to ("" = none)
 };

@@ -128,7 +128,7 @@ std::optional<std::vector<NodeGuess>> hanging_cable_guess(const model::Model& m)
   std::vector<int> starting(n_nodes, -1), ending(n_nodes, -1);
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const model::ElementDesc& element = m.elements[e];
-    const auto* cable = std::get_if<model::CableProps>(&element.props);
+    const auto* cable = std::get_if<model::CableProps>(&*element.props);
     if (cable == nullptr || element.nodes.size() != 2 || cable->prestrain_with_loads ||
         element.distributed_load != Vec3::Zero())
       return none;
@@ -162,11 +162,11 @@ std::optional<std::vector<NodeGuess>> hanging_cable_guess(const model::Model& m)
   const Vec3 down = m.gravity.normalized();
   for (const Chain& chain : chains) {
     const auto& section =
-        std::get<model::CableProps>(m.elements[static_cast<std::size_t>(chain.elements[0])].props);
+        std::get<model::CableProps>(*m.elements[static_cast<std::size_t>(chain.elements[0])].props);
     std::vector<double> s{0.0};
     for (const int e : chain.elements) {
       const auto& element = m.elements[static_cast<std::size_t>(e)];
-      if (!same_section(section, std::get<model::CableProps>(element.props))) return none;
+      if (!same_section(section, std::get<model::CableProps>(*element.props))) return none;
       const double mesh_length = (m.nodes[static_cast<std::size_t>(element.nodes[1])].position -
                                   m.nodes[static_cast<std::size_t>(element.nodes[0])].position)
                                      .norm();
