@@ -5,6 +5,7 @@ namespace catena {
 
 PetscSession::PetscSession(int* argc, char*** argv, const char* help) {
   CATENA_PETSC(PetscInitialize(argc, argv, nullptr, help));
+  keep_petsc_errors();
 }
 
 PetscSession::~PetscSession() { PetscFinalize(); }

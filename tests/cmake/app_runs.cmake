@@ -10,6 +10,19 @@ catena_app_test(run_reports_unused_petsc_option 0
                 -hht_snes_rtoll 1e-3 -o ${CMAKE_CURRENT_BINARY_DIR}/app_unused_option.h5)
 catena_app_test(run_used_petsc_option_not_reported 1 "^0$"
                 sh -c "${app} run meshes/cable_pendulum.yaml --set analysis.duration=0.01 -hht_snes_rtol 1e-8 -log_view -o ${CMAKE_CURRENT_BINARY_DIR}/app_used_option.h5 2>&1 | grep -c 'was not used'")
+# A PETSc option whose value PETSc refuses is bad input (exit 2) named with its value and
+# PETSc's reason, and PETSc prints no traceback of its own.
+catena_app_test(run_bad_petsc_type_exit_2 2
+                "'-hht_pc_type nosuchpc': PETSc refused this option: Unable to find requested PC type nosuchpc"
+                ${app} run meshes/cable_pendulum.yaml --set analysis.duration=0.01
+                -hht_pc_type nosuchpc -o ${CMAKE_CURRENT_BINARY_DIR}/app_bad_pc_type.h5)
+catena_app_test(run_bad_petsc_integer_exit_2 2
+                "'-hht_snes_max_it 2.5': PETSc refused this option: Input string 2.5 has no integer value"
+                ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/cable_pendulum.yaml
+                --set analysis.duration=0.01 -hht_snes_max_it 2.5
+                -o ${CMAKE_CURRENT_BINARY_DIR}/app_bad_max_it.h5)
+catena_app_test(run_bad_petsc_option_no_traceback 1 "^0$"
+                sh -c "${app} run meshes/cable_pendulum.yaml --set analysis.duration=0.01 -hht_ksp_type nosuchksp -o ${CMAKE_CURRENT_BINARY_DIR}/app_bad_ksp_type.h5 2>&1 | grep -c 'PETSC ERROR'")
 # The static stability check reads its own MUMPS options (-static_stability_), not Newton's.
 catena_app_test(static_stability_options_used 1 "^0$"
                 sh -c "${app} run meshes/hanging_cable.yaml -static_stability_mat_mumps_icntl_14 30 -o ${CMAKE_CURRENT_BINARY_DIR}/app_stability_option.h5 2>&1 | grep -c 'was not used'")

@@ -22,6 +22,12 @@ class PetscCallError : public Error {
   PetscErrorCode code_;
 };
 
+// PETSc keeps the error it raises for throw_petsc_error instead of printing its traceback;
+// the exception carries PETSc's message. An error raised while PETSc read the options
+// given (a bad -PREFIX_pc_type, a number that is not one) becomes an InputError naming the
+// option. Called once, after PetscInitialize (PetscSession).
+void keep_petsc_errors();
+
 [[noreturn]] void throw_petsc_error(PetscErrorCode code, const char* expression, const char* file,
                                     int line);
 
