@@ -3,9 +3,11 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "catena/core/error.hpp"
@@ -78,6 +80,34 @@ std::string other_model(const Hdf5Reader& r, const model::Model& model) {
   return {};
 }
 
+// Why the numbers read make no state to continue from (a damaged or hand-edited file), or
+// "": a time, step or count that is not one, or a value of the state that is not a number.
+std::string damaged_numbers(const Checkpoint& c) {
+  const auto text = [](auto x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  };
+  const CheckpointFacts& f = c.facts;
+  if (!std::isfinite(f.time)) return "time = " + text(f.time) + " is not a finite number";
+  if (!(std::isfinite(f.last_dt) && f.last_dt >= 0.0))
+    return "last_dt = " + text(f.last_dt) + " is not a step (a finite number >= 0)";
+  if (f.samples < 0 || f.steps < 0)
+    return "samples = " + text(f.samples) + ", steps = " + text(f.steps) +
+           " (counts of rows written, >= 0)";
+  for (const auto& [name, values] : {std::pair{kPositions, &c.q},
+                                     {kVelocities, &c.v},
+                                     {kAccelerations, &c.a},
+                                     {kMultipliers, &c.lambda}}) {
+    const auto bad =
+        std::find_if(values->begin(), values->end(), [](double x) { return !std::isfinite(x); });
+    if (bad != values->end())
+      return std::string(name) + " holds " + text(*bad) + " (value " + text(bad - values->begin()) +
+             "), not a finite number";
+  }
+  return {};
+}
+
 // Reads the checkpoint on this rank; throws catena::Error saying why it cannot be used.
 Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
                              const std::string& integrator) {
@@ -115,12 +145,16 @@ Checkpoint read_on_this_rank(const std::string& path, const model::Model& model,
   c.facts.last_dt = r.real("last_dt");
   c.facts.samples = r.integer("samples");
   c.facts.steps = r.integer("steps");
+  for (const char* name : {kPositions, kVelocities, kAccelerations, kMultipliers})
+    if (!r.has(name)) fail("the file is damaged: it has no dataset " + std::string(name));
   const std::size_t n = model.nodes.size();
   c.q = r.values(kPositions, kNodeRow * n);
   c.v = r.values(kVelocities, kNodeRow * n);
   c.a = r.values(kAccelerations, kNodeRow * n);
   const auto multiplier_row = static_cast<std::size_t>(model::multiplier_width(model));
   c.lambda = r.values(kMultipliers, multiplier_row * model.constraints.size());
+  if (const std::string why = damaged_numbers(c); !why.empty())
+    fail("the file is damaged: " + why + "; run afresh (without --restart)");
   if (format == kFormatWithoutResume) return c;
   c.facts.ranks = static_cast<int>(r.integer("ranks"));
   r.numbers(kResumeGroup, c.resume.reals, c.resume.integers);

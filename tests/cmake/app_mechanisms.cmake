@@ -367,6 +367,13 @@ add_test(NAME app_restart_roundtrip
          WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(app_restart_roundtrip PROPERTIES LABELS "app;long" ENVIRONMENT "${mpi_env}"
                      TIMEOUT 900 RUN_SERIAL TRUE)
+# A damaged checkpoint (a number that is not one, a dataset missing) is refused, exit 2.
+add_test(NAME app_restart_damaged
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/restart_damaged.sh ${app}
+                 ${CMAKE_CURRENT_BINARY_DIR}
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(app_restart_damaged PROPERTIES LABELS app ENVIRONMENT "${mpi_env}"
+                     TIMEOUT 300)
 # Parallel HDF5's metadata sync points in nearly every write (CATENA_HDF5_SYNC_BYTES=512),
 # on 3 ranks of a line whose middle rank has no support (empty reaction rows) and with
 # checkpoints: every rank must meet them in the same calls, or the run hangs (until
