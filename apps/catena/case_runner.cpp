@@ -31,7 +31,27 @@ std::string unique_name(std::set<std::string>& taken, const std::string& stem) {
   return name;
 }
 
+namespace {
+
+// The lowest cutoff a run of `record` seconds takes, 2/record rounded up to three digits.
+std::string lowest_cutoff_text(double record) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", 2.0 / record * (1.0 + 1e-3));
+  return text;
+}
+
+}  // namespace
+
 void check_contact_sampling(const CommandLine& cl, const QueuedCase& c, const model::Model& m) {
+  const double record = m.dynamic_options.duration;
+  if (cl.study.cutoff_given && !m.contacts.empty() && record * cl.study.cutoff_hz < 2.0)
+    throw InputError({"", 0, "--cutoff"},
+                     "--cutoff " + study::number_text(cl.study.cutoff_hz) + " Hz: the run" +
+                         (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +
+                         " lasts " + study::number_text(record) +
+                         " s, shorter than two periods of the cutoff, so the filtered force "
+                         "would be its start-up transient; accepted: at least " +
+                         lowest_cutoff_text(record) + " Hz (EN 50318: 20 Hz)");
   const double coarsest = 1.0 / (post::min_sampling_rate_per_cutoff * cl.study.cutoff_hz);
   if (m.contacts.empty() || m.output.interval <= coarsest * (1.0 + 1e-9)) return;
   throw InputError({cl.scene, 0, "output.interval"},

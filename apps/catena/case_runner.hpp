@@ -32,8 +32,10 @@ std::string unique_name(std::set<std::string>& taken, const std::string& stem);
 
 // Not collective. Throws catena::InputError (key "output.interval") when `m` has pantographs
 // and samples their contact force too coarsely for the statistics' low-pass at
-// cl.study.cutoff_hz (post::min_sampling_rate_per_cutoff), naming the case's overrides: a
-// study or sweep refuses it before any case runs, not after all have.
+// cl.study.cutoff_hz (post::min_sampling_rate_per_cutoff), or (key "--cutoff") when a
+// cutoff the user gave is below two periods over the run (its filtered force would be the
+// filter's start-up, as catena stats refuses), naming the case's overrides: a study or sweep
+// refuses it before any case runs, not after all have.
 void check_contact_sampling(const CommandLine& cl, const QueuedCase& c, const model::Model& m);
 
 // Collective over `world`. Creates `cases_dir` (rank 0); throws catena::InputError (key

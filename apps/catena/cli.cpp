@@ -142,6 +142,7 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     st.probes.push_back(parse_integer(value("--probe"), "--probe", "a node id of the scene"));
   } else if (a == "--cutoff") {
     st.cutoff_hz = parse_positive(value("--cutoff"), "--cutoff", "Hz", "a frequency in Hz, > 0");
+    st.cutoff_given = true;
   } else if (a == "-o" || a == "--output") {
     st.directory = value("-o");
   } else if (a == "--error-bar") {

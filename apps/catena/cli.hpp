@@ -51,6 +51,7 @@ struct StudyArguments {
   int ranks_per_case = 1;              // --ranks-per-case K
   std::vector<long long> probes;       // --probe NODE_ID (scene ids)
   double cutoff_hz = 20.0;             // --cutoff HZ: the statistics' low-pass
+  bool cutoff_given = false;           // --cutoff given (else EN 50318's 20 Hz)
   std::string directory;               // -o DIR (default: SCENE's stem + "_study")
 };
 

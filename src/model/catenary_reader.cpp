@@ -9,6 +9,7 @@
 #include "catenary_builder.hpp"
 #include "catenary_window_reader.hpp"
 #include "did_you_mean.hpp"
+#include "memory_check.hpp"
 #include "physical_bounds.hpp"
 #include "rayleigh_reader.hpp"
 #include "run_reach.hpp"
@@ -395,7 +396,8 @@ std::pair<int, int> read_evaluation_spans(const Field& field, int n_spans) {
 
 }  // namespace
 
-void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build) {
+void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build,
+                   const MemoryBudget& budget) {
   if (!catenary.present()) return;
   catenary.expect_map("a catenary (a map of design data, see docs/scene.md)");
   catenary.check_keys(catenary_keys());
@@ -475,6 +477,7 @@ void read_catenary(const Field& catenary, const Field& scene, SceneBuild& build)
   const std::optional<CatenaryWindow> window = read_catenary_window(catenary, scene, d);
   const std::optional<std::pair<int, int>> evaluation_spans = d.evaluation_spans;
   if (window) cut_design_to_window(*window, d);
+  check_catenary_fits(element_length, d, build, budget);
   build_catenary(d, catenary, build);
   if (window) place_window(*window, evaluation_spans, build.model);
 }

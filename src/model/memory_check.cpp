@@ -55,6 +55,38 @@ void check_lines_fit(const Field& lines, const SectionTable& sections, const Sce
                 budget.describe() + advice(budget));
 }
 
+void check_catenary_fits(const Field& element_length, const CatenaryDesign& d,
+                         const SceneBuild& build, const MemoryBudget& budget) {
+  if (!budget.active() || !(d.element_length > 0.0)) return;
+  const std::int64_t cable_dofs = kind_info(UnknownKind::ancf_cable).size;
+  std::int64_t wire_elements = 0;  // contact wire and messenger, each span at least one
+  for (const double span : d.span_lengths)
+    wire_elements +=
+        2 * std::max<std::int64_t>(1, static_cast<std::int64_t>(span / d.element_length));
+  if (d.stitch && d.span_lengths.size() > 1)
+    wire_elements +=
+        static_cast<std::int64_t>(d.span_lengths.size() - 1) *
+        std::max<std::int64_t>(1, static_cast<std::int64_t>(d.stitch->length / d.element_length));
+  std::int64_t droppers = 0;
+  for (const std::vector<double>& span : d.droppers.positions)
+    droppers += static_cast<std::int64_t>(span.size());
+  const bool cables = d.droppers.model == DropperModel::cable;
+  const std::int64_t chain = cables ? d.droppers.cable_elements : 0;  // elements per dropper
+  ProblemSize size;
+  size.factor_multiple = 1.0;
+  size.nodes = static_cast<std::int64_t>(build.model.nodes.size()) + wire_elements +
+               droppers * (cables ? chain + 1 : 0);
+  size.elements = wire_elements + droppers * (cables ? chain + 2 : 1);
+  size.dofs = (wire_elements + droppers * (cables ? chain + 1 : 0)) * cable_dofs;
+  size.matrix_nonzeros = (wire_elements + droppers * chain) * 3 * cable_dofs * cable_dofs;
+  const MemoryEstimate estimate = estimate_memory(size);
+  if (estimate.per_host_bytes(budget.ranks, budget.ranks_on_host) <= budget.host_bytes) return;
+  element_length.fail("the catenary makes at least " + std::to_string(size.elements) +
+                      " elements, and a run of them alone needs an estimated " +
+                      estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+                      budget.describe() + advice(budget));
+}
+
 void check_model_fits(const Field& scene, const SceneBuild& build, const MemoryBudget& budget) {
   if (!budget.active()) return;
   const MemoryEstimate estimate = estimate_memory(problem_size(build.model));

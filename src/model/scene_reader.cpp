@@ -90,7 +90,7 @@ void read_model(const Field& scene, detail::SceneBuild& build, const MemoryBudge
   detail::generate_lines(scene.child("lines"), sections, build,
                          detail::max_element_id(explicit_elements));
   detail::add_explicit_elements(std::move(explicit_elements), build);
-  detail::read_catenary(scene.child("catenary"), scene, build);
+  detail::read_catenary(scene.child("catenary"), scene, build, budget);
   if (model.nodes.empty())
     scene.child("nodes").fail(
         "the scene defines no nodes; add 'nodes' (and 'lines' or "

@@ -281,6 +281,15 @@ catena_app_test(check_memory_estimate_exit_2 2
 catena_app_test(run_memory_estimate_exit_2 2 "more than the --memory-limit of 0.001 GiB per host"
                 ${app} run meshes/default.yaml --memory-limit 0.001
                 -o ${CMAKE_CURRENT_BINARY_DIR}/app_memory_limit.h5)
+# A catenary is counted from its design before it is built: 10 000 spans of 50-element cable
+# droppers (9.5 million elements) are refused in under a second, not after 25 s and 4.8 GB
+# of building them (the timeout fails a build that did build them).
+catena_app_test(check_catenary_memory_estimate_exit_2 2
+                "'catenary\\.element_length': the catenary makes at least [0-9]+ elements, and a run of them alone needs an estimated [0-9.]+ GiB"
+                ${app} check meshes/en50318_250.yaml --set catenary.spans=10000
+                --set catenary.droppers.model=cable --set catenary.droppers.elements=50
+                --set catenary.droppers.EI=0.02 --set catenary.droppers.mass_per_length=0.089)
+set_tests_properties(app_check_catenary_memory_estimate_exit_2 PROPERTIES TIMEOUT 10)
 catena_app_test(check_memory_limit_off 0 "valid"
                 ${app} check meshes/default.yaml --memory-limit off)
 # Progress lines (apps/catena/progress_lines.hpp): --progress 0 prints one per step;
@@ -410,4 +419,11 @@ catena_app_test(sweep_refuses_study_options 2 "'--target' is an option of study,
 catena_app_test(sweep_needs_pantographs 2 "has no pantographs" ${app} sweep
                 tests/data/app/taut_string_hht.yaml --vary integrator.dt=0.04,0.02
                 -o ${CMAKE_CURRENT_BINARY_DIR}/sweep_no_pantograph)
+# A cutoff too low for the run's length is refused before any case runs (as catena stats
+# refuses it for a record), naming the case.
+catena_app_test(sweep_refuses_cutoff_below_run 2
+                "'--cutoff': --cutoff 1 Hz: the run under pantographs\\[0\\].speed_kmh=80 lasts 0.6 s, .* accepted: at least 3.34 Hz"
+                ${app} sweep meshes/pantograph_wire.yaml --vary pantographs[0].speed_kmh=80,100
+                --set analysis.duration=0.6 --cutoff 1
+                -o ${CMAKE_CURRENT_BINARY_DIR}/sweep_low_cutoff)
 catena_app_test(help_of_sweep 0 "^Options of sweep:$" ${app} sweep --help)
