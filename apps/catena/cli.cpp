@@ -70,6 +70,11 @@ double parse_non_negative(const std::string& token, const char* flag, const char
 bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
                              ElasticityArguments& el) {
   const std::string& a = args[i];
+  // Each takes one value; given twice, the last would silently win.
+  if (a == "--span" || a == "--step" || a == "--force") {
+    if (!el.given.insert(a).second)
+      throw InputError({"", 0, a}, "'" + a + "' is given twice; accepted: once");
+  }
   auto value = [&](const char* flag) -> const std::string& {
     if (i + 1 >= args.size())
       throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
@@ -111,9 +116,14 @@ constexpr const char* kSweepOptions =
 bool parse_study_option(const std::vector<std::string>& args, size_t& i, CommandLine& cl) {
   StudyArguments& st = cl.study;
   const std::string& a = args[i];
+  // The next token, unless it is an option (`--vary -o DIR` lacks the varied key).
   auto value = [&](const char* flag) -> const std::string& {
     if (i + 1 >= args.size())
       throw InputError({"", 0, flag}, std::string("missing value after ") + flag);
+    const std::string& next = args[i + 1];
+    if (next.rfind("--", 0) == 0 || next == "-o")
+      throw InputError({"", 0, flag}, std::string("missing value after ") + flag +
+                                          " (the next argument is the option '" + next + "')");
     return args[++i];
   };
   auto list = [](const std::string& text) {
@@ -145,6 +155,9 @@ bool parse_study_option(const std::vector<std::string>& args, size_t& i, Command
     st.cutoff_given = true;
   } else if (a == "-o" || a == "--output") {
     st.directory = value("-o");
+    if (st.directory.empty())
+      throw InputError({"", 0, "-o"},
+                       "no directory given; expected a directory name, e.g. -o runs");
   } else if (a == "--error-bar") {
     throw InputError({"", 0, a},
                      "'--error-bar' is not an option of study: study.csv sets each case's error "
@@ -372,6 +385,9 @@ CommandLine parse_command_line(int argc, char** argv) {
       cl.error_bar = true;
     } else if (a == "-o" || a == "--output") {
       cl.output = value("-o");
+      if (cl.output->empty())
+        throw InputError({"", 0, "-o"},
+                         "no file name given; expected an HDF5 file name, e.g. -o out.h5");
     } else if (a == "--progress") {
       const std::string& every = value("--progress");
       cl.progress_seconds =

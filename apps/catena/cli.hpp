@@ -3,6 +3,7 @@
 // with '-' are left to PETSc's options database (e.g. -static_snes_monitor, -log_view).
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct ElasticityArguments {
   double step = 1.0;        // --step DX [m], > 0: spacing of the points along the span
   double force = 100.0;     // --force F [N], > 0: the static upward probe force
   bool json = false;        // --json: JSON instead of the table
+  std::set<std::string> given;  // the options with a value seen so far (each is taken once)
 };
 
 // `catena modes SCENE [--set k=v ...] [--count N] [-o FILE]`.

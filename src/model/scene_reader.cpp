@@ -159,6 +159,19 @@ Model parse_scene(const std::string& text, const std::string& file_label,
   return std::move(build.model);
 }
 
+namespace {
+
+// YAML takes CR LF, CR and LF as line breaks (YAML 1.2, section 5.4); yaml-cpp reads the
+// first and last only, and a file saved with CR alone (classic Mac OS) failed as "illegal
+// map value" at line 1. A CR not followed by LF becomes LF.
+std::string with_line_feeds(std::string text) {
+  for (std::size_t k = 0; k < text.size(); ++k)
+    if (text[k] == '\r' && (k + 1 == text.size() || text[k + 1] != '\n')) text[k] = '\n';
+  return text;
+}
+
+}  // namespace
+
 std::string read_scene_file(const std::string& path) {
   namespace fs = std::filesystem;
   const auto fail = [&](const std::string& message) {
@@ -182,7 +195,7 @@ std::string read_scene_file(const std::string& path) {
   std::ostringstream contents;
   contents << in.rdbuf();
   if (in.bad()) fail("cannot read scene: read error");
-  return contents.str();
+  return with_line_feeds(contents.str());
 }
 
 Model read_scene(const std::string& path, const std::vector<std::string>& overrides) {

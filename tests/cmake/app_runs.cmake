@@ -27,6 +27,17 @@ catena_app_test(run_bad_petsc_option_no_traceback 1 "^0$"
 catena_app_test(static_stability_options_used 1 "^0$"
                 sh -c "${app} run meshes/hanging_cable.yaml -static_stability_mat_mumps_icntl_14 30 -o ${CMAKE_CURRENT_BINARY_DIR}/app_stability_option.h5 2>&1 | grep -c 'was not used'")
 catena_app_test(check_default 0 "valid" ${app} check meshes/default.yaml)
+# A scene saved with CR alone as line break reads as with LF (YAML 1.2, section 5.4).
+catena_app_test(check_cr_line_breaks 0 "cable_pendulum_cr.yaml: valid"
+                ${app} check tests/data/app/cable_pendulum_cr.yaml)
+# The command line: an empty -o, an option where a value belongs, an option given twice.
+catena_app_test(run_empty_output_exit_2 2 "'-o': no file name given"
+                sh -c "${app} run meshes/cable_pendulum.yaml -o ''")
+catena_app_test(sweep_option_as_value_exit_2 2
+                "'--vary': missing value after --vary \\(the next argument is the option '-o'\\)"
+                ${app} sweep meshes/pantograph_wire.yaml --vary -o DIR)
+catena_app_test(elasticity_span_twice_exit_2 2 "'--span': '--span' is given twice"
+                ${app} elasticity meshes/simple_catenary.yaml --span 1 --span 2)
 catena_app_test(run_default_np2 0 "output: .*app_default.h5"
                 ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe ${app} run meshes/default.yaml
                 -o ${CMAKE_CURRENT_BINARY_DIR}/app_default.h5)
