@@ -1,5 +1,6 @@
 #include "case_runner.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -33,10 +34,13 @@ std::string unique_name(std::set<std::string>& taken, const std::string& stem) {
 
 namespace {
 
-// The lowest cutoff a run of `record` seconds takes, 2/record rounded up to three digits.
+// The lowest cutoff a run of `record` seconds takes, 2/record rounded up to three
+// significant digits (to nearest, 2/1.995 s would print 1 Hz, itself refused).
 std::string lowest_cutoff_text(double record) {
+  const double lowest = 2.0 / record;
+  const double unit = std::pow(10.0, std::floor(std::log10(lowest)) - 2.0);
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g", 2.0 / record * (1.0 + 1e-3));
+  std::snprintf(text, sizeof text, "%.3g", std::ceil(lowest / unit * (1.0 - 1e-12)) * unit);
   return text;
 }
 

@@ -18,6 +18,7 @@ struct RaisedError {
   std::string function;     // the routine that raised it
   bool in_options = false;  // raised while reading options: a frame of *SetFromOptions*
                             // or PetscOptions* on the way up
+  bool pushed = false;      // keep_raised_error is PETSc's handler
 };
 
 RaisedError& raised() {
@@ -34,7 +35,7 @@ PetscErrorCode keep_raised_error(MPI_Comm, int, const char* function, const char
   // repeat frame, whose code tells it from a chain kept earlier.
   if (type == PETSC_ERROR_INITIAL || r.code != code)
     r = RaisedError{code, type == PETSC_ERROR_INITIAL && message ? message : "", std::string(f),
-                    false};
+                    false, true};
   if (f.find("SetFromOptions") != std::string_view::npos || f.starts_with("PetscOptions"))
     r.in_options = true;
   return code;
@@ -78,10 +79,27 @@ std::string options_named_in(const std::string& message) {
 
 }  // namespace
 
-void keep_petsc_errors() { CATENA_PETSC(PetscPushErrorHandler(keep_raised_error, nullptr)); }
+void keep_petsc_errors() {
+  // PETSc's debugging options push handlers of their own (abort, attach a debugger) in
+  // PetscInitialize: they win.
+  for (const char* option : {"-on_error_abort", "-on_error_mpiabort", "-on_error_attach_debugger",
+                             "-start_in_debugger", "-on_error_emacs"}) {
+    PetscBool set = PETSC_FALSE;
+    CATENA_PETSC(PetscOptionsHasName(nullptr, nullptr, option, &set));
+    if (set) return;
+  }
+  CATENA_PETSC(PetscPushErrorHandler(keep_raised_error, nullptr));
+  raised().pushed = true;
+}
+
+void stop_keeping_petsc_errors() {
+  if (!raised().pushed) return;
+  PetscPopErrorHandler();
+  raised() = RaisedError{};
+}
 
 void throw_petsc_error(PetscErrorCode code, const char* expression, const char* file, int line) {
-  RaisedError r = std::exchange(raised(), RaisedError{});
+  RaisedError r = std::exchange(raised(), RaisedError{0, "", "", false, raised().pushed});
   if (r.code != code) r = RaisedError{};  // kept from another error
   if (r.in_options) {
     const std::string named = options_named_in(r.message);
@@ -102,6 +120,9 @@ void throw_petsc_error(PetscErrorCode code, const char* expression, const char* 
 
 void CallbackGuard::rethrow_if_any() {
   if (stored_) {
+    // The code the callback returned went up PETSc's frames as an error: not a chain a
+    // later error should be told.
+    raised() = RaisedError{0, "", "", false, raised().pushed};
     std::exception_ptr e = stored_;
     stored_ = nullptr;
     std::rethrow_exception(e);

@@ -8,6 +8,9 @@ PetscSession::PetscSession(int* argc, char*** argv, const char* help) {
   keep_petsc_errors();
 }
 
-PetscSession::~PetscSession() { PetscFinalize(); }
+PetscSession::~PetscSession() {
+  stop_keeping_petsc_errors();
+  PetscFinalize();
+}
 
 }  // namespace catena

@@ -25,8 +25,12 @@ class PetscCallError : public Error {
 // PETSc keeps the error it raises for throw_petsc_error instead of printing its traceback;
 // the exception carries PETSc's message. An error raised while PETSc read the options
 // given (a bad -PREFIX_pc_type, a number that is not one) becomes an InputError naming the
-// option. Called once, after PetscInitialize (PetscSession).
+// option. Called once, after PetscInitialize (PetscSession); not when PETSc's debugging
+// options (-on_error_abort, -on_error_attach_debugger, -start_in_debugger, ...) asked for
+// their own handler. stop_keeping_petsc_errors() gives PETSc its printing back before
+// PetscFinalize, whose errors (an unwritable -log_view file) nobody else would report.
 void keep_petsc_errors();
+void stop_keeping_petsc_errors();
 
 [[noreturn]] void throw_petsc_error(PetscErrorCode code, const char* expression, const char* file,
                                     int line);
