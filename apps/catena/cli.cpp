@@ -93,7 +93,16 @@ bool parse_elasticity_option(const std::vector<std::string>& args, size_t& i,
     el.step = parse_positive(value("--step"), "--step", "m",
                              "a distance in m, > 0 and at most the span length");
   } else if (a == "--force") {
-    el.force = parse_positive(value("--force"), "--force", "N", "an upward force in N, > 0");
+    // EN 50119's probe force is 100 N (up to a few hundred); below 0.01 N the uplift
+    // vanishes in Newton's tolerance (1e-300 N printed NaN), above 10 kN it lifts the wire
+    // off its droppers and masts, no elasticity any more (1e30 N printed an uplift of 1e27 mm).
+    el.force = parse_positive(value("--force"), "--force", "N",
+                              "an upward force in N, from 0.01 to 10000 (EN 50119: 100)");
+    if (el.force < 0.01 || el.force > 1e4)
+      throw InputError({"", 0, "--force"},
+                       "--force " + args[i] +
+                           " N is out of range; accepted: an upward force in N, from 0.01 to "
+                           "10000 (EN 50119: 100)");
   } else if (a == "-o" || a == "--output" || a == "--restart") {
     throw InputError({"", 0, "arguments"}, "'" + a +
                                                "' is not an option of elasticity (which "

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "catena/core/error.hpp"
+#include "catena/io/output_error.hpp"
 
 namespace catena::io {
 namespace {
@@ -102,10 +103,18 @@ void publish_with_xdmf(TemporaryFile& hdf5, const std::filesystem::path& hdf5_pa
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  TemporaryFile temporary(temporary_sibling(path, getpid()));
-  write_file_durably(temporary.path(), contents);
-  rename_into_place(temporary.path(), path);
-  temporary.release();
+  try {
+    TemporaryFile temporary(temporary_sibling(path, getpid()));
+    write_file_durably(temporary.path(), contents);
+    rename_into_place(temporary.path(), path);
+    temporary.release();
+  } catch (const OutputError&) {
+    throw;
+  } catch (const Error& e) {
+    // An unwritable place (`export -o /proc/x`) is the output's failure (exit 4), not
+    // Catena's.
+    throw OutputError("cannot write '" + path.string() + "': " + e.what());
+  }
 }
 
 }  // namespace catena::io

@@ -45,11 +45,14 @@ using Reader = TimeSeriesFile;
 double uniform_interval(const Reader& r, const std::vector<double>& t,
                         const char* name = time_name) {
   if (t.size() < 2) r.fail(name, "fewer than 2 samples: no sampling interval");
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (!std::isfinite(t[k]))
+      r.fail(name, "the time of sample " + std::to_string(k) + " is not a finite number");
   const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
   if (!(dt > 0.0)) r.fail(name, "the sample times do not increase");
   for (std::size_t k = 0; k + 1 < t.size(); ++k) {
     const double step = t[k + 1] - t[k];
-    if (std::abs(step - dt) > sampling_tolerance * dt) {
+    if (!(std::abs(step - dt) <= sampling_tolerance * dt)) {
       std::ostringstream os;
       os << "not uniformly sampled: samples " << k << " and " << k + 1 << " are " << step
          << " s apart, the mean interval is " << dt << " s";

@@ -24,7 +24,7 @@ stats_short.h5 (complete, but only 3 s: the record ends inside the section),
 stats_no_section.h5 (no evaluation section), stats_coarse.h5 (100 Hz sampling),
 stats_static.h5 (a static result), stats_no_pantographs.h5 (no contact datasets),
 stats_old_format.h5 (no format attribute: an older Catena's), stats_other_format.h5
-(format "catena-transient-0").
+(format "catena-transient-0"), stats_nan_time.h5 (sample 20's time NaN: a damaged file).
 Usage: make_stats_fixture.py OUTDIR
 """
 import os
@@ -108,6 +108,12 @@ def main():
           acceptance="en50318")
     write(os.path.join(out, "stats_interrupted_early.h5"), status="interrupted", duration=1.0)
     write(os.path.join(out, "stats_short.h5"), duration=3.0)
+    nan_time = os.path.join(out, "stats_nan_time.h5")
+    write(nan_time)
+    with h5py.File(nan_time, "r+") as f:
+        time = f["time"][...]
+        time[20] = float("nan")
+        f["time"][...] = time
 
 
 if __name__ == "__main__":

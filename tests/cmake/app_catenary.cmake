@@ -223,6 +223,12 @@ catena_app_test(elasticity_bad_span_exit_2 2 "'--span': span 11 does not exist. 
                 ${app} elasticity meshes/simple_catenary.yaml --span 11)
 catena_app_test(elasticity_bad_force_exit_2 2 "'--force': must be positive \\(got -5 N\\). accepted"
                 ${app} elasticity meshes/simple_catenary.yaml --force -5)
+# A probe force whose uplift vanishes in Newton's tolerance (NaN was printed) or that lifts
+# the wire off its droppers and masts (an uplift of 1e27 mm was printed) is refused.
+catena_app_test(elasticity_tiny_force_exit_2 2 "'--force': --force 1e-300 N is out of range. accepted: an upward force in N, from 0.01 to 10000"
+                ${app} elasticity meshes/simple_catenary.yaml --force 1e-300)
+catena_app_test(elasticity_huge_force_exit_2 2 "'--force': --force 1e30 N is out of range"
+                ${app} elasticity meshes/simple_catenary.yaml --force 1e30)
 catena_app_test(elasticity_bad_step_exit_2 2 "'--step': 'abc' is not a finite number. accepted"
                 ${app} elasticity meshes/simple_catenary.yaml --step abc)
 catena_app_test(elasticity_long_step_exit_2 2 "'--step': a step of 100.* m is longer than the span"

@@ -96,6 +96,14 @@ catena_stats_test(json 0 "${json_keys}" ${stats_dir}/stats_run.h5 --json)
 # start-up (σ = 0 and the first sample as mean, minimum and maximum).
 catena_stats_test(cutoff_below_record 2 "'--cutoff': --cutoff 0.001 Hz: the record lasts .* s, shorter than two periods"
                   ${stats_dir}/stats_run.h5 --cutoff 0.001)
+# A sample time that is not a number (a damaged file) is named, not passed over.
+catena_stats_test(nan_time 2 "'/time': the time of sample 20 is not a finite number"
+                  ${stats_dir}/stats_nan_time.h5)
+# An export to a place that cannot be written is the output's failure (exit 4).
+catena_app_test(export_unwritable_exit_4 4
+                "output could not be written: cannot write '/proc/x_contact.csv'"
+                ${app} export ${stats_dir}/stats_run.h5 -o /proc/x)
+set_tests_properties(app_export_unwritable_exit_4 PROPERTIES FIXTURES_REQUIRED stats_files)
 add_test(NAME app_stats_values
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/app/check_stats.py ${app}
                  ${stats_dir})

@@ -30,6 +30,15 @@ catena_app_test(check_default 0 "valid" ${app} check meshes/default.yaml)
 # A scene saved with CR alone as line break reads as with LF (YAML 1.2, section 5.4).
 catena_app_test(check_cr_line_breaks 0 "cable_pendulum_cr.yaml: valid"
                 ${app} check tests/data/app/cable_pendulum_cr.yaml)
+# Field samples: faster than 1 MHz, or more than 10^7 of them, are refused (an interval of
+# 1e-9 s wrote 6.7 GB in a minute).
+catena_app_test(check_output_interval_too_short_exit_2 2
+                "'output.interval': output.interval = 1e-09 s is below 1e-6 s"
+                ${app} check meshes/pantograph_wire.yaml --set output.interval=1e-9)
+catena_app_test(check_too_many_samples_exit_2 2
+                "'output.interval': output.interval = 1e-06 s over 100 s makes 1e\\+08 field samples. accepted: at most 1e7"
+                ${app} check meshes/pantograph_wire.yaml --set output.interval=1e-6
+                --set analysis.duration=100)
 # The command line: an empty -o, an option where a value belongs, an option given twice.
 catena_app_test(run_empty_output_exit_2 2 "'-o': no file name given"
                 sh -c "${app} run meshes/cable_pendulum.yaml -o ''")

@@ -19,7 +19,8 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& target, pid
 void write_file_durably(const std::filesystem::path& path, std::string_view contents);
 
 // Replaces `path` by a file holding `contents`: written to a temporary sibling, synced, renamed
-// over it. Throws catena::Error naming the path and the failing call; the temporary is removed.
+// over it. Throws catena::OutputError naming the path and the failing call; the temporary is
+// removed.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
 // Flushes a file's or a directory's data and metadata to storage (open + fsync + close).
