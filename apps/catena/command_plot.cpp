@@ -46,6 +46,7 @@ void plot_on_this_rank(const StatsArguments& args) {
   const std::string prefix = args.output.empty() ? default_prefix(args.file) : args.output;
   std::vector<std::string> script_args{args.file, prefix, joined_formats(args.formats)};
   refuse_unfinished_name(args.file);
+  io::require_run_or_static_result(args.file);
   create_parent_directory(prefix + "_static_shape.png");
   if (!io::has_contact_forces(args.file)) {
     if (!draw_figures("plot_run.py", script_args)) throw nothing_drawn(args.file);

@@ -17,6 +17,7 @@
 #include "hdf5_attributes.hpp"
 #include "hdf5_error.hpp"
 #include "hdf5_handles.hpp"
+#include "static_result_layout.hpp"
 #include "time_series_file.hpp"
 #include "transient_layout.hpp"
 
@@ -385,6 +386,18 @@ const char* contact_run_times_dataset() { return time_name; }
 bool has_contact_forces(const std::string& path) {
   const Hdf5ErrorPrintingSuppressed quiet;
   return Reader(path).has_link(contact_force_name);
+}
+
+void require_run_or_static_result(const std::string& path) {
+  const Hdf5ErrorPrintingSuppressed quiet;
+  const Reader r(path);
+  const std::string format = r.has_attribute(r.root(), "format")
+                                 ? r.text_attribute(r.root(), "format", "format")
+                                 : std::string("none");
+  if (format != layout::format && format != static_layout::format)
+    r.fail("format", "the file's format is '" + format + "', not a Catena result; accepted: a " +
+                         "dynamic run's output (" + layout::format + ") or a static result (" +
+                         static_layout::format + ")");
 }
 
 post::EvaluationSection evaluation_section_or_record(const ContactRun& run) {

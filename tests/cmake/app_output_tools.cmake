@@ -99,6 +99,11 @@ catena_stats_test(cutoff_below_record 2 "'--cutoff': --cutoff 0.001 Hz: the reco
 # A sample time that is not a number (a damaged file) is named, not passed over.
 catena_stats_test(nan_time 2 "'/time': the time of sample 20 is not a finite number"
                   ${stats_dir}/stats_nan_time.h5)
+# catena plot of a file that is no result (a checkpoint) is refused before the plot script
+# reads it (a Python traceback and exit 4 before).
+catena_app_test(plot_checkpoint_exit_2 2
+                "'format': the file's format is 'catena-checkpoint-3', not a Catena result"
+                sh -c "${app} run meshes/cable_pendulum.yaml --set analysis.duration=0.01 -o ${CMAKE_CURRENT_BINARY_DIR}/plot_chk.h5 > /dev/null && ${app} plot ${CMAKE_CURRENT_BINARY_DIR}/plot_chk.h5.chk -o ${CMAKE_CURRENT_BINARY_DIR}/plot_chk")
 # An export to a place that cannot be written is the output's failure (exit 4).
 catena_app_test(export_unwritable_exit_4 4
                 "output could not be written: cannot write '/proc/x_contact.csv'"

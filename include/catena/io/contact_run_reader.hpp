@@ -64,6 +64,11 @@ ContactRun read_contact_run_steps(const std::string& path,
 // when it is missing or not HDF5.
 bool has_contact_forces(const std::string& path);
 
+// Not collective. Throws catena::InputError naming `path` and its `format` unless it is a
+// dynamic run's output or a static result (what `catena plot` draws): a modes file, a
+// checkpoint or a file of another program is refused before the plot script reads it.
+void require_run_or_static_result(const std::string& path);
+
 // Not collective. The dataset ContactRun::dt comes from ("/time"), for messages naming it.
 const char* contact_run_times_dataset();
 
