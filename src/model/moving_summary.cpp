@@ -227,6 +227,12 @@ void describe_moving(const Model& m, SummaryTable& t, SummaryNotes& notes) {
                                    " s): it touches nothing"));
     else
       warn_path_end(who, start, c.speed, 0.0, t_end, length, notes);
+    // Off its path at the start: no static contact, and the statistics' start-up with it.
+    if (o.ever && o.t_enter > 0.0)
+      notes.warnings.push_back(cat(who, " starts off its path (at ", format_number(start),
+                                   " m; the path runs from 0 to ", format_number(length),
+                                   " m) and touches nothing until t = ", format_number(o.t_enter),
+                                   " s"));
     if (m.evaluation_end > m.evaluation_start && c.path == m.contacts.front().path)
       warn_evaluation(m, c, start, t_end, notes);
     warn_multistep_contact(m, c, notes);

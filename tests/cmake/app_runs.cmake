@@ -39,6 +39,10 @@ catena_app_test(check_too_many_samples_exit_2 2
                 "'output.interval': output.interval = 1e-06 s over 100 s makes 1e\\+08 field samples. accepted: at most 1e7"
                 ${app} check meshes/pantograph_wire.yaml --set output.interval=1e-6
                 --set analysis.duration=100)
+# A pantograph that starts before its path is warned of, as one that runs past its end.
+catena_app_test(check_pantograph_starts_off_path 0
+                "warning: pantograph 'leading' starts off its path \\(at -5 m. the path runs from 0 to [0-9.]+ m\\) and touches nothing until t = "
+                ${app} check meshes/pantograph_wire.yaml --set pantographs[0].start=-5)
 # The command line: an empty -o, an option where a value belongs, an option given twice.
 catena_app_test(run_empty_output_exit_2 2 "'-o': no file name given"
                 sh -c "${app} run meshes/cable_pendulum.yaml -o ''")
