@@ -1,6 +1,5 @@
 #include "case_runner.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -15,6 +14,7 @@
 #include "catena/study/case_record.hpp"
 #include "catena/study/study_plan.hpp"
 #include "commands.hpp"
+#include "run_statistics.hpp"
 #include "scene_loading.hpp"
 
 namespace catena::app {
@@ -32,23 +32,9 @@ std::string unique_name(std::set<std::string>& taken, const std::string& stem) {
   return name;
 }
 
-namespace {
-
-// The lowest cutoff a run of `record` seconds takes, 2/record rounded up to three
-// significant digits (to nearest, 2/1.995 s would print 1 Hz, itself refused).
-std::string lowest_cutoff_text(double record) {
-  const double lowest = 2.0 / record;
-  const double unit = std::pow(10.0, std::floor(std::log10(lowest)) - 2.0);
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", std::ceil(lowest / unit * (1.0 - 1e-12)) * unit);
-  return text;
-}
-
-}  // namespace
-
 void check_contact_sampling(const CommandLine& cl, const QueuedCase& c, const model::Model& m) {
   const double record = m.dynamic_options.duration;
-  if (cl.study.cutoff_given && !m.contacts.empty() && record * cl.study.cutoff_hz < 2.0)
+  if (cl.study.cutoff_given && !m.contacts.empty() && cutoff_too_low(cl.study.cutoff_hz, record))
     throw InputError({"", 0, "--cutoff"},
                      "--cutoff " + study::number_text(cl.study.cutoff_hz) + " Hz: the run" +
                          (c.overrides.empty() ? "" : " under " + list_text(c.overrides)) +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -104,17 +105,15 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
     } catch (const InputError&) {
     }
   }
-  // The zero-phase filter starts each pass from the record's end value: a record shorter
-  // than two periods of the cutoff is all start-up (a 0.2 s record at 0.001 Hz gave the
-  // first sample's force as mean, minimum and maximum, and σ = 0). A cutoff the user chose
-  // is refused; EN 50318's 20 Hz on a short run (a test's 0.05 s) is left as it was.
+  // A cutoff the user chose is refused when the record is too short for it (cutoff_too_low);
+  // EN 50318's 20 Hz on a short run (a test's 0.05 s) is left as it was.
   const double record = out.run.time.size() > 1 ? out.run.time.back() - out.run.time.front() : 0.0;
-  if (args.cutoff_given && record > 0.0 && record < 2.0 / args.cutoff_hz) {
+  if (args.cutoff_given && record > 0.0 && cutoff_too_low(args.cutoff_hz, record)) {
     std::ostringstream os;
     os << "--cutoff " << args.cutoff_hz << " Hz: the record lasts " << record
        << " s, shorter than two periods of the cutoff (" << 2.0 / args.cutoff_hz
        << " s), so the filtered force would be its start-up transient; accepted: at least "
-       << 2.0 / record << " Hz for this record (EN 50318: 20 Hz)";
+       << lowest_cutoff_text(record) << " Hz for this record (EN 50318: 20 Hz)";
     throw InputError({args.file, 0, "--cutoff"}, os.str());
   }
   out.finished = out.run.status == "complete";
@@ -184,6 +183,16 @@ RunEvaluation evaluate_run(const StatsArguments& args, SectionCoverage coverage)
 std::size_t checks_passed(const std::vector<post::AcceptanceCheck>& checks) {
   return static_cast<std::size_t>(std::count_if(
       checks.begin(), checks.end(), [](const post::AcceptanceCheck& c) { return c.pass; }));
+}
+
+bool cutoff_too_low(double cutoff_hz, double record) { return record * cutoff_hz < 2.0; }
+
+std::string lowest_cutoff_text(double record) {
+  const double lowest = 2.0 / record;
+  const double unit = std::pow(10.0, std::floor(std::log10(lowest)) - 2.0);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", std::ceil(lowest / unit * (1.0 - 1e-12)) * unit);
+  return text;
 }
 
 }  // namespace catena::app

@@ -67,6 +67,14 @@ RunEvaluation evaluate_run(const StatsArguments& args,
 // not exist but the unfinished run's output does.
 void refuse_unfinished_name(const std::string& file);
 
+// Not collective. The zero-phase filter starts each pass from the record's end value: a
+// record shorter than two periods of the cutoff is all start-up (a 0.2 s record at 0.001 Hz
+// gave the first sample's force as mean, minimum and maximum, and σ = 0). Whether
+// `cutoff_hz` is too low for a record of `record` s, and the lowest cutoff it takes (2/record
+// rounded up to three significant digits: to nearest, 2/1.995 s printed 1 Hz, itself too low).
+bool cutoff_too_low(double cutoff_hz, double record);
+std::string lowest_cutoff_text(double record);
+
 // Not collective. "8 of 8 in range" style count of `checks`.
 std::size_t checks_passed(const std::vector<post::AcceptanceCheck>& checks);
 

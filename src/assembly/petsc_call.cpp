@@ -18,13 +18,13 @@ struct RaisedError {
   std::string function;     // the routine that raised it
   bool in_options = false;  // raised while reading options: a frame of *SetFromOptions*
                             // or PetscOptions* on the way up
-  bool pushed = false;      // keep_raised_error is PETSc's handler
 };
 
 RaisedError& raised() {
   static RaisedError error;
   return error;
 }
+bool handler_pushed = false;  // keep_raised_error is PETSc's handler
 
 PetscErrorCode keep_raised_error(MPI_Comm, int, const char* function, const char*,
                                  PetscErrorCode code, PetscErrorType type, const char* message,
@@ -35,7 +35,7 @@ PetscErrorCode keep_raised_error(MPI_Comm, int, const char* function, const char
   // repeat frame, whose code tells it from a chain kept earlier.
   if (type == PETSC_ERROR_INITIAL || r.code != code)
     r = RaisedError{code, type == PETSC_ERROR_INITIAL && message ? message : "", std::string(f),
-                    false, true};
+                    false};
   if (f.find("SetFromOptions") != std::string_view::npos || f.starts_with("PetscOptions"))
     r.in_options = true;
   return code;
@@ -89,17 +89,18 @@ void keep_petsc_errors() {
     if (set) return;
   }
   CATENA_PETSC(PetscPushErrorHandler(keep_raised_error, nullptr));
-  raised().pushed = true;
+  handler_pushed = true;
 }
 
 void stop_keeping_petsc_errors() {
-  if (!raised().pushed) return;
+  if (!handler_pushed) return;
   PetscPopErrorHandler();
+  handler_pushed = false;
   raised() = RaisedError{};
 }
 
 void throw_petsc_error(PetscErrorCode code, const char* expression, const char* file, int line) {
-  RaisedError r = std::exchange(raised(), RaisedError{0, "", "", false, raised().pushed});
+  RaisedError r = std::exchange(raised(), RaisedError{});
   if (r.code != code) r = RaisedError{};  // kept from another error
   if (r.in_options) {
     const std::string named = options_named_in(r.message);
@@ -122,7 +123,7 @@ void CallbackGuard::rethrow_if_any() {
   if (stored_) {
     // The code the callback returned went up PETSc's frames as an error: not a chain a
     // later error should be told.
-    raised() = RaisedError{0, "", "", false, raised().pushed};
+    raised() = RaisedError{};
     std::exception_ptr e = stored_;
     stored_ = nullptr;
     std::rethrow_exception(e);

@@ -102,14 +102,9 @@ WirePart extract_wires(const model::Model& m, const std::vector<const model::Cat
 }
 
 void set_prestrain(WirePart& part, const PartWire& wire, double prestrain) {
-  model::edit_shared(
-      wire.cables.size(),
-      [&](std::size_t i) -> model::SharedProps& {
-        return part.model.elements[static_cast<std::size_t>(wire.cables[i])].props;
-      },
-      [prestrain](model::ElementProps& p) {
-        std::get<model::CableProps>(p).prestrain = prestrain;
-      });
+  model::edit_shared(part.model.elements, wire.cables, [prestrain](model::ElementProps& p) {
+    std::get<model::CableProps>(p).prestrain = prestrain;
+  });
 }
 
 double prestrain_of(const WirePart& part, const PartWire& wire) {

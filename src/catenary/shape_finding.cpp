@@ -25,24 +25,17 @@ struct Unknowns {
   std::vector<double> stitch_prestrains;  // per stitch wire
 };
 
-// The elements of a list, by index, for edit_shared (model/shared_props.hpp).
-auto props_of(model::Model& m, const std::vector<int>& elements) {
-  return [&m, &elements](std::size_t i) -> model::SharedProps& {
-    return m.elements[static_cast<std::size_t>(elements[i])].props;
-  };
-}
-
 void set_wire_prestrain(model::Model& m, const model::CatenaryWire& wire, double prestrain) {
-  model::edit_shared(
-      wire.elements.size(), props_of(m, wire.elements),
-      [prestrain](model::ElementProps& p) { std::get<CableProps>(p).prestrain = prestrain; });
+  model::edit_shared(m.elements, wire.elements, [prestrain](model::ElementProps& p) {
+    std::get<CableProps>(p).prestrain = prestrain;
+  });
 }
 
 // A cable dropper's chain (top to bottom) given the unstretched length l0: prestrain
 // L/l0 − 1 (L its mesh length), EA = stiffness·l0 when the stiffness is the design value,
 // and the Kelvin–Voigt time that keeps its damping c = EA·τ/l0 (N·s/m) as built.
 void set_cable_dropper_length(model::Model& m, const model::CatenaryDropper& d, double l0) {
-  model::edit_shared(d.elements.size(), props_of(m, d.elements), [&d, l0](model::ElementProps& p) {
+  model::edit_shared(m.elements, d.elements, [&d, l0](model::ElementProps& p) {
     auto& cable = std::get<CableProps>(p);
     const double damping = cable.EA * cable.damping_time * (1.0 + cable.prestrain) / d.mesh_length;
     if (d.stiffness > 0.0) cable.EA = d.stiffness * l0;

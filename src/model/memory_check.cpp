@@ -16,6 +16,18 @@ std::string advice(const MemoryBudget& budget) {
          "(docs/scene.md, \"Memory\")";
 }
 
+// Refuses at `where` the `made` ("the lines make") elements of `size` if even they alone
+// (a lower bound of the run) exceed the budget.
+void refuse_lower_bound_over(const Field& where, const std::string& made, const ProblemSize& size,
+                             const MemoryBudget& budget) {
+  const MemoryEstimate estimate = estimate_memory(size);
+  if (estimate.per_host_bytes(budget.ranks, budget.ranks_on_host) <= budget.host_bytes) return;
+  where.fail(made + " " + std::to_string(size.elements) +
+             " elements, and a run of them alone needs an estimated " +
+             estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
+             budget.describe() + advice(budget));
+}
+
 }  // namespace
 
 void check_lines_fit(const Field& lines, const SectionTable& sections, const SceneBuild& build,
@@ -46,13 +58,7 @@ void check_lines_fit(const Field& lines, const SectionTable& sections, const Sce
     }
   }
   if (largest_count == 0) return;
-  const MemoryEstimate estimate = estimate_memory(size);
-  const double need = estimate.per_host_bytes(budget.ranks, budget.ranks_on_host);
-  if (need <= budget.host_bytes) return;
-  largest->fail("the lines make " + std::to_string(size.elements) +
-                " elements, and a run of them alone needs an estimated " +
-                estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
-                budget.describe() + advice(budget));
+  refuse_lower_bound_over(*largest, "the lines make", size, budget);
 }
 
 void check_catenary_fits(const Field& element_length, const CatenaryDesign& d,
@@ -79,12 +85,7 @@ void check_catenary_fits(const Field& element_length, const CatenaryDesign& d,
   size.elements = wire_elements + droppers * (cables ? chain + 2 : 1);
   size.dofs = (wire_elements + droppers * (cables ? chain + 1 : 0)) * cable_dofs;
   size.matrix_nonzeros = (wire_elements + droppers * chain) * 3 * cable_dofs * cable_dofs;
-  const MemoryEstimate estimate = estimate_memory(size);
-  if (estimate.per_host_bytes(budget.ranks, budget.ranks_on_host) <= budget.host_bytes) return;
-  element_length.fail("the catenary makes at least " + std::to_string(size.elements) +
-                      " elements, and a run of them alone needs an estimated " +
-                      estimate.describe(budget.ranks, budget.ranks_on_host) + ", more than " +
-                      budget.describe() + advice(budget));
+  refuse_lower_bound_over(element_length, "the catenary makes at least", size, budget);
 }
 
 void check_model_fits(const Field& scene, const SceneBuild& build, const MemoryBudget& budget) {

@@ -104,12 +104,10 @@ TEST(SharedProps, EditSharedKeepsEachGroupSharingAndEditsOncePerBlock) {
   group.insert(group.end(), b.begin(), b.end());
   group.push_back(group.front());  // listed twice: edited once
   int calls = 0;
-  edit_shared(
-      group.size(), [&](std::size_t i) -> SharedProps& { return m.elements[group[i]].props; },
-      [&](ElementProps& p) {
-        ++calls;
-        std::get<CableProps>(p).prestrain += 1.0;
-      });
+  edit_shared(m.elements, group, [&](ElementProps& p) {
+    ++calls;
+    std::get<CableProps>(p).prestrain += 1.0;
+  });
   EXPECT_EQ(calls, 2);  // one block per line
   for (const int e : elements_of_set(m, "a")) {
     EXPECT_DOUBLE_EQ(prestrain(m.elements[e]), 1.0 + 1e-3);

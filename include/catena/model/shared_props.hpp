@@ -55,16 +55,17 @@ class SharedProps {
   std::shared_ptr<ElementProps> props_;
 };
 
-// Applies `change(ElementProps&)` once per distinct block among the handles that
-// `handle(i)` returns for i in [0, count): handles that shared a block before share its
-// edited copy after (a wire's prestrain set by shape finding stays one block for the wire).
-template <class Handle, class Change>
-void edit_shared(std::size_t count, Handle&& handle, Change&& change) {
+// Applies `change(ElementProps&)` once per distinct block among the properties of
+// elements[which[k]] (a list of element descriptions, by index): elements that shared a block
+// before share its edited copy after (a wire's prestrain set by shape finding stays one block
+// for the wire).
+template <class Elements, class Change>
+void edit_shared(Elements& elements, const std::vector<int>& which, Change&& change) {
   // The old handles are kept until the end, so no block's address is freed and reused
   // while the lookup compares addresses.
   std::vector<std::pair<SharedProps, SharedProps>> edited;
-  for (std::size_t i = 0; i < count; ++i) {
-    SharedProps& props = handle(i);
+  for (const int index : which) {
+    SharedProps& props = elements[static_cast<std::size_t>(index)].props;
     bool done = false;
     for (const auto& [before, after] : edited) {
       if (props.same_block(before)) {
